@@ -1,0 +1,45 @@
+// A linear RGBA float image, top row first, and its files: OpenEXR (linear, float32) and PNG (tone-mapped
+// sRGB, 8-bit).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace raylab {
+
+struct Image {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<float> rgba;  // 4 floats per pixel
+
+  Image() = default;
+  Image(std::uint32_t w, std::uint32_t h) : width(w), height(h), rgba(std::size_t(w) * h * 4, 0.0f) {}
+  glm::vec4 at(std::uint32_t x, std::uint32_t y) const {
+    const float* p = &rgba[(std::size_t(y) * width + x) * 4];
+    return {p[0], p[1], p[2], p[3]};
+  }
+  void set(std::uint32_t x, std::uint32_t y, glm::vec4 value) {
+    float* p = &rgba[(std::size_t(y) * width + x) * 4];
+    p[0] = value.r, p[1] = value.g, p[2] = value.b, p[3] = value.a;
+  }
+};
+
+enum class ToneMap {
+  kClamp,     // exposure, then clip to [0, 1]: linear below white, which suits BRDF comparisons
+  kReinhard,  // x / (1 + x) on each channel
+  kAces,      // Narkowicz's fit of the ACES filmic curve
+};
+
+// Parent directories are created. Errors name the file.
+void writeExr(const std::string& path, const Image& image);
+Image readExr(const std::string& path);
+// `exposure` in stops: values are scaled by 2^exposure before the tone curve and the sRGB transfer function.
+void writePng(const std::string& path, const Image& image, float exposure, ToneMap toneMap);
+
+// The 8-bit sRGB value of a linear value after exposure and tone mapping.
+std::uint8_t toDisplay(float linear, float exposure, ToneMap toneMap);
+
+}  // namespace raylab

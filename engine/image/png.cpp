@@ -1,0 +1,53 @@
+// Tone-mapped 8-bit sRGB PNG files through stb_image_write (Debian's libstb).
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "image/image.h"
+#include "util/error.h"
+#include "util/files.h"
+
+namespace raylab {
+
+namespace {
+
+float toneCurve(float x, ToneMap toneMap) {
+  switch (toneMap) {
+    case ToneMap::kClamp:
+      return x;
+    case ToneMap::kReinhard:
+      return x / (1.0f + x);
+    case ToneMap::kAces:  // Narkowicz 2015, "ACES Filmic Tone Mapping Curve"
+      return (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f);
+  }
+  return x;
+}
+
+float linearToSrgb(float x) { return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f; }
+
+}  // namespace
+
+std::uint8_t toDisplay(float linear, float exposure, ToneMap toneMap) {
+  // NaN would be undefined behaviour in the conversion; it shows as black, never as a random byte.
+  if (!(linear > 0.0f)) return 0;
+  const float mapped = std::clamp(toneCurve(linear * std::exp2(exposure), toneMap), 0.0f, 1.0f);
+  return static_cast<std::uint8_t>(std::lround(linearToSrgb(mapped) * 255.0f));
+}
+
+void writePng(const std::string& path, const Image& image, float exposure, ToneMap toneMap) {
+  createParentDirectories(path);
+
+  std::vector<std::uint8_t> bytes(std::size_t(image.width) * image.height * 3);
+  for (std::size_t i = 0; i < std::size_t(image.width) * image.height; ++i) {
+    for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = toDisplay(image.rgba[i * 4 + c], exposure, toneMap);
+  }
+  const int stride = static_cast<int>(image.width) * 3;
+  if (stbi_write_png(path.c_str(), static_cast<int>(image.width), static_cast<int>(image.height), 3, bytes.data(),
+                     stride) == 0) {
+    throw Error(path + ": cannot write PNG file");
+  }
+}
+
+}  // namespace raylab

@@ -1,0 +1,167 @@
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "shared/bindings.h"
+#include "util/error.h"
+#include "vk/commands.h"
+#include "vk/debug_name.h"
+#include "vk/vk_check.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr std::uint32_t kWorkgroupSize = 8;  // render.comp: local_size 8 x 8
+
+std::vector<DescriptorBinding> rendererBindings() {
+  std::vector<DescriptorBinding> bindings = sceneBindings();
+  bindings.push_back({gpu::kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+  bindings.push_back({gpu::kBindingRayStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+  return bindings;
+}
+
+}  // namespace
+
+void applyCamera(gpu::FrameParams& params, const Camera& camera, std::uint32_t width, std::uint32_t height) {
+  const glm::vec3 forward = camera.target - camera.position;
+  const glm::vec3 right = glm::cross(forward, camera.up);
+  if (!(glm::length(forward) > 0.0f) || !(glm::length(right) > 0.0f)) {
+    throw Error("camera '" + camera.name + "': position, target and up do not define a view direction");
+  }
+  if (!(camera.yfov > 0.0f && camera.yfov < 3.1f)) {
+    throw Error("camera '" + camera.name + "': vertical field of view " + std::to_string(camera.yfov) +
+                " rad is outside (0, 3.1)");
+  }
+  const float tanHalf = std::tan(0.5f * camera.yfov);
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  const glm::vec3 w = glm::normalize(forward);
+  const glm::vec3 u = glm::normalize(right);
+  const glm::vec3 v = glm::cross(u, w);
+  params.cameraOrigin = camera.position;
+  params.cameraForward = w;
+  params.cameraRight = u * (tanHalf * aspect);
+  params.cameraUp = v * tanHalf;
+}
+
+Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Scene& scene,
+                        const RenderSettings& settings) {
+  if (settings.width == 0 || settings.height == 0 || settings.width > 16384 || settings.height > 16384) {
+    throw Error("image size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                " is outside 1..16384", kExitUsage);
+  }
+  Renderer renderer;
+  gpu::FrameParams& params = renderer.params;
+  params.width = settings.width;
+  params.height = settings.height;
+  params.seed = settings.seed;
+  params.background = scene.background;
+  params.maxDepth = settings.maxDepth;
+  params.lightCount = gpuScene.lightCount;
+  params.flags = settings.jitter ? gpu::kFrameJitter : 0u;
+  params.throughputCutoff = settings.throughputCutoff;
+  applyCamera(params, scene.camera, settings.width, settings.height);
+
+  const std::vector<DescriptorBinding> bindings = rendererBindings();
+  renderer.setLayout = createDescriptorSetLayout(device, bindings, "render set layout");
+  renderer.pipelineLayout =
+      createPipelineLayout(device, renderer.setLayout, sizeof(gpu::FrameParams), "render pipeline layout");
+  renderer.pipeline = createComputePipeline(device, renderer.pipelineLayout, "render.comp");
+
+  const VkDeviceSize pixels = VkDeviceSize(settings.width) * settings.height;
+  renderer.accumulation = createBuffer(device, pixels * sizeof(glm::vec4),
+                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                           VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                       MemoryUse::kDevice, "accumulation");
+  renderer.stats = createBuffer(device, sizeof(gpu::RayStats),
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                MemoryUse::kHost, "ray stats");
+
+  renderer.descriptors = allocateDescriptorSet(device, renderer.setLayout, bindings, "render set");
+  writeSceneDescriptors(device, renderer.descriptors.set, gpuScene);
+  writeStorageBuffer(device, renderer.descriptors.set, gpu::kBindingAccumulation, renderer.accumulation.handle);
+  writeStorageBuffer(device, renderer.descriptors.set, gpu::kBindingRayStats, renderer.stats.handle);
+  resetAccumulation(device, renderer);
+  return renderer;
+}
+
+void destroyRenderer(const Device& device, Renderer& renderer) {
+  destroyBuffer(device, renderer.stats);
+  destroyBuffer(device, renderer.accumulation);
+  destroyDescriptorSet(device, renderer.descriptors);
+  if (renderer.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, renderer.pipeline, nullptr);
+  if (renderer.pipelineLayout != VK_NULL_HANDLE) {
+    vkDestroyPipelineLayout(device.handle, renderer.pipelineLayout, nullptr);
+  }
+  if (renderer.setLayout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device.handle, renderer.setLayout, nullptr);
+  renderer = {};
+}
+
+void resetAccumulation(const Device& device, Renderer& renderer) {
+  submitAndWait(device, [&](VkCommandBuffer cmd) {
+    vkCmdFillBuffer(cmd, renderer.accumulation.handle, 0, VK_WHOLE_SIZE, 0);
+    computeBarrier(cmd);
+  });
+  renderer.samplesDone = 0;
+}
+
+namespace {
+
+// Upper bound of the rays one sample of every pixel can trace; keeps the 32-bit ray counters from wrapping.
+std::uint64_t maxRaysPerSample(const gpu::FrameParams& params) {
+  const std::uint64_t perPath = std::uint64_t(params.maxDepth + 1) * (1 + params.lightCount);
+  return std::uint64_t(params.width) * params.height * perPath;
+}
+
+void submitSamples(const Device& device, Renderer& renderer, std::uint32_t samples) {
+  const std::uint32_t groupsX = (renderer.params.width + kWorkgroupSize - 1) / kWorkgroupSize;
+  const std::uint32_t groupsY = (renderer.params.height + kWorkgroupSize - 1) / kWorkgroupSize;
+  submitAndWait(device, [&](VkCommandBuffer cmd) {
+    vkCmdFillBuffer(cmd, renderer.stats.handle, 0, VK_WHOLE_SIZE, 0);
+    computeBarrier(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipelineLayout, 0, 1,
+                            &renderer.descriptors.set, 0, nullptr);
+    for (std::uint32_t i = 0; i < samples; ++i) {
+      gpu::FrameParams params = renderer.params;
+      params.sampleIndex = renderer.samplesDone + i;
+      vkCmdPushConstants(cmd, renderer.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params, &params);
+      vkCmdDispatch(cmd, groupsX, groupsY, 1);
+      computeBarrier(cmd);  // the next sample reads and adds to the same sums
+    }
+  });
+  renderer.samplesDone += samples;
+  const auto* stats = static_cast<const gpu::RayStats*>(renderer.stats.mapped);
+  renderer.rays.primary += stats->primaryRays;
+  renderer.rays.shadow += stats->shadowRays;
+  renderer.rays.secondary += stats->secondaryRays;
+}
+
+}  // namespace
+
+void renderSamples(const Device& device, Renderer& renderer, std::uint32_t samples) {
+  const std::uint64_t perSubmission =
+      std::max<std::uint64_t>(1, (std::uint64_t(1) << 31) / std::max<std::uint64_t>(1, maxRaysPerSample(renderer.params)));
+  while (samples > 0) {
+    const auto batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(samples, perSubmission));
+    submitSamples(device, renderer, batch);
+    samples -= batch;
+  }
+}
+
+Image readImage(const Device& device, const Renderer& renderer) {
+  Image image(renderer.params.width, renderer.params.height);
+  downloadBuffer(device, renderer.accumulation, image.rgba.data(), image.rgba.size() * sizeof(float));
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+    const float count = image.rgba[i + 3];
+    const float scale = count > 0.0f ? 1.0f / count : 0.0f;
+    for (int c = 0; c < 3; ++c) image.rgba[i + c] *= scale;
+    image.rgba[i + 3] = 1.0f;
+  }
+  return image;
+}
+
+}  // namespace raylab

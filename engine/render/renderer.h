@@ -1,0 +1,62 @@
+// The offscreen renderer: the render.comp kernel over a GpuScene, accumulating one sample per pixel per
+// dispatch into a float32 buffer. `raylab render`, the viewer and the image tests all drive this.
+#pragma once
+
+#include <cstdint>
+
+#include "image/image.h"
+#include "scene/gpu_scene.h"
+#include "scene/scene.h"
+#include "shared/frame.h"
+#include "vk/device.h"
+#include "vk/pipeline.h"
+#include "vk/resources.h"
+
+namespace raylab {
+
+struct RenderSettings {
+  std::uint32_t width = 640;
+  std::uint32_t height = 360;
+  std::uint32_t maxDepth = 8;         // bounces after the primary hit
+  std::uint32_t seed = 0;
+  bool jitter = true;                 // anti-aliasing by jittered sub-pixel samples; off: pixel centres
+  float throughputCutoff = 1.0e-3f;   // paths whose weight falls below this stop
+};
+
+struct RayCounts {
+  std::uint64_t primary = 0;
+  std::uint64_t shadow = 0;
+  std::uint64_t secondary = 0;
+  std::uint64_t total() const { return primary + shadow + secondary; }
+};
+
+struct Renderer {
+  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+  VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  DescriptorSet descriptors;
+  Buffer accumulation;  // vec4 per pixel: radiance sum and sample count
+  Buffer stats;         // RayStats per submission, host-visible
+  gpu::FrameParams params{};
+  std::uint32_t samplesDone = 0;
+  RayCounts rays;
+};
+
+// Creates the pipeline (LLVM compiles it on lavapipe at the first dispatch, not here).
+Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Scene& scene,
+                        const RenderSettings& settings);
+void destroyRenderer(const Device& device, Renderer& renderer);
+
+// Adds `samples` samples to every pixel, in one submission.
+void renderSamples(const Device& device, Renderer& renderer, std::uint32_t samples);
+
+// Clears the accumulated samples (after a camera or parameter change).
+void resetAccumulation(const Device& device, Renderer& renderer);
+
+// The mean radiance per pixel so far, alpha 1.
+Image readImage(const Device& device, const Renderer& renderer);
+
+// Camera of FrameParams for an image of width x height; throws Error on a degenerate camera.
+void applyCamera(gpu::FrameParams& params, const Camera& camera, std::uint32_t width, std::uint32_t height);
+
+}  // namespace raylab

@@ -1,0 +1,231 @@
+#include "scene/gpu_scene.h"
+
+#include <string>
+
+#include "shared/bindings.h"
+#include "util/error.h"
+#include "util/timer.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
+void copyTransform(const glm::mat4& m, float out[3][4]) {
+  for (int row = 0; row < 3; ++row) {
+    for (int column = 0; column < 4; ++column) out[row][column] = m[column][row];  // glm is column-major
+  }
+}
+
+// Concatenated vertex and index arrays of every mesh; per-mesh offsets say where each starts.
+struct PackedMeshes {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;
+  std::vector<glm::vec2> uvs;
+  std::vector<std::uint32_t> indices;
+  std::vector<std::uint32_t> firstVertex;
+  std::vector<std::uint32_t> firstIndex;
+  std::vector<std::uint32_t> vertexFlags;
+};
+
+PackedMeshes packMeshes(const Scene& scene) {
+  PackedMeshes packed;
+  for (const Mesh& mesh : scene.meshes) {
+    const std::size_t vertexCount = mesh.positions.size();
+    if (!mesh.normals.empty() && mesh.normals.size() != vertexCount) {
+      throw Error("mesh '" + mesh.name + "': " + std::to_string(mesh.normals.size()) + " normals for " +
+                  std::to_string(vertexCount) + " positions");
+    }
+    if (!mesh.uvs.empty() && mesh.uvs.size() != vertexCount) {
+      throw Error("mesh '" + mesh.name + "': " + std::to_string(mesh.uvs.size()) + " UVs for " +
+                  std::to_string(vertexCount) + " positions");
+    }
+    if (mesh.indices.size() % 3 != 0) throw Error("mesh '" + mesh.name + "': index count is not a multiple of 3");
+    for (std::uint32_t index : mesh.indices) {
+      if (index >= vertexCount) {
+        throw Error("mesh '" + mesh.name + "': index " + std::to_string(index) + " is out of range (" +
+                    std::to_string(vertexCount) + " vertices)");
+      }
+    }
+    packed.firstVertex.push_back(static_cast<std::uint32_t>(packed.positions.size()));
+    packed.firstIndex.push_back(static_cast<std::uint32_t>(packed.indices.size()));
+    std::uint32_t flags = 0;
+    if (!mesh.normals.empty()) flags |= gpu::kVertexHasNormals;
+    if (!mesh.uvs.empty()) flags |= gpu::kVertexHasUvs;
+    packed.vertexFlags.push_back(flags);
+    packed.positions.insert(packed.positions.end(), mesh.positions.begin(), mesh.positions.end());
+    // Absent attributes still get slots, so one index addresses all three arrays.
+    if (mesh.normals.empty()) packed.normals.resize(packed.positions.size(), glm::vec3(0.0f));
+    else packed.normals.insert(packed.normals.end(), mesh.normals.begin(), mesh.normals.end());
+    if (mesh.uvs.empty()) packed.uvs.resize(packed.positions.size(), glm::vec2(0.0f));
+    else packed.uvs.insert(packed.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+    packed.indices.insert(packed.indices.end(), mesh.indices.begin(), mesh.indices.end());
+  }
+  return packed;
+}
+
+std::vector<gpu::MaterialRecord> materialRecords(std::span<const Material> materials) {
+  std::vector<gpu::MaterialRecord> records;
+  for (const Material& material : materials) records.push_back(material.record);
+  return records;
+}
+
+std::vector<gpu::LightRecord> lightRecords(std::span<const Light> lights) {
+  std::vector<gpu::LightRecord> records;
+  for (const Light& light : lights) records.push_back(light.record);
+  return records;
+}
+
+}  // namespace
+
+GpuScene uploadScene(const Device& device, const Scene& scene) {
+  for (const MeshInstance& instance : scene.instances) {
+    if (instance.mesh >= scene.meshes.size()) throw Error("an instance refers to a mesh that does not exist");
+    if (instance.material >= scene.materials.size()) throw Error("an instance refers to a material that does not exist");
+  }
+  for (const Sphere& sphere : scene.spheres) {
+    if (sphere.material >= scene.materials.size()) throw Error("a sphere refers to a material that does not exist");
+  }
+
+  GpuScene gpuScene;
+  const Stopwatch clock;
+  const PackedMeshes packed = packMeshes(scene);
+  gpuScene.positions = createBufferWithData<glm::vec3>(device, packed.positions, kStorage | kAsInputUsage,
+                                                       "positions");
+  gpuScene.normals = createBufferWithData<glm::vec3>(device, packed.normals, kStorage, "normals");
+  gpuScene.uvs = createBufferWithData<glm::vec2>(device, packed.uvs, kStorage, "uvs");
+  gpuScene.indices = createBufferWithData<std::uint32_t>(device, packed.indices, kStorage | kAsInputUsage,
+                                                         "indices");
+
+  std::vector<gpu::SphereRecord> sphereRecords;
+  std::vector<VkAabbPositionsKHR> aabbs;
+  for (const Sphere& sphere : scene.spheres) {
+    if (!(sphere.radius > 0.0f)) throw Error("a sphere has radius " + std::to_string(sphere.radius) + "; it must be > 0");
+    sphereRecords.push_back({sphere.center, sphere.radius, sphere.material});
+    const glm::vec3 low = sphere.center - sphere.radius;
+    const glm::vec3 high = sphere.center + sphere.radius;
+    aabbs.push_back({low.x, low.y, low.z, high.x, high.y, high.z});
+  }
+  gpuScene.spheres = createBufferWithData<gpu::SphereRecord>(device, sphereRecords, kStorage, "spheres");
+  gpuScene.sphereAabbs = createBufferWithData<VkAabbPositionsKHR>(device, aabbs, kAsInputUsage, "sphere AABBs");
+  gpuScene.sphereCount = static_cast<std::uint32_t>(sphereRecords.size());
+
+  // One BLAS per mesh, plus one BLAS holding every sphere.
+  std::vector<BlasInput> blasInputs;
+  std::vector<std::uint32_t> meshBlas(scene.meshes.size(), UINT32_MAX);
+  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    const Mesh& mesh = scene.meshes[i];
+    if (mesh.indices.empty()) continue;
+    BlasInput input;
+    input.kind = BlasInput::Kind::kTriangles;
+    input.vertices = gpuScene.positions.address + packed.firstVertex[i] * sizeof(glm::vec3);
+    input.vertexCount = static_cast<std::uint32_t>(mesh.positions.size());
+    input.indices = gpuScene.indices.address + packed.firstIndex[i] * sizeof(std::uint32_t);
+    input.triangleCount = static_cast<std::uint32_t>(mesh.indices.size() / 3);
+    meshBlas[i] = static_cast<std::uint32_t>(blasInputs.size());
+    blasInputs.push_back(input);
+  }
+  std::uint32_t sphereBlas = UINT32_MAX;
+  if (!aabbs.empty()) {
+    BlasInput input;
+    input.kind = BlasInput::Kind::kAabbs;
+    input.aabbs = gpuScene.sphereAabbs.address;
+    input.aabbCount = static_cast<std::uint32_t>(aabbs.size());
+    sphereBlas = static_cast<std::uint32_t>(blasInputs.size());
+    blasInputs.push_back(input);
+  }
+  gpuScene.blases = buildBlases(device, blasInputs);
+
+  std::vector<gpu::InstanceRecord> instanceRecords;
+  std::vector<TlasInstance> tlasInstances;
+  for (const MeshInstance& instance : scene.instances) {
+    if (meshBlas[instance.mesh] == UINT32_MAX) continue;
+    gpu::InstanceRecord record{};
+    record.geometryKind = gpu::kGeometryTriangles;
+    record.material = instance.material;
+    record.firstIndex = packed.firstIndex[instance.mesh];
+    record.firstVertex = packed.firstVertex[instance.mesh];
+    record.vertexFlags = packed.vertexFlags[instance.mesh];
+    TlasInstance tlasInstance;
+    tlasInstance.blas = meshBlas[instance.mesh];
+    copyTransform(instance.transform, tlasInstance.transform);
+    tlasInstance.customIndex = static_cast<std::uint32_t>(instanceRecords.size());
+    tlasInstances.push_back(tlasInstance);
+    instanceRecords.push_back(record);
+    gpuScene.triangleCount += scene.meshes[instance.mesh].indices.size() / 3;
+  }
+  if (sphereBlas != UINT32_MAX) {
+    gpu::InstanceRecord record{};
+    record.geometryKind = gpu::kGeometrySpheres;
+    record.firstSphere = 0;
+    TlasInstance tlasInstance;
+    tlasInstance.blas = sphereBlas;
+    copyTransform(glm::mat4(1.0f), tlasInstance.transform);
+    tlasInstance.customIndex = static_cast<std::uint32_t>(instanceRecords.size());
+    tlasInstances.push_back(tlasInstance);
+    instanceRecords.push_back(record);
+  }
+  gpuScene.tlas = buildTlas(device, gpuScene.blases, tlasInstances);
+  gpuScene.accelerationBuildSeconds = clock.seconds();
+
+  gpuScene.instances = createBufferWithData<gpu::InstanceRecord>(device, instanceRecords, kStorage, "instances");
+  const std::vector<gpu::MaterialRecord> materials = materialRecords(scene.materials);
+  gpuScene.materials = createBufferWithData<gpu::MaterialRecord>(device, materials, kStorage, "materials");
+  gpuScene.materialCount = static_cast<std::uint32_t>(materials.size());
+  const std::vector<gpu::LightRecord> lights = lightRecords(scene.lights);
+  gpuScene.lights = createBufferWithData<gpu::LightRecord>(device, lights, kStorage, "lights");
+  gpuScene.lightCount = static_cast<std::uint32_t>(lights.size());
+  return gpuScene;
+}
+
+void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
+  destroyAccelerationStructure(device, gpuScene.tlas);
+  for (AccelerationStructure& blas : gpuScene.blases) destroyAccelerationStructure(device, blas);
+  for (Buffer* buffer : {&gpuScene.instances, &gpuScene.positions, &gpuScene.normals, &gpuScene.uvs,
+                         &gpuScene.indices, &gpuScene.spheres, &gpuScene.sphereAabbs, &gpuScene.materials,
+                         &gpuScene.lights}) {
+    destroyBuffer(device, *buffer);
+  }
+  gpuScene = {};
+}
+
+void updateMaterials(const Device& device, const GpuScene& gpuScene, std::span<const Material> materials) {
+  if (materials.size() != gpuScene.materialCount) throw Error("updateMaterials: the material count changed");
+  const std::vector<gpu::MaterialRecord> records = materialRecords(materials);
+  uploadBuffer<gpu::MaterialRecord>(device, gpuScene.materials, records);
+}
+
+void updateLights(const Device& device, const GpuScene& gpuScene, std::span<const Light> lights) {
+  if (lights.size() != gpuScene.lightCount) throw Error("updateLights: the light count changed");
+  const std::vector<gpu::LightRecord> records = lightRecords(lights);
+  uploadBuffer<gpu::LightRecord>(device, gpuScene.lights, records);
+}
+
+std::vector<DescriptorBinding> sceneBindings() {
+  return {
+      {gpu::kBindingTlas, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
+      {gpu::kBindingInstances, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingNormals, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingUvs, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingIndices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingSpheres, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingMaterials, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+  };
+}
+
+void writeSceneDescriptors(const Device& device, VkDescriptorSet set, const GpuScene& gpuScene) {
+  writeAccelerationStructure(device, set, gpu::kBindingTlas, gpuScene.tlas.handle);
+  writeStorageBuffer(device, set, gpu::kBindingInstances, gpuScene.instances.handle);
+  writeStorageBuffer(device, set, gpu::kBindingPositions, gpuScene.positions.handle);
+  writeStorageBuffer(device, set, gpu::kBindingNormals, gpuScene.normals.handle);
+  writeStorageBuffer(device, set, gpu::kBindingUvs, gpuScene.uvs.handle);
+  writeStorageBuffer(device, set, gpu::kBindingIndices, gpuScene.indices.handle);
+  writeStorageBuffer(device, set, gpu::kBindingSpheres, gpuScene.spheres.handle);
+  writeStorageBuffer(device, set, gpu::kBindingMaterials, gpuScene.materials.handle);
+  writeStorageBuffer(device, set, gpu::kBindingLights, gpuScene.lights.handle);
+}
+
+}  // namespace raylab

@@ -1,0 +1,47 @@
+// A scene on the device: geometry, material and light buffers, the BLASes and the TLAS, and the descriptor
+// bindings every kernel uses to read them (shaders/shared/bindings.h).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "scene/scene.h"
+#include "vk/accel.h"
+#include "vk/device.h"
+#include "vk/pipeline.h"
+#include "vk/resources.h"
+
+namespace raylab {
+
+struct GpuScene {
+  Buffer instances;
+  Buffer positions;
+  Buffer normals;
+  Buffer uvs;
+  Buffer indices;
+  Buffer spheres;
+  Buffer sphereAabbs;
+  Buffer materials;
+  Buffer lights;
+  std::vector<AccelerationStructure> blases;
+  AccelerationStructure tlas;
+  std::uint32_t lightCount = 0;
+  std::uint32_t materialCount = 0;
+  std::uint64_t triangleCount = 0;
+  std::uint32_t sphereCount = 0;
+  double accelerationBuildSeconds = 0.0;  // BLAS + TLAS builds, uploads of their inputs included
+};
+
+GpuScene uploadScene(const Device& device, const Scene& scene);
+void destroyGpuScene(const Device& device, GpuScene& gpuScene);
+
+// Live edits (the viewer): same counts as uploaded, new values.
+void updateMaterials(const Device& device, const GpuScene& gpuScene, std::span<const Material> materials);
+void updateLights(const Device& device, const GpuScene& gpuScene, std::span<const Light> lights);
+
+// The scene's descriptor bindings, to merge into a kernel's set layout, and writing them into a set.
+std::vector<DescriptorBinding> sceneBindings();
+void writeSceneDescriptors(const Device& device, VkDescriptorSet set, const GpuScene& gpuScene);
+
+}  // namespace raylab

@@ -1,0 +1,73 @@
+// The host-side scene: what a glTF file or the built-in scene describes, before it is uploaded.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shared/scene_records.h"
+
+namespace raylab {
+
+struct Camera {
+  std::string name;
+  glm::vec3 position{0.0f, 1.0f, 5.0f};
+  glm::vec3 target{0.0f, 0.0f, 0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float yfov = glm::radians(40.0f);  // vertical field of view, radians
+};
+
+// An indexed triangle mesh in its own object space. Normals and UVs are either empty or one per position.
+struct Mesh {
+  std::string name;
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;
+  std::vector<glm::vec2> uvs;
+  std::vector<std::uint32_t> indices;  // three per triangle
+};
+
+struct MeshInstance {
+  std::uint32_t mesh = 0;
+  glm::mat4 transform{1.0f};  // object to world
+  std::uint32_t material = 0;
+};
+
+// An exact sphere in world space, traced through AABB geometry.
+struct Sphere {
+  glm::vec3 center{0.0f};
+  float radius = 1.0f;
+  std::uint32_t material = 0;
+};
+
+struct Material {
+  std::string name;
+  gpu::MaterialRecord record;
+};
+
+struct Light {
+  std::string name;
+  gpu::LightRecord record;
+};
+
+struct Scene {
+  std::string name;
+  Camera camera;
+  std::vector<Mesh> meshes;
+  std::vector<MeshInstance> instances;
+  std::vector<Sphere> spheres;
+  std::vector<Material> materials;
+  std::vector<Light> lights;
+  glm::vec3 background{0.0f};  // radiance of rays that leave the scene
+};
+
+// A material record with every parameter at its documented default (docs/brdfs.md), for `model`.
+gpu::MaterialRecord defaultMaterial(std::uint32_t model);
+gpu::MaterialRecord lambertMaterial(glm::vec3 rhoD, float delta = 0.0f);
+
+gpu::LightRecord pointLight(glm::vec3 position, glm::vec3 intensity);
+
+std::uint64_t triangleCount(const Scene& scene);
+
+}  // namespace raylab

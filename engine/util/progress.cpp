@@ -1,0 +1,47 @@
+#include "util/progress.h"
+
+#include <unistd.h>
+
+#include <cmath>
+
+namespace raylab {
+
+ProgressLine::ProgressLine(std::string label, std::uint64_t total, std::FILE* stream)
+    : label_(std::move(label)), total_(total), stream_(stream), interactive_(isatty(fileno(stream)) != 0) {}
+
+void ProgressLine::update(std::uint64_t done, std::uint64_t raysSoFar) {
+  const double elapsed = clock_.seconds();
+  const double interval = interactive_ ? 0.1 : 5.0;
+  if (done < total_ && lastPrint_ >= 0.0 && elapsed - lastPrint_ < interval) return;
+  lastPrint_ = elapsed;
+  const double raysPerSecond = elapsed > 0.0 ? static_cast<double>(raysSoFar) / elapsed : 0.0;
+  std::fprintf(stream_, "%s%s %llu/%llu spp  %s  %srays/s%s", interactive_ ? "\r" : "", label_.c_str(),
+               static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_),
+               formatSeconds(elapsed).c_str(), formatCount(raysPerSecond).c_str(), interactive_ ? "\x1b[K" : "\n");
+  std::fflush(stream_);
+  printedAny_ = true;
+}
+
+void ProgressLine::finish() {
+  if (interactive_ && printedAny_) std::fputc('\n', stream_);
+  std::fflush(stream_);
+}
+
+std::string formatCount(double count) {
+  char text[32];
+  if (count >= 1e9) std::snprintf(text, sizeof text, "%.2f G", count / 1e9);
+  else if (count >= 1e6) std::snprintf(text, sizeof text, "%.2f M", count / 1e6);
+  else if (count >= 1e3) std::snprintf(text, sizeof text, "%.1f k", count / 1e3);
+  else std::snprintf(text, sizeof text, "%.0f ", count);
+  return text;
+}
+
+std::string formatSeconds(double seconds) {
+  char text[32];
+  if (seconds >= 1.0) std::snprintf(text, sizeof text, "%.2f s", seconds);
+  else if (seconds >= 1e-3) std::snprintf(text, sizeof text, "%.1f ms", seconds * 1e3);
+  else std::snprintf(text, sizeof text, "%.0f us", seconds * 1e6);
+  return text;
+}
+
+}  // namespace raylab

@@ -1,0 +1,34 @@
+// A progress line for long work: samples done, elapsed time and ray throughput. On a terminal it redraws
+// one line; in a log (CI, pipes) it prints a line every few seconds so the log stays short.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+#include "util/timer.h"
+
+namespace raylab {
+
+class ProgressLine {
+ public:
+  ProgressLine(std::string label, std::uint64_t total, std::FILE* stream = stderr);
+  void update(std::uint64_t done, std::uint64_t raysSoFar);
+  void finish();
+
+ private:
+  std::string label_;
+  std::uint64_t total_;
+  std::FILE* stream_;
+  bool interactive_;
+  Stopwatch clock_;
+  double lastPrint_ = -1.0;
+  bool printedAny_ = false;
+};
+
+// "12.3 M", "456 k": counts for humans.
+std::string formatCount(double count);
+// "1.52 s", "48.2 ms", "310 us".
+std::string formatSeconds(double seconds);
+
+}  // namespace raylab

@@ -1,0 +1,18 @@
+// One-shot command submission: record, submit, wait. raylab's offscreen work is synchronous at the host;
+// the viewer keeps its own per-frame command buffers.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <functional>
+
+#include "vk/device.h"
+
+namespace raylab {
+
+void submitAndWait(const Device& device, const std::function<void(VkCommandBuffer)>& record);
+
+// Makes compute-shader and transfer writes visible to later compute shaders, transfers and host reads.
+void computeBarrier(VkCommandBuffer cmd);
+
+}  // namespace raylab

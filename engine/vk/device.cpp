@@ -1,0 +1,370 @@
+#include "vk/device.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "util/error.h"
+#include "vk/vk_check.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+constexpr const char* kSetupHint = "run `tools/setup.sh render` from the raylab sources to install Mesa's lavapipe "
+                                   "with ray queries (mesa-vulkan-drivers >= 24.1 from bookworm-backports)";
+
+std::atomic<std::uint32_t> gValidationMessages{0};
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                   VkDebugUtilsMessageTypeFlagsEXT,
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void*) {
+  gValidationMessages.fetch_add(1);
+  const char* level = (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error" : "warning";
+  std::fprintf(stderr, "raylab: [validation %s] %s\n", level, data->pMessage);
+  return VK_FALSE;
+}
+
+VkDebugUtilsMessengerCreateInfoEXT messengerInfo() {
+  VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  info.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                     VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  info.pfnUserCallback = onValidationMessage;
+  return info;
+}
+
+bool envFlag(const char* name) {
+  const char* value = std::getenv(name);
+  return value != nullptr && std::strcmp(value, "") != 0 && std::strcmp(value, "0") != 0;
+}
+
+bool hasLayer(const char* name) {
+  std::uint32_t count = 0;
+  vkEnumerateInstanceLayerProperties(&count, nullptr);
+  std::vector<VkLayerProperties> layers(count);
+  vkEnumerateInstanceLayerProperties(&count, layers.data());
+  return std::any_of(layers.begin(), layers.end(),
+                     [&](const VkLayerProperties& layer) { return std::strcmp(layer.layerName, name) == 0; });
+}
+
+bool hasInstanceExtension(const char* name) {
+  std::uint32_t count = 0;
+  vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateInstanceExtensionProperties(nullptr, &count, extensions.data());
+  return std::any_of(extensions.begin(), extensions.end(),
+                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+std::vector<const char*> requiredDeviceExtensions(bool presentation) {
+  std::vector<const char*> extensions = {
+      VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+      VK_KHR_RAY_QUERY_EXTENSION_NAME,
+      VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME,  // required by VK_KHR_acceleration_structure
+  };
+  if (presentation) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  return extensions;
+}
+
+// The feature structs raylab enables, chained for vkGetPhysicalDeviceFeatures2 and vkCreateDevice.
+struct FeatureChain {
+  VkPhysicalDeviceFeatures2 core{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  VkPhysicalDeviceVulkan12Features vulkan12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceAccelerationStructureFeaturesKHR accelerationStructure{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+  VkPhysicalDeviceRayQueryFeaturesKHR rayQuery{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+
+  FeatureChain() {
+    core.pNext = &vulkan12;
+    vulkan12.pNext = &accelerationStructure;
+    accelerationStructure.pNext = &rayQuery;
+  }
+  FeatureChain(const FeatureChain&) = delete;
+  FeatureChain& operator=(const FeatureChain&) = delete;
+};
+
+std::uint32_t findQueueFamily(VkPhysicalDevice physical, VkSurfaceKHR surface) {
+  std::uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
+  // Prefer a graphics+compute family: the viewer's ImGui pass and presentation share the compute queue.
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::uint32_t i = 0; i < count; ++i) {
+      if (!(families[i].queueFlags & VK_QUEUE_COMPUTE_BIT)) continue;
+      if (pass == 0 && !(families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)) continue;
+      if (surface != VK_NULL_HANDLE) {
+        VkBool32 present = VK_FALSE;
+        vkGetPhysicalDeviceSurfaceSupportKHR(physical, i, surface, &present);
+        if (!present) continue;
+      }
+      return i;
+    }
+  }
+  return VK_QUEUE_FAMILY_IGNORED;
+}
+
+DeviceReport surveyOne(VkPhysicalDevice physical, std::uint32_t index, VkSurfaceKHR surface) {
+  VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  subgroup.pNext = &driver;
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  properties.pNext = &subgroup;
+  vkGetPhysicalDeviceProperties2(physical, &properties);
+
+  DeviceReport report;
+  report.index = index;
+  report.name = properties.properties.deviceName;
+  report.type = properties.properties.deviceType;
+  report.apiVersion = properties.properties.apiVersion;
+  report.driver = std::string(driver.driverName) + ", " + driver.driverInfo;
+
+  if (report.apiVersion < VK_API_VERSION_1_2) {
+    report.missing.push_back("Vulkan 1.2 (it has " + std::to_string(VK_API_VERSION_MAJOR(report.apiVersion)) + "." +
+                             std::to_string(VK_API_VERSION_MINOR(report.apiVersion)) + ")");
+    return report;
+  }
+
+  std::uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, extensions.data());
+  for (const char* name : requiredDeviceExtensions(surface != VK_NULL_HANDLE)) {
+    const bool found = std::any_of(extensions.begin(), extensions.end(), [&](const VkExtensionProperties& e) {
+      return std::strcmp(e.extensionName, name) == 0;
+    });
+    if (!found) report.missing.push_back(name);
+  }
+  if (!report.missing.empty()) return report;
+
+  FeatureChain features;
+  vkGetPhysicalDeviceFeatures2(physical, &features.core);
+  if (!features.vulkan12.bufferDeviceAddress) report.missing.push_back("feature bufferDeviceAddress");
+  if (!features.vulkan12.scalarBlockLayout) report.missing.push_back("feature scalarBlockLayout");
+  if (!features.accelerationStructure.accelerationStructure) report.missing.push_back("feature accelerationStructure");
+  if (!features.rayQuery.rayQuery) report.missing.push_back("feature rayQuery");
+  if (!(subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
+      !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT)) {
+    report.missing.push_back("subgroup arithmetic in compute shaders");
+  }
+  if (findQueueFamily(physical, surface) == VK_QUEUE_FAMILY_IGNORED) {
+    report.missing.push_back(surface != VK_NULL_HANDLE ? "a compute queue that can present to the window"
+                                                       : "a compute queue");
+  }
+  return report;
+}
+
+int typePreference(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
+    default: return 4;
+  }
+}
+
+template <class T>
+T loadDeviceFunction(VkDevice device, const char* name) {
+  auto function = reinterpret_cast<T>(vkGetDeviceProcAddr(device, name));
+  if (function == nullptr) throw Error(std::string("the Vulkan driver does not provide ") + name);
+  return function;
+}
+
+}  // namespace
+
+Instance createInstance(const InstanceOptions& options) {
+  Instance instance;
+  instance.validation = options.validation || envFlag("RAYLAB_VALIDATION");
+  if (instance.validation && !hasLayer(kValidationLayer)) {
+    throw Error(std::string("validation was requested but ") + kValidationLayer +
+                " is not installed; run `tools/setup.sh` (package vulkan-validationlayers)");
+  }
+  instance.debugUtils = hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+
+  std::vector<const char*> extensions = options.extensions;
+  if (instance.debugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  std::vector<const char*> layers;
+  if (instance.validation) layers.push_back(kValidationLayer);
+
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "raylab";
+  app.applicationVersion = VK_MAKE_API_VERSION(0, 0, 1, 0);
+  app.pEngineName = "raylab";
+  app.apiVersion = VK_API_VERSION_1_2;
+
+  // Chained so that messages from vkCreateInstance and vkDestroyInstance are caught too.
+  VkDebugUtilsMessengerCreateInfoEXT messenger = messengerInfo();
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pNext = instance.debugUtils && instance.validation ? &messenger : nullptr;
+  info.pApplicationInfo = &app;
+  info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+
+  const VkResult result = vkCreateInstance(&info, nullptr, &instance.handle);
+  if (result == VK_ERROR_INCOMPATIBLE_DRIVER || result == VK_ERROR_INITIALIZATION_FAILED) {
+    throw Error(std::string("no Vulkan driver was found (vkCreateInstance: ") + vkResultName(result) + "); " +
+                    kSetupHint + ".",
+                kExitNoDevice);
+  }
+  VK_CHECK(result);
+
+  if (instance.debugUtils && instance.validation) {
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance.handle, "vkCreateDebugUtilsMessengerEXT"));
+    VK_CHECK(create(instance.handle, &messenger, nullptr, &instance.messenger));
+  }
+  return instance;
+}
+
+void destroyInstance(Instance& instance) {
+  if (instance.messenger != VK_NULL_HANDLE) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance.handle, "vkDestroyDebugUtilsMessengerEXT"));
+    destroy(instance.handle, instance.messenger, nullptr);
+  }
+  if (instance.handle != VK_NULL_HANDLE) vkDestroyInstance(instance.handle, nullptr);
+  instance = {};
+}
+
+std::vector<DeviceReport> surveyDevices(const Instance& instance, VkSurfaceKHR surface) {
+  std::uint32_t count = 0;
+  VK_CHECK(vkEnumeratePhysicalDevices(instance.handle, &count, nullptr));
+  std::vector<VkPhysicalDevice> physicals(count);
+  VK_CHECK(vkEnumeratePhysicalDevices(instance.handle, &count, physicals.data()));
+  std::vector<DeviceReport> reports;
+  for (std::uint32_t i = 0; i < count; ++i) reports.push_back(surveyOne(physicals[i], i, surface));
+  return reports;
+}
+
+std::string noCapableDeviceMessage(const std::vector<DeviceReport>& reports) {
+  std::string found;
+  for (const DeviceReport& report : reports) {
+    std::string missing;
+    for (const std::string& item : report.missing) missing += (missing.empty() ? "" : ", ") + item;
+    found += (found.empty() ? "" : "; ") + report.name + " (" + report.driver + ") lacks " + missing;
+  }
+  if (found.empty()) found = "no Vulkan device at all";
+  return "raylab needs a Vulkan 1.2 device with VK_KHR_ray_query and VK_KHR_acceleration_structure, but found " +
+         found + "; " + kSetupHint + ".";
+}
+
+std::uint32_t chooseDevice(const std::vector<DeviceReport>& reports, std::optional<std::uint32_t> requested) {
+  if (requested) {
+    if (*requested >= reports.size()) {
+      throw Error("--device " + std::to_string(*requested) + ": there are only " + std::to_string(reports.size()) +
+                      " Vulkan devices (see `raylab devices`)",
+                  kExitUsage);
+    }
+    const DeviceReport& report = reports[*requested];
+    if (!report.capable()) throw Error(noCapableDeviceMessage({report}), kExitNoDevice);
+    return *requested;
+  }
+  const DeviceReport* best = nullptr;
+  for (const DeviceReport& report : reports) {
+    if (report.capable() && (best == nullptr || typePreference(report.type) < typePreference(best->type))) {
+      best = &report;
+    }
+  }
+  if (best == nullptr) throw Error(noCapableDeviceMessage(reports), kExitNoDevice);
+  return best->index;
+}
+
+Device createDevice(const Instance& instance, const DeviceReport& report, VkSurfaceKHR surface) {
+  std::uint32_t count = 0;
+  VK_CHECK(vkEnumeratePhysicalDevices(instance.handle, &count, nullptr));
+  std::vector<VkPhysicalDevice> physicals(count);
+  VK_CHECK(vkEnumeratePhysicalDevices(instance.handle, &count, physicals.data()));
+
+  Device device;
+  device.instance = instance.handle;
+  device.physical = physicals.at(report.index);
+  device.report = report;
+  device.queueFamily = findQueueFamily(device.physical, surface);
+
+  VkPhysicalDeviceAccelerationStructurePropertiesKHR asProperties{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
+  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  subgroup.pNext = &asProperties;
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  properties.pNext = &subgroup;
+  vkGetPhysicalDeviceProperties2(device.physical, &properties);
+  device.properties = properties.properties;
+  device.scratchAlignment = asProperties.minAccelerationStructureScratchOffsetAlignment;
+  device.subgroupSize = subgroup.subgroupSize;
+  vkGetPhysicalDeviceMemoryProperties(device.physical, &device.memory);
+
+  // Enable exactly what raylab uses, nothing the device merely offers.
+  FeatureChain features;
+  features.vulkan12.bufferDeviceAddress = VK_TRUE;
+  features.vulkan12.scalarBlockLayout = VK_TRUE;
+  features.accelerationStructure.accelerationStructure = VK_TRUE;
+  features.rayQuery.rayQuery = VK_TRUE;
+
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = device.queueFamily;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+
+  const std::vector<const char*> extensions = requiredDeviceExtensions(surface != VK_NULL_HANDLE);
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  info.pNext = &features.core;
+  info.queueCreateInfoCount = 1;
+  info.pQueueCreateInfos = &queueInfo;
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  VK_CHECK(vkCreateDevice(device.physical, &info, nullptr, &device.handle));
+  vkGetDeviceQueue(device.handle, device.queueFamily, 0, &device.queue);
+
+  device.ext.createAccelerationStructure =
+      loadDeviceFunction<PFN_vkCreateAccelerationStructureKHR>(device.handle, "vkCreateAccelerationStructureKHR");
+  device.ext.destroyAccelerationStructure =
+      loadDeviceFunction<PFN_vkDestroyAccelerationStructureKHR>(device.handle, "vkDestroyAccelerationStructureKHR");
+  device.ext.getAccelerationStructureBuildSizes = loadDeviceFunction<PFN_vkGetAccelerationStructureBuildSizesKHR>(
+      device.handle, "vkGetAccelerationStructureBuildSizesKHR");
+  device.ext.cmdBuildAccelerationStructures =
+      loadDeviceFunction<PFN_vkCmdBuildAccelerationStructuresKHR>(device.handle, "vkCmdBuildAccelerationStructuresKHR");
+  device.ext.getAccelerationStructureDeviceAddress =
+      loadDeviceFunction<PFN_vkGetAccelerationStructureDeviceAddressKHR>(
+          device.handle, "vkGetAccelerationStructureDeviceAddressKHR");
+  if (instance.debugUtils) {
+    device.ext.setDebugUtilsObjectName = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(instance.handle, "vkSetDebugUtilsObjectNameEXT"));
+  }
+
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = device.queueFamily;
+  VK_CHECK(vkCreateCommandPool(device.handle, &poolInfo, nullptr, &device.commandPool));
+  return device;
+}
+
+void destroyDevice(Device& device) {
+  if (device.handle == VK_NULL_HANDLE) return;
+  vkDeviceWaitIdle(device.handle);
+  vkDestroyCommandPool(device.handle, device.commandPool, nullptr);
+  vkDestroyDevice(device.handle, nullptr);
+  device = {};
+}
+
+std::uint32_t validationMessageCount() { return gValidationMessages.load(); }
+
+const char* deviceTypeName(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
+    default: return "other";
+  }
+}
+
+}  // namespace raylab

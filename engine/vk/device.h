@@ -1,0 +1,84 @@
+// Vulkan instance and device creation for raylab: a device must support ray queries, acceleration structures,
+// buffer device addresses and the scalar block layout. Thin free functions over plain structs.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+struct InstanceOptions {
+  bool validation = false;                   // also forced on by RAYLAB_VALIDATION=1
+  std::vector<const char*> extensions;       // e.g. the surface extensions GLFW asks for
+};
+
+struct Instance {
+  VkInstance handle = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  bool validation = false;
+  bool debugUtils = false;  // object names and the validation messenger
+};
+
+// What raylab found out about one physical device.
+struct DeviceReport {
+  std::uint32_t index = 0;
+  std::string name;
+  std::string driver;  // driver name and version string, e.g. "llvmpipe, Mesa 25.0.7 (LLVM 15.0.6)"
+  VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
+  std::uint32_t apiVersion = 0;
+  std::vector<std::string> missing;  // what stops raylab from using it; empty when capable
+  bool capable() const { return missing.empty(); }
+};
+
+// Extension entry points that the loader does not export.
+struct ExtensionFunctions {
+  PFN_vkCreateAccelerationStructureKHR createAccelerationStructure = nullptr;
+  PFN_vkDestroyAccelerationStructureKHR destroyAccelerationStructure = nullptr;
+  PFN_vkGetAccelerationStructureBuildSizesKHR getAccelerationStructureBuildSizes = nullptr;
+  PFN_vkCmdBuildAccelerationStructuresKHR cmdBuildAccelerationStructures = nullptr;
+  PFN_vkGetAccelerationStructureDeviceAddressKHR getAccelerationStructureDeviceAddress = nullptr;
+  PFN_vkSetDebugUtilsObjectNameEXT setDebugUtilsObjectName = nullptr;  // null without VK_EXT_debug_utils
+};
+
+struct Device {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  VkDevice handle = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;  // graphics+compute where available: the viewer presents from it too
+  std::uint32_t queueFamily = 0;
+  VkCommandPool commandPool = VK_NULL_HANDLE;
+  DeviceReport report;
+  VkPhysicalDeviceProperties properties{};
+  VkPhysicalDeviceMemoryProperties memory{};
+  std::uint32_t scratchAlignment = 1;  // minAccelerationStructureScratchOffsetAlignment
+  std::uint32_t subgroupSize = 1;
+  ExtensionFunctions ext;
+};
+
+// Throws Error(kExitNoDevice) when there is no Vulkan driver at all.
+Instance createInstance(const InstanceOptions& options);
+void destroyInstance(Instance& instance);
+
+// Every physical device with what it lacks; `surface` adds presentation support to the requirements.
+std::vector<DeviceReport> surveyDevices(const Instance& instance, VkSurfaceKHR surface = VK_NULL_HANDLE);
+
+// The requested device, or the first capable one preferring discrete GPUs. Throws Error(kExitNoDevice)
+// with one sentence naming what is missing and how to get it.
+std::uint32_t chooseDevice(const std::vector<DeviceReport>& reports, std::optional<std::uint32_t> requested);
+
+Device createDevice(const Instance& instance, const DeviceReport& report, VkSurfaceKHR surface = VK_NULL_HANDLE);
+void destroyDevice(Device& device);
+
+// Validation messages (warnings and errors) reported since start-up, from every instance.
+std::uint32_t validationMessageCount();
+
+// The one sentence printed when no device can run raylab.
+std::string noCapableDeviceMessage(const std::vector<DeviceReport>& reports);
+
+const char* deviceTypeName(VkPhysicalDeviceType type);
+
+}  // namespace raylab

@@ -1,0 +1,141 @@
+#include "vk/pipeline.h"
+
+#include <string>
+
+#include "shader_registry.h"
+#include "util/error.h"
+#include "vk/debug_name.h"
+#include "vk/vk_check.h"
+
+namespace raylab {
+
+SpecializationConstants& SpecializationConstants::set(std::uint32_t id, std::uint32_t value) {
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    if (entries_[i].constantID == id) {
+      values_[i] = value;
+      return *this;
+    }
+  }
+  entries_.push_back({id, static_cast<std::uint32_t>(values_.size() * sizeof(std::uint32_t)), sizeof(std::uint32_t)});
+  values_.push_back(value);
+  return *this;
+}
+
+const VkSpecializationInfo* SpecializationConstants::info() {
+  info_.mapEntryCount = static_cast<std::uint32_t>(entries_.size());
+  info_.pMapEntries = entries_.data();
+  info_.dataSize = values_.size() * sizeof(std::uint32_t);
+  info_.pData = values_.data();
+  return &info_;
+}
+
+VkDescriptorSetLayout createDescriptorSetLayout(const Device& device, std::span<const DescriptorBinding> bindings,
+                                                const char* name) {
+  std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
+  for (const DescriptorBinding& binding : bindings) {
+    layoutBindings.push_back({binding.binding, binding.type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+  }
+  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  info.bindingCount = static_cast<std::uint32_t>(layoutBindings.size());
+  info.pBindings = layoutBindings.data();
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorSetLayout(device.handle, &info, nullptr, &layout));
+  setDebugName(device, layout, name);
+  return layout;
+}
+
+VkPipelineLayout createPipelineLayout(const Device& device, VkDescriptorSetLayout setLayout,
+                                      std::uint32_t pushConstantBytes, const char* name) {
+  const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = 1;
+  info.pSetLayouts = &setLayout;
+  info.pushConstantRangeCount = pushConstantBytes > 0 ? 1 : 0;
+  info.pPushConstantRanges = &range;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreatePipelineLayout(device.handle, &info, nullptr, &layout));
+  setDebugName(device, layout, name);
+  return layout;
+}
+
+VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, std::string_view kernelName,
+                                 SpecializationConstants* constants) {
+  const std::span<const std::uint32_t> spirv = embeddedSpirv(kernelName);
+  if (spirv.empty()) throw Error("kernel " + std::string(kernelName) + " is not embedded in this build");
+  const std::string name(kernelName);
+
+  VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  moduleInfo.codeSize = spirv.size_bytes();
+  moduleInfo.pCode = spirv.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateShaderModule(device.handle, &moduleInfo, nullptr, &module));
+  setDebugName(device, module, name.c_str());
+
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = module;
+  info.stage.pName = "main";
+  info.stage.pSpecializationInfo = constants != nullptr ? constants->info() : nullptr;
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  const VkResult result = vkCreateComputePipelines(device.handle, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+  vkDestroyShaderModule(device.handle, module, nullptr);
+  VK_CHECK(result);
+  setDebugName(device, pipeline, name.c_str());
+  return pipeline;
+}
+
+DescriptorSet allocateDescriptorSet(const Device& device, VkDescriptorSetLayout layout,
+                                    std::span<const DescriptorBinding> bindings, const char* name) {
+  std::vector<VkDescriptorPoolSize> sizes;
+  for (const DescriptorBinding& binding : bindings) sizes.push_back({binding.type, 1});
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 1;
+  poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+  poolInfo.pPoolSizes = sizes.data();
+  DescriptorSet result;
+  VK_CHECK(vkCreateDescriptorPool(device.handle, &poolInfo, nullptr, &result.pool));
+  setDebugName(device, result.pool, name);
+
+  VkDescriptorSetAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocateInfo.descriptorPool = result.pool;
+  allocateInfo.descriptorSetCount = 1;
+  allocateInfo.pSetLayouts = &layout;
+  VK_CHECK(vkAllocateDescriptorSets(device.handle, &allocateInfo, &result.set));
+  setDebugName(device, result.set, name);
+  return result;
+}
+
+void destroyDescriptorSet(const Device& device, DescriptorSet& set) {
+  if (set.pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(device.handle, set.pool, nullptr);
+  set = {};
+}
+
+void writeStorageBuffer(const Device& device, VkDescriptorSet set, std::uint32_t binding, VkBuffer buffer) {
+  const VkDescriptorBufferInfo bufferInfo{buffer, 0, VK_WHOLE_SIZE};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  write.pBufferInfo = &bufferInfo;
+  vkUpdateDescriptorSets(device.handle, 1, &write, 0, nullptr);
+}
+
+void writeAccelerationStructure(const Device& device, VkDescriptorSet set, std::uint32_t binding,
+                                VkAccelerationStructureKHR as) {
+  VkWriteDescriptorSetAccelerationStructureKHR asInfo{
+      VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
+  asInfo.accelerationStructureCount = 1;
+  asInfo.pAccelerationStructures = &as;
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.pNext = &asInfo;
+  write.dstSet = set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+  vkUpdateDescriptorSets(device.handle, 1, &write, 0, nullptr);
+}
+
+}  // namespace raylab

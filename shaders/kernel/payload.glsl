@@ -1,0 +1,35 @@
+// The one payload the OptiX-shaped programs share, and the hit attributes closestHit receives.
+#ifndef RAYLAB_KERNEL_PAYLOAD_GLSL
+#define RAYLAB_KERNEL_PAYLOAD_GLSL
+
+#include "common/rng.glsl"
+
+// The far end of rays that should go on forever (primary rays, directional-light shadow rays).
+const float kRayTMax = 3.0e38;
+
+// A path in flight. The raygen traces (origin, direction); closestHit or miss add what they see to
+// `radiance` and either set up the next segment or mark the path done. No recursion: the raygen loops.
+struct Payload {
+  vec3 radiance;    // gathered so far
+  vec3 throughput;  // weight of whatever the next segment brings back
+  vec3 origin;      // the next segment
+  vec3 direction;   // unit length
+  uint depth;       // bounces taken after the primary hit
+  bool done;
+  Rng rng;
+  uint shadowRays;
+};
+
+// What the traversal knows about the committed hit (OptiX: attributes and built-ins).
+struct Hit {
+  float t;
+  uint instance;  // instance custom index: the InstanceRecord
+  uint primitive;
+  vec2 barycentrics;  // triangles only
+  vec3 objectOrigin;  // the ray in the instance's object space; t is the same in both spaces
+  vec3 objectDirection;
+  mat4x3 objectToWorld;
+  mat4x3 worldToObject;
+};
+
+#endif

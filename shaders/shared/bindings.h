@@ -1,0 +1,28 @@
+// Descriptor bindings (set 0) shared by every kernel, and the specialization-constant ids.
+#ifndef RAYLAB_SHARED_BINDINGS_H
+#define RAYLAB_SHARED_BINDINGS_H
+
+#include "compat.h"
+
+RL_NAMESPACE_BEGIN
+
+// Scene: filled once per scene by engine/scene/gpu_scene.cpp.
+RL_CONST uint kBindingTlas = 0;
+RL_CONST uint kBindingInstances = 1;  // InstanceRecord[], indexed by the instance custom index
+RL_CONST uint kBindingPositions = 2;  // vec3[] object-space positions of every mesh, concatenated
+RL_CONST uint kBindingNormals = 3;    // vec3[] per-vertex normals (same indexing as positions)
+RL_CONST uint kBindingUvs = 4;        // vec2[] TEXCOORD_0 (same indexing as positions)
+RL_CONST uint kBindingIndices = 5;    // uint[] triangle indices, relative to InstanceRecord.firstVertex
+RL_CONST uint kBindingSpheres = 6;    // SphereRecord[]
+RL_CONST uint kBindingMaterials = 7;  // MaterialRecord[]
+RL_CONST uint kBindingLights = 8;     // LightRecord[]
+
+// Per-kernel outputs.
+RL_CONST uint kBindingAccumulation = 9;  // vec4[] running sum of radiance samples per pixel
+RL_CONST uint kBindingRayStats = 10;     // RayStats, counters reset before every dispatch
+RL_CONST uint kBindingProbeRays = 11;    // trace_rays.comp: ProbeRay[] in
+RL_CONST uint kBindingProbeHits = 12;    // trace_rays.comp: ProbeHit[] out
+
+RL_NAMESPACE_END
+
+#endif

@@ -1,0 +1,65 @@
+// Per-dispatch parameters of the render kernel (push constants) and its ray counters.
+#ifndef RAYLAB_SHARED_FRAME_H
+#define RAYLAB_SHARED_FRAME_H
+
+#include "compat.h"
+
+RL_NAMESPACE_BEGIN
+
+// FrameParams.flags
+RL_CONST uint kFrameJitter = 1;  // jittered sub-pixel positions (anti-aliasing); else pixel centres
+
+// A pinhole camera: the ray through normalised device coordinates (x, y) in [-1, 1]^2 has direction
+// cameraForward + x cameraRight + y cameraUp; right and up are pre-scaled by the field of view.
+struct FrameParams {
+  vec3 cameraOrigin;
+  uint width;
+  vec3 cameraRight;
+  uint height;
+  vec3 cameraUp;
+  uint seed;
+  vec3 cameraForward;
+  uint sampleIndex;  // which sample of every pixel this dispatch adds; keys the RNG
+  vec3 background;   // radiance of rays that miss everything
+  uint reserved;
+  uint maxDepth;     // bounces after the primary hit
+  uint lightCount;
+  uint flags;
+  float throughputCutoff;  // a path whose throughput drops below this stops
+};
+RL_CHECK_SIZE(FrameParams, 96);
+
+struct RayStats {
+  uint primaryRays;
+  uint shadowRays;
+  uint secondaryRays;
+  uint reserved;
+};
+RL_CHECK_SIZE(RayStats, 16);
+
+// trace_rays.comp: one ray in, its closest hit out.
+struct ProbeRay {
+  vec3 origin;
+  float tMin;
+  vec3 direction;
+  float tMax;
+};
+RL_CHECK_SIZE(ProbeRay, 32);
+
+RL_CONST uint kProbeMiss = 0xFFFFFFFFu;
+
+struct ProbeHit {
+  float t;
+  uint instance;   // instance custom index, kProbeMiss on a miss
+  uint primitive;
+  uint frontFace;  // 1 when the ray hit the outside of the surface
+  vec3 position;   // world-space hit point as the kernel reconstructs it
+  uint reserved;
+  vec3 geometricNormal;  // world space, unit length, outward
+  uint reserved2;
+};
+RL_CHECK_SIZE(ProbeHit, 48);
+
+RL_NAMESPACE_END
+
+#endif

@@ -1,0 +1,84 @@
+// Scene data as the kernels see it: instances, geometry, materials and lights.
+#ifndef RAYLAB_SHARED_SCENE_RECORDS_H
+#define RAYLAB_SHARED_SCENE_RECORDS_H
+
+#include "compat.h"
+
+RL_NAMESPACE_BEGIN
+
+// InstanceRecord.geometryKind
+RL_CONST uint kGeometryTriangles = 0;
+RL_CONST uint kGeometrySpheres = 1;  // AABB BLAS; primitive i is SphereRecord firstSphere + i
+
+// InstanceRecord.vertexFlags
+RL_CONST uint kVertexHasNormals = 1;
+RL_CONST uint kVertexHasUvs = 2;
+
+// One per TLAS instance; the TLAS instance custom index is this record's index.
+struct InstanceRecord {
+  uint geometryKind;
+  uint material;     // triangles: material of the whole mesh
+  uint firstIndex;   // triangles: first entry of this mesh in the index buffer
+  uint firstVertex;  // triangles: added to every index of this mesh
+  uint firstSphere;  // spheres: record of primitive 0
+  uint vertexFlags;
+};
+RL_CHECK_SIZE(InstanceRecord, 24);
+
+// An analytic sphere in the object space of its instance.
+struct SphereRecord {
+  vec3 center;
+  float radius;
+  uint material;
+};
+RL_CHECK_SIZE(SphereRecord, 20);
+
+// MaterialRecord.model: the BRDF models of ../shared/BRDF_SPEC.md.
+RL_CONST uint kModelLambert = 0;
+RL_CONST uint kModelPhong = 1;
+RL_CONST uint kModelBlinnPhong = 2;
+RL_CONST uint kModelCookTorrance = 3;
+RL_CONST uint kModelWard = 4;
+RL_CONST uint kModelWardDuer = 5;
+RL_CONST uint kModelWardGmd = 6;
+RL_CONST uint kModelAshikhminShirley = 7;
+RL_CONST uint kModelGlass = 8;
+RL_CONST uint kModelCount = 9;
+
+// Parameters of every model side by side; each model reads only its own (docs/brdfs.md).
+struct MaterialRecord {
+  vec3 rhoD;    // rho_d; Rd for ashikhmin_shirley
+  uint model;
+  vec3 rhoS;    // rho_s; Rs for ashikhmin_shirley
+  float delta;  // mirror-reflection weight of the direct integrator
+  vec3 tint;    // glass: transmittance colour
+  float eta;    // cooktorrance, glass: inside over outside
+  float s;      // phong, blinnphong exponent
+  float m;      // cooktorrance Beckmann roughness
+  float alphaX; // ward*: roughness along the tangent
+  float alphaY; // ward*: roughness along the bitangent
+  float nu;     // ashikhmin_shirley exponent along the tangent
+  float nv;     // ashikhmin_shirley exponent along the bitangent
+  int baseColorTexture;  // -1: none; else multiplies rhoD
+  uint reserved;
+};
+RL_CHECK_SIZE(MaterialRecord, 80);
+
+// LightRecord.type
+RL_CONST uint kLightPoint = 0;
+RL_CONST uint kLightSpot = 1;
+RL_CONST uint kLightDirectional = 2;
+
+struct LightRecord {
+  vec3 position;
+  uint type;
+  vec3 intensity;   // RGB radiant intensity in W/sr (point, spot) or irradiance in W/m^2 (directional)
+  float cosInner;   // spot: full intensity inside this cone
+  vec3 direction;   // spot, directional: the direction light travels, unit length
+  float cosOuter;   // spot: no light outside this cone
+};
+RL_CHECK_SIZE(LightRecord, 48);
+
+RL_NAMESPACE_END
+
+#endif

@@ -1,0 +1,142 @@
+// `raylab render`: offscreen frame capture to OpenEXR (linear) and PNG (tone-mapped), for scripts and CI.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "args.h"
+#include "commands.h"
+#include "gpu_session.h"
+#include "image/image.h"
+#include "render/renderer.h"
+#include "scene/default_scene.h"
+#include "scene/gpu_scene.h"
+#include "util/error.h"
+#include "util/progress.h"
+#include "util/timer.h"
+
+namespace raylab {
+
+namespace {
+
+struct RenderOptions {
+  std::string scene;
+  RenderSettings settings;
+  std::uint32_t spp = 16;
+  std::string exrPath;
+  std::string pngPath;
+  float exposure = 0.0f;
+  std::string toneMap = "clamp";
+  bool noAntialiasing = false;
+  std::optional<std::uint32_t> device;
+};
+
+ToneMap parseToneMap(const std::string& name) {
+  if (name == "aces") return ToneMap::kAces;
+  if (name == "reinhard") return ToneMap::kReinhard;
+  return ToneMap::kClamp;
+}
+
+void requireExtension(const std::string& option, const std::string& path, const std::string& extension) {
+  if (std::filesystem::path(path).extension() != extension) {
+    throw Error("raylab render: " + option + ": '" + path + "' must end in " + extension, kExitUsage);
+  }
+}
+
+Scene loadSceneArgument(const std::string& path) {
+  if (path.empty()) return makeDefaultScene();
+  throw Error(path + ": scene files are not supported by this build yet; run without SCENE for the built-in scene");
+}
+
+}  // namespace
+
+int runRender(int argc, char** argv) {
+  RenderOptions o;
+  ArgParser args("raylab render", "[SCENE] [options]",
+                 "Renders SCENE (glTF 2.0) or, without SCENE, the built-in default scene, and writes a linear\n"
+                 "OpenEXR image and a tone-mapped sRGB PNG. The same command gives a bit-identical image on\n"
+                 "the same device. Without --out and --png it writes out/<scene>.exr and out/<scene>.png.");
+  args.positional("SCENE", &o.scene, "a .gltf or .glb file (default: the built-in scene)");
+  args.option("--width", &o.settings.width, "image width in pixels", 1, 16384);
+  args.option("--height", &o.settings.height, "image height in pixels", 1, 16384);
+  args.option("--spp", &o.spp, "samples per pixel", 1, 1u << 20);
+  args.option("--seed", &o.settings.seed, "random seed of the sample pattern", 0, UINT32_MAX);
+  args.option("--max-depth", &o.settings.maxDepth, "bounces after the primary hit (mirror, glass)", 0, 64);
+  args.flag("--no-aa", &o.noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
+  args.option("--out", &o.exrPath, "FILE.exr", "write the linear image here (OpenEXR, float32 RGBA)");
+  args.option("--png", &o.pngPath, "FILE.png", "write the tone-mapped image here (sRGB, 8-bit)");
+  args.option("--exposure", &o.exposure, "exposure of the PNG in stops", -20.0f, 20.0f);
+  args.choice("--tonemap", &o.toneMap, {"clamp", "reinhard", "aces"}, "tone curve of the PNG (default clamp)");
+  args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
+  if (!args.parse(argc, argv)) return kExitOk;
+  o.settings.jitter = !o.noAntialiasing;
+
+  if (!o.exrPath.empty()) requireExtension("--out", o.exrPath, ".exr");
+  if (!o.pngPath.empty()) requireExtension("--png", o.pngPath, ".png");
+
+  Scene scene = loadSceneArgument(o.scene);
+  if (o.exrPath.empty() && o.pngPath.empty()) {
+    o.exrPath = "out/" + scene.name + ".exr";
+    o.pngPath = "out/" + scene.name + ".png";
+  }
+
+  GpuSession gpu(o.device);
+  GpuScene gpuScene = uploadScene(gpu.device, scene);
+  Renderer renderer;
+  try {
+    const Stopwatch firstSampleClock;
+    renderer = createRenderer(gpu.device, gpuScene, scene, o.settings);
+    ProgressLine progress("raylab render", o.spp);
+    renderSamples(gpu.device, renderer, 1);  // includes the kernel's compilation by the driver
+    const double firstSampleSeconds = firstSampleClock.seconds();
+    progress.update(renderer.samplesDone, renderer.rays.total());
+
+    // Later samples go in submissions of about a quarter second: progress stays live, overhead stays low.
+    const Stopwatch steadyClock;
+    const RayCounts firstRays = renderer.rays;
+    std::uint32_t batch = 1;
+    while (renderer.samplesDone < o.spp) {
+      const Stopwatch batchClock;
+      const std::uint32_t samples = std::min(batch, o.spp - renderer.samplesDone);
+      renderSamples(gpu.device, renderer, samples);
+      progress.update(renderer.samplesDone, renderer.rays.total());
+      const double perSample = batchClock.seconds() / samples;
+      batch = std::clamp<std::uint32_t>(static_cast<std::uint32_t>(0.25 / std::max(perSample, 1e-6)), 1, 256);
+    }
+    progress.finish();
+    const double steadySeconds = steadyClock.seconds();
+
+    const Image image = readImage(gpu.device, renderer);
+    if (!o.exrPath.empty()) writeExr(o.exrPath, image);
+    if (!o.pngPath.empty()) writePng(o.pngPath, image, o.exposure, parseToneMap(o.toneMap));
+
+    const std::uint32_t steadySamples = o.spp - 1;
+    const double perSample = steadySamples > 0 ? steadySeconds / steadySamples : firstSampleSeconds;
+    const std::uint64_t steadyRays = renderer.rays.total() - firstRays.total();
+    const double raysPerSecond = steadySamples > 0 && steadySeconds > 0.0
+                                     ? steadyRays / steadySeconds
+                                     : renderer.rays.total() / std::max(firstSampleSeconds, 1e-9);
+    std::printf("scene: %s, %ux%u, %u spp, %llu triangles, %u spheres, %u lights\n", scene.name.c_str(),
+                o.settings.width, o.settings.height, o.spp,
+                static_cast<unsigned long long>(gpuScene.triangleCount), gpuScene.sphereCount, gpuScene.lightCount);
+    std::printf("acceleration structures: %s\n", formatSeconds(gpuScene.accelerationBuildSeconds).c_str());
+    std::printf("first sample: %s (kernel compilation included)\n", formatSeconds(firstSampleSeconds).c_str());
+    std::printf("per sample: %s\n", formatSeconds(perSample).c_str());
+    std::printf("rays: %s(primary %s, shadow %s, secondary %s), %srays/s\n",
+                formatCount(double(renderer.rays.total())).c_str(), formatCount(double(renderer.rays.primary)).c_str(),
+                formatCount(double(renderer.rays.shadow)).c_str(), formatCount(double(renderer.rays.secondary)).c_str(),
+                formatCount(raysPerSecond).c_str());
+    if (!o.exrPath.empty()) std::printf("wrote %s\n", o.exrPath.c_str());
+    if (!o.pngPath.empty()) std::printf("wrote %s\n", o.pngPath.c_str());
+  } catch (...) {
+    destroyRenderer(gpu.device, renderer);
+    destroyGpuScene(gpu.device, gpuScene);
+    throw;
+  }
+  destroyRenderer(gpu.device, renderer);
+  destroyGpuScene(gpu.device, gpuScene);
+  return kExitOk;
+}
+
+}  // namespace raylab

@@ -1,0 +1,25 @@
+#include "gpu_session.h"
+
+#include <cstdio>
+
+namespace raylab {
+
+GpuSession::GpuSession(std::optional<std::uint32_t> deviceIndex, bool quiet) {
+  instance = createInstance({});
+  try {
+    const std::vector<DeviceReport> reports = surveyDevices(instance);
+    const DeviceReport& chosen = reports[chooseDevice(reports, deviceIndex)];
+    if (!quiet) std::fprintf(stderr, "raylab: device %u: %s (%s)\n", chosen.index, chosen.name.c_str(), chosen.driver.c_str());
+    device = createDevice(instance, chosen);
+  } catch (...) {
+    destroyInstance(instance);
+    throw;
+  }
+}
+
+GpuSession::~GpuSession() {
+  destroyDevice(device);
+  destroyInstance(instance);
+}
+
+}  // namespace raylab

@@ -1,0 +1,21 @@
+// The Vulkan instance and device a command runs on, released in reverse order when it goes out of scope.
+#pragma once
+
+#include <optional>
+
+#include "vk/device.h"
+
+namespace raylab {
+
+struct GpuSession {
+  Instance instance;
+  Device device;
+
+  // Picks --device N or the best capable device; throws Error(kExitNoDevice) when none can run raylab.
+  explicit GpuSession(std::optional<std::uint32_t> deviceIndex, bool quiet = false);
+  ~GpuSession();
+  GpuSession(const GpuSession&) = delete;
+  GpuSession& operator=(const GpuSession&) = delete;
+};
+
+}  // namespace raylab

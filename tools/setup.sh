@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# raylab's set-up on Debian bookworm: installs what is missing, builds, then renders or tests.
+#
+#   tools/setup.sh render   install, build, render the built-in scene to out/default.exr and out/default.png
+#   tools/setup.sh test     install, build, run the whole test suite (ctest)
+#
+# Idempotent: with everything installed and built it only checks and rebuilds what changed.
+set -euo pipefail
+
+usage() {
+  sed -n '2,7p' "$0" | sed 's/^# \{0,1\}//'
+}
+
+mode=${1:-}
+case "$mode" in
+  render|test) ;;
+  -h|--help) usage; exit 0 ;;
+  *) usage >&2; exit 2 ;;
+esac
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+
+# Everything raylab builds, tests and benchmarks with; all from Debian, nothing downloaded at build time.
+packages=(
+  g++ cmake ninja-build pkg-config
+  libvulkan-dev glslang-tools spirv-tools vulkan-validationlayers vulkan-tools
+  libglfw3-dev libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libopenexr-dev libimgui-dev
+  libgtest-dev libembree-dev
+  xvfb xauth assimp-testmodels
+  python3 python3-venv
+)
+# lavapipe gained ray queries in Mesa 24.1; bookworm itself has 22.3, bookworm-backports has 25.x.
+mesa_minimum=24.1
+
+say() { printf 'setup: %s\n' "$*"; }
+
+as_root() {
+  if [[ $EUID -eq 0 ]]; then "$@"
+  elif command -v sudo >/dev/null; then sudo "$@"
+  else say "need root to run: $*  (run this script as root or install sudo)"; exit 1
+  fi
+}
+
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q '^install ok installed$'; }
+
+mesa_ok() {
+  installed mesa-vulkan-drivers || return 1
+  local version
+  version=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers)
+  dpkg --compare-versions "$version" ge "$mesa_minimum~"
+}
+
+enable_backports() {
+  if grep -rqs 'bookworm-backports' /etc/apt/sources.list /etc/apt/sources.list.d/; then return; fi
+  say "enabling the bookworm-backports suite for Mesa >= $mesa_minimum"
+  as_root tee /etc/apt/sources.list.d/raylab-bookworm-backports.sources >/dev/null <<'SOURCES'
+Types: deb
+URIs: http://deb.debian.org/debian
+Suites: bookworm-backports
+Components: main
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+SOURCES
+}
+
+install_packages() {
+  local missing=()
+  for package in "${packages[@]}"; do installed "$package" || missing+=("$package"); done
+  local need_mesa=0
+  mesa_ok || need_mesa=1
+  if [[ ${#missing[@]} -eq 0 && $need_mesa -eq 0 ]]; then
+    say "all packages present"
+    return
+  fi
+  if [[ $need_mesa -eq 1 ]]; then enable_backports; fi
+  say "installing: ${missing[*]} $([[ $need_mesa -eq 1 ]] && echo "mesa-vulkan-drivers (bookworm-backports)")"
+  as_root apt-get update -qq
+  export DEBIAN_FRONTEND=noninteractive
+  if [[ ${#missing[@]} -gt 0 ]]; then
+    as_root apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  fi
+  if [[ $need_mesa -eq 1 ]]; then
+    as_root apt-get install -y -qq --no-install-recommends -t bookworm-backports mesa-vulkan-drivers
+  fi
+  mesa_ok || { say "mesa-vulkan-drivers is still older than $mesa_minimum"; exit 1; }
+}
+
+build() {
+  if [[ ! -f build/release/build.ninja ]]; then cmake --preset release >/dev/null; fi
+  cmake --build --preset release
+}
+
+install_packages
+build
+case "$mode" in
+  render)
+    build/release/raylab render --out out/default.exr --png out/default.png
+    ;;
+  test)
+    ctest --preset release
+    ;;
+esac
