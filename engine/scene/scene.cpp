@@ -1,27 +1,11 @@
 #include "scene/scene.h"
 
+#include "scene/material_params.h"
+
 namespace raylab {
 
-gpu::MaterialRecord defaultMaterial(std::uint32_t model) {
-  gpu::MaterialRecord record{};
-  record.model = model;
-  record.rhoD = glm::vec3(0.5f);
-  record.rhoS = glm::vec3(0.5f);
-  record.delta = 0.0f;
-  record.tint = glm::vec3(1.0f);
-  record.eta = 1.5f;
-  record.s = 50.0f;
-  record.m = 0.2f;
-  record.alphaX = 0.2f;
-  record.alphaY = 0.2f;
-  record.nu = 100.0f;
-  record.nv = 100.0f;
-  record.baseColorTexture = -1;
-  return record;
-}
-
 gpu::MaterialRecord lambertMaterial(glm::vec3 rhoD, float delta) {
-  gpu::MaterialRecord record = defaultMaterial(gpu::kModelLambert);
+  gpu::MaterialRecord record = defaultRecord(gpu::kModelLambert);
   record.rhoD = rhoD;
   record.rhoS = glm::vec3(0.0f);
   record.delta = delta;

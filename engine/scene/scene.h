@@ -62,8 +62,6 @@ struct Scene {
   glm::vec3 background{0.0f};  // radiance of rays that leave the scene
 };
 
-// A material record with every parameter at its documented default (docs/brdfs.md), for `model`.
-gpu::MaterialRecord defaultMaterial(std::uint32_t model);
 gpu::MaterialRecord lambertMaterial(glm::vec3 rhoD, float delta = 0.0f);
 
 gpu::LightRecord pointLight(glm::vec3 position, glm::vec3 intensity);

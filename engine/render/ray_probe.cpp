@@ -1,0 +1,82 @@
+#include "render/ray_probe.h"
+
+#include <algorithm>
+#include <string>
+
+#include "shared/bindings.h"
+#include "util/error.h"
+#include "util/timer.h"
+#include "vk/commands.h"
+#include "vk/vk_check.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr std::uint32_t kWorkgroupSize = 64;  // trace_rays.comp: local_size_x
+
+void recordTrace(VkCommandBuffer cmd, const RayProbe& probe, std::uint32_t rayCount) {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, probe.pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, probe.pipelineLayout, 0, 1, &probe.descriptors.set, 0,
+                          nullptr);
+  vkCmdPushConstants(cmd, probe.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof rayCount, &rayCount);
+  vkCmdDispatch(cmd, (rayCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
+  computeBarrier(cmd);
+}
+
+}  // namespace
+
+RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uint32_t capacity) {
+  RayProbe probe;
+  probe.capacity = capacity;
+  std::vector<DescriptorBinding> bindings = sceneBindings();
+  bindings.push_back({gpu::kBindingProbeRays, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+  bindings.push_back({gpu::kBindingProbeHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+  probe.setLayout = createDescriptorSetLayout(device, bindings, "probe set layout");
+  probe.pipelineLayout = createPipelineLayout(device, probe.setLayout, sizeof(std::uint32_t), "probe pipeline layout");
+  probe.pipeline = createComputePipeline(device, probe.pipelineLayout, "trace_rays.comp");
+  probe.rays = createBuffer(device, VkDeviceSize(capacity) * sizeof(gpu::ProbeRay),
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kDevice,
+                            "probe rays");
+  probe.hits = createBuffer(device, VkDeviceSize(capacity) * sizeof(gpu::ProbeHit),
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::kDevice,
+                            "probe hits");
+  probe.descriptors = allocateDescriptorSet(device, probe.setLayout, bindings, "probe set");
+  writeSceneDescriptors(device, probe.descriptors.set, gpuScene);
+  writeStorageBuffer(device, probe.descriptors.set, gpu::kBindingProbeRays, probe.rays.handle);
+  writeStorageBuffer(device, probe.descriptors.set, gpu::kBindingProbeHits, probe.hits.handle);
+  return probe;
+}
+
+void destroyRayProbe(const Device& device, RayProbe& probe) {
+  destroyBuffer(device, probe.hits);
+  destroyBuffer(device, probe.rays);
+  destroyDescriptorSet(device, probe.descriptors);
+  if (probe.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, probe.pipeline, nullptr);
+  if (probe.pipelineLayout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device.handle, probe.pipelineLayout, nullptr);
+  if (probe.setLayout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device.handle, probe.setLayout, nullptr);
+  probe = {};
+}
+
+std::vector<gpu::ProbeHit> traceRays(const Device& device, RayProbe& probe, std::span<const gpu::ProbeRay> rays) {
+  if (rays.size() > probe.capacity) {
+    throw Error("traceRays: " + std::to_string(rays.size()) + " rays exceed the probe's capacity of " +
+                std::to_string(probe.capacity));
+  }
+  const auto count = static_cast<std::uint32_t>(rays.size());
+  uploadBuffer(device, probe.rays, rays.data(), rays.size_bytes());
+  submitAndWait(device, [&](VkCommandBuffer cmd) { recordTrace(cmd, probe, count); });
+  std::vector<gpu::ProbeHit> hits(count);
+  downloadBuffer(device, probe.hits, hits.data(), hits.size() * sizeof(gpu::ProbeHit));
+  return hits;
+}
+
+double timeTraceRays(const Device& device, RayProbe& probe, std::uint32_t rayCount, std::uint32_t repetitions) {
+  const Stopwatch clock;
+  submitAndWait(device, [&](VkCommandBuffer cmd) {
+    for (std::uint32_t i = 0; i < repetitions; ++i) recordTrace(cmd, probe, rayCount);
+  });
+  return clock.seconds() / std::max<std::uint32_t>(1, repetitions);
+}
+
+}  // namespace raylab

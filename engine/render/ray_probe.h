@@ -1,0 +1,34 @@
+// Traces caller-given rays with the renderer's own traversal (trace_rays.comp) and returns each closest hit.
+// Tests compare the hits with analytic geometry; `raylab bench` times them and cross-checks with Embree.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "scene/gpu_scene.h"
+#include "shared/frame.h"
+#include "vk/device.h"
+#include "vk/pipeline.h"
+
+namespace raylab {
+
+struct RayProbe {
+  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+  VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  DescriptorSet descriptors;
+  Buffer rays;
+  Buffer hits;
+  std::uint32_t capacity = 0;  // rays the buffers hold
+};
+
+RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uint32_t capacity);
+void destroyRayProbe(const Device& device, RayProbe& probe);
+
+// Uploads the rays (at most `capacity`), traces them in one dispatch and downloads the hits.
+std::vector<gpu::ProbeHit> traceRays(const Device& device, RayProbe& probe, std::span<const gpu::ProbeRay> rays);
+
+// Times `repetitions` dispatches over rays already uploaded by traceRays; returns seconds per dispatch.
+double timeTraceRays(const Device& device, RayProbe& probe, std::uint32_t rayCount, std::uint32_t repetitions);
+
+}  // namespace raylab

@@ -1,0 +1,51 @@
+// The models and parameters of ../shared/BRDF_SPEC.md by name: the one table that the CSV evaluator, glTF
+// materials, the viewer's sliders and `raylab sweep` all read, so that names, ranges and defaults agree.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shared/scene_records.h"
+
+namespace raylab {
+
+struct ParamInfo {
+  std::string_view name;  // as in the contract: "rho_d", "alpha_x", ...
+  bool rgb;               // an RGB triple, written r/g/b in the CSV
+  float min;
+  float max;
+  float defaultValue;     // each channel for RGB parameters
+  bool logScale;          // exponents and roughness: sliders and sweeps go geometrically
+  std::string_view meaning;
+};
+
+struct ModelInfo {
+  std::string_view name;  // "cooktorrance"
+  std::uint32_t id;       // gpu::kModel...
+  std::vector<ParamInfo> params;  // without delta, which every material has
+};
+
+std::span<const ModelInfo> allModels();
+const ModelInfo* findModel(std::string_view name);
+const ModelInfo& modelInfo(std::uint32_t id);
+// delta: the mirror-reflection weight every material carries.
+const ParamInfo& deltaParam();
+// The ParamInfo of `name` for `model` (delta included), or null.
+const ParamInfo* findParam(const ModelInfo& model, std::string_view name);
+
+// Sets one parameter of `record` (whose model is already set). Throws Error naming `where`, the parameter and
+// the accepted range when the name is unknown for this model, the value is not finite or out of range.
+void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 value, const std::string& where);
+// The current value of a parameter (RGB parameters return three channels, scalars a splat).
+glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name);
+
+// A record of `model` with every parameter at its default.
+gpu::MaterialRecord defaultRecord(std::uint32_t model);
+
+}  // namespace raylab

@@ -1,0 +1,102 @@
+// The raylab executable as users and scripts run it: help, usage errors, the no-device path, and a render
+// that writes readable files.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "image/image.h"
+#include "support/run_command.h"
+
+namespace raylab::test {
+namespace {
+
+std::string scratchDir() {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "raylab_cli_test";
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+TEST(CliTest, EveryCommandHasHelp) {
+  const CommandResult top = runRaylab({"--help"});
+  EXPECT_EQ(top.exitCode, 0) << top.output;
+  EXPECT_NE(top.output.find("render"), std::string::npos);
+  EXPECT_NE(top.output.find("devices"), std::string::npos);
+  for (const char* command : {"render", "devices"}) {
+    const CommandResult help = runRaylab({command, "--help"});
+    EXPECT_EQ(help.exitCode, 0) << command << ": " << help.output;
+    EXPECT_NE(help.output.find("Usage: raylab " + std::string(command)), std::string::npos) << help.output;
+  }
+  const CommandResult render = runRaylab({"render", "--help"});
+  for (const char* option : {"--width", "--height", "--spp", "--seed", "--out", "--png", "--exposure"}) {
+    EXPECT_NE(render.output.find(option), std::string::npos) << option;
+  }
+}
+
+TEST(CliTest, UsageErrorsExitTwoAndNameTheOption) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string mentions;
+  };
+  const Case cases[] = {
+      {{"render", "--spp", "abc"}, "--spp"},
+      {{"render", "--width", "0"}, "--width"},
+      {{"render", "--exposure", "nan"}, "--exposure"},
+      {{"render", "--bogus"}, "--bogus"},
+      {{"render", "--height"}, "--height"},
+      {{"render", "--out", "image.png"}, "--out"},
+      {{"render", "--tonemap", "filmic"}, "--tonemap"},
+      {{"frobnicate"}, "frobnicate"},
+      {{}, "Usage"},
+  };
+  for (const Case& c : cases) {
+    const CommandResult result = runRaylab(c.args);
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find(c.mentions), std::string::npos) << result.output;
+  }
+}
+
+TEST(CliTest, WithoutAVulkanDriverEveryCommandExitsThreeWithOneClearSentence) {
+  for (const char* command : {"render", "devices"}) {
+    const CommandResult result = runRaylab({command}, {"VK_ICD_FILENAMES="});
+    EXPECT_EQ(result.exitCode, 3) << command << ": " << result.output;
+    EXPECT_NE(result.output.find("tools/setup.sh"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("ray queries"), std::string::npos) << result.output;
+  }
+}
+
+TEST(CliTest, DevicesListsTheCapableDevice) {
+  const CommandResult result = runRaylab({"devices"});
+  EXPECT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_NE(result.output.find("raylab: yes"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("driver:"), std::string::npos) << result.output;
+}
+
+TEST(CliTest, RenderWritesExrAndPngAndReportsTimings) {
+  const std::string dir = scratchDir();
+  const std::string exr = dir + "/nested/default.exr";
+  const std::string png = dir + "/nested/default.png";
+  std::filesystem::remove_all(dir + "/nested");
+  const CommandResult result =
+      runRaylab({"render", "--width", "48", "--height", "32", "--spp", "3", "--out", exr, "--png", png});
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  for (const char* line : {"3/3 spp", "rays/s", "acceleration structures:", "first sample:", "per sample:"}) {
+    EXPECT_NE(result.output.find(line), std::string::npos) << "missing '" << line << "' in:\n" << result.output;
+  }
+  const Image image = readExr(exr);
+  EXPECT_EQ(image.width, 48u);
+  EXPECT_EQ(image.height, 32u);
+  float brightest = 0.0f;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) brightest = std::max(brightest, image.rgba[i]);
+  EXPECT_GT(brightest, 0.05f) << "the default scene rendered black";
+  EXPECT_GT(std::filesystem::file_size(png), 100u);
+}
+
+TEST(CliTest, UnwritableOutputIsAnErrorNamingTheFile) {
+  const CommandResult result = runRaylab({"render", "--width", "8", "--height", "8", "--spp", "1", "--out",
+                                          "/proc/raylab-cannot-write-here/x.exr"});
+  EXPECT_EQ(result.exitCode, 1) << result.output;
+  EXPECT_NE(result.output.find("/proc/raylab-cannot-write-here"), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace raylab::test

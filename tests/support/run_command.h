@@ -1,0 +1,21 @@
+// Runs the raylab executable (or any command) the way a user would, capturing its output and exit code.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace raylab::test {
+
+struct CommandResult {
+  int exitCode = -1;   // -1: killed by a signal (a crash)
+  std::string output;  // stdout and stderr interleaved
+};
+
+// `environment` entries ("NAME=value") are added to the current environment; "NAME=" sets it empty.
+CommandResult runCommand(const std::vector<std::string>& arguments,
+                         const std::vector<std::string>& environment = {});
+
+// Runs the raylab binary of this build with `arguments`.
+CommandResult runRaylab(const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {});
+
+}  // namespace raylab::test
