@@ -1,0 +1,74 @@
+// The double-precision CPU reference of raylab's BRDF library, written from the formulas of
+// ../shared/BRDF_SPEC.md for clarity (never by including the GLSL: identical source could not catch a
+// wrong formula). Names follow the contract and the GLSL: wi towards the light, wo towards the viewer, both
+// in the local shading frame (z = shading normal), f excluding the cosine.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "shared/scene_records.h"
+
+namespace raylab::reference {
+
+using glm::dvec2;
+using glm::dvec3;
+
+// A material in double precision: the exact values of a gpu::MaterialRecord (Rd, Rs live in rhoD, rhoS).
+struct Material {
+  std::uint32_t model = gpu::kModelLambert;
+  dvec3 rhoD{0.0};
+  dvec3 rhoS{0.0};
+  dvec3 tint{1.0};
+  double delta = 0.0;
+  double eta = 1.5;
+  double s = 1.0;
+  double m = 0.1;
+  double alphaX = 0.1;
+  double alphaY = 0.1;
+  double nu = 1.0;
+  double nv = 1.0;
+};
+
+Material fromRecord(const gpu::MaterialRecord& record);
+
+// The local shading frame of the contract: n normalised, t made orthogonal to n (Gram-Schmidt) and
+// normalised, b = n x t. When |t - (t.n) n|^2 <= 1e-12 (t zero or parallel to n), t is replaced by the tangent
+// of Duff et al., "Building an Orthonormal Basis, Revisited" (JCGT 2017) built from n, exactly as
+// shaders/common/frame.glsl does.
+struct Frame {
+  dvec3 t, b, n;
+};
+Frame makeFrame(dvec3 n, dvec3 t);
+dvec3 toLocal(const Frame& frame, const dvec3& w);
+
+// f(wi, wo) of any non-glass model, in the local frame, RGB. Exactly 0 when wi.z <= 0 or wo.z <= 0.
+dvec3 eval(const Material& material, const dvec3& wi, const dvec3& wo);
+
+// Importance sampling (the strategy is fixed by docs/brdfs.md so that the GLSL and this reference agree):
+// u.x picks the lobe, u.y and u.z place the direction. pdf is per unit solid angle; a sample with pdf 0 (the
+// sampled direction fell below the horizon) carries no direction.
+struct Sample {
+  dvec3 wi{0.0};
+  dvec3 f{0.0};  // eval(material, wi, wo)
+  double pdf = 0.0;
+};
+Sample sample(const Material& material, const dvec3& wo, const dvec3& u);
+double pdf(const Material& material, const dvec3& wi, const dvec3& wo);
+// Probability that sample() picks the specular lobe (0 for lambert).
+double specularProbability(const Material& material);
+
+// Smooth dielectric (model glass). eta = n_inside / n_outside, n the outward normal; wi in the same space as
+// n (not necessarily local). See ../shared/BRDF_SPEC.md for which side is which.
+struct GlassResult {
+  double fresnelExact = 0.0;        // F_exact
+  double fresnelSchlick = 0.0;      // F_schlick: cosine on the optically thinner side, 1 under TIR
+  double fresnelSchlickNaive = 0.0; // F_schlick_naive: always cos_i
+  bool tir = false;
+  dvec3 reflected{0.0};
+  dvec3 refracted{0.0};  // zero under total internal reflection
+};
+GlassResult glass(double eta, const dvec3& wi, const dvec3& n);
+
+}  // namespace raylab::reference
