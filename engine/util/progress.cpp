@@ -15,9 +15,10 @@ void ProgressLine::update(std::uint64_t done, std::uint64_t raysSoFar) {
   if (done < total_ && lastPrint_ >= 0.0 && elapsed - lastPrint_ < interval) return;
   lastPrint_ = elapsed;
   const double raysPerSecond = elapsed > 0.0 ? static_cast<double>(raysSoFar) / elapsed : 0.0;
-  std::fprintf(stream_, "%s%s %llu/%llu spp  %s  %srays/s%s", interactive_ ? "\r" : "", label_.c_str(),
+  std::fprintf(stream_, "%s%s %llu/%llu spp  %s  %s%s", interactive_ ? "\r" : "", label_.c_str(),
                static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_),
-               formatSeconds(elapsed).c_str(), formatCount(raysPerSecond).c_str(), interactive_ ? "\x1b[K" : "\n");
+               formatSeconds(elapsed).c_str(), formatCount(raysPerSecond, "rays/s").c_str(),
+               interactive_ ? "\x1b[K" : "\n");
   std::fflush(stream_);
   printedAny_ = true;
 }
@@ -27,12 +28,12 @@ void ProgressLine::finish() {
   std::fflush(stream_);
 }
 
-std::string formatCount(double count) {
-  char text[32];
-  if (count >= 1e9) std::snprintf(text, sizeof text, "%.2f G", count / 1e9);
-  else if (count >= 1e6) std::snprintf(text, sizeof text, "%.2f M", count / 1e6);
-  else if (count >= 1e3) std::snprintf(text, sizeof text, "%.1f k", count / 1e3);
-  else std::snprintf(text, sizeof text, "%.0f ", count);
+std::string formatCount(double count, const char* unit) {
+  char text[64];
+  if (count >= 1e9) std::snprintf(text, sizeof text, "%.2f G%s", count / 1e9, unit);
+  else if (count >= 1e6) std::snprintf(text, sizeof text, "%.2f M%s", count / 1e6, unit);
+  else if (count >= 1e3) std::snprintf(text, sizeof text, "%.1f k%s", count / 1e3, unit);
+  else std::snprintf(text, sizeof text, "%.0f%s%s", count, unit[0] != '\0' ? " " : "", unit);
   return text;
 }
 

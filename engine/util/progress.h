@@ -26,8 +26,8 @@ class ProgressLine {
   bool printedAny_ = false;
 };
 
-// "12.3 M", "456 k": counts for humans.
-std::string formatCount(double count);
+// Counts for humans with an SI prefix glued to the unit: "12.3 Mrays/s", "456 krays", "12 rays".
+std::string formatCount(double count, const char* unit);
 // "1.52 s", "48.2 ms", "310 us".
 std::string formatSeconds(double seconds);
 

@@ -123,10 +123,11 @@ int runRender(int argc, char** argv) {
     std::printf("acceleration structures: %s\n", formatSeconds(gpuScene.accelerationBuildSeconds).c_str());
     std::printf("first sample: %s (kernel compilation included)\n", formatSeconds(firstSampleSeconds).c_str());
     std::printf("per sample: %s\n", formatSeconds(perSample).c_str());
-    std::printf("rays: %s(primary %s, shadow %s, secondary %s), %srays/s\n",
-                formatCount(double(renderer.rays.total())).c_str(), formatCount(double(renderer.rays.primary)).c_str(),
-                formatCount(double(renderer.rays.shadow)).c_str(), formatCount(double(renderer.rays.secondary)).c_str(),
-                formatCount(raysPerSecond).c_str());
+    std::printf("rays: %s (primary %s, shadow %s, secondary %s), %s\n",
+                formatCount(double(renderer.rays.total()), "").c_str(),
+                formatCount(double(renderer.rays.primary), "").c_str(),
+                formatCount(double(renderer.rays.shadow), "").c_str(),
+                formatCount(double(renderer.rays.secondary), "").c_str(), formatCount(raysPerSecond, "rays/s").c_str());
     if (!o.exrPath.empty()) std::printf("wrote %s\n", o.exrPath.c_str());
     if (!o.pngPath.empty()) std::printf("wrote %s\n", o.pngPath.c_str());
   } catch (...) {
