@@ -46,6 +46,16 @@ struct Material {
   gpu::MaterialRecord record;
 };
 
+// An RGBA8 image with sRGB-encoded colour, rows from the top (a glTF base-colour texture).
+struct Texture {
+  std::string name;
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<std::uint8_t> rgba;  // 4 bytes per texel
+  std::uint32_t wrapS = gpu::kWrapRepeat;
+  std::uint32_t wrapT = gpu::kWrapRepeat;
+};
+
 struct Light {
   std::string name;
   gpu::LightRecord record;
@@ -57,7 +67,8 @@ struct Scene {
   std::vector<Mesh> meshes;
   std::vector<MeshInstance> instances;
   std::vector<Sphere> spheres;
-  std::vector<Material> materials;
+  std::vector<Material> materials;   // MaterialRecord.baseColorTexture indexes `textures`
+  std::vector<Texture> textures;
   std::vector<Light> lights;
   glm::vec3 background{0.0f};  // radiance of rays that leave the scene
 };

@@ -16,6 +16,8 @@ RL_CONST uint kBindingIndices = 5;    // uint[] triangle indices, relative to In
 RL_CONST uint kBindingSpheres = 6;    // SphereRecord[]
 RL_CONST uint kBindingMaterials = 7;  // MaterialRecord[]
 RL_CONST uint kBindingLights = 8;     // LightRecord[]
+RL_CONST uint kBindingTextures = 13;  // TextureRecord[]
+RL_CONST uint kBindingTexels = 14;    // uint[] RGBA8 sRGB texels of every texture, concatenated
 
 // Per-kernel outputs.
 RL_CONST uint kBindingAccumulation = 9;  // vec4[] running sum of radiance samples per pixel

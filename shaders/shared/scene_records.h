@@ -64,6 +64,20 @@ struct MaterialRecord {
 };
 RL_CHECK_SIZE(MaterialRecord, 80);
 
+// TextureRecord.wrap: bits 0-1 for s (u), bits 2-3 for t (v), as glTF samplers define them.
+RL_CONST uint kWrapRepeat = 0;
+RL_CONST uint kWrapClamp = 1;
+RL_CONST uint kWrapMirror = 2;
+
+// A base-colour texture: RGBA8 texels, sRGB-encoded, rows from the top, filtered bilinearly by the kernel.
+struct TextureRecord {
+  uint firstTexel;  // into the texel buffer
+  uint width;
+  uint height;
+  uint wrap;
+};
+RL_CHECK_SIZE(TextureRecord, 16);
+
 // LightRecord.type
 RL_CONST uint kLightPoint = 0;
 RL_CONST uint kLightSpot = 1;
