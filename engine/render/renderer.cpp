@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "shared/bindings.h"
+#include "shared/features.h"
 #include "util/error.h"
 #include "vk/commands.h"
 #include "vk/debug_name.h"
@@ -69,7 +70,10 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   renderer.setLayout = createDescriptorSetLayout(device, bindings, "render set layout");
   renderer.pipelineLayout =
       createPipelineLayout(device, renderer.setLayout, sizeof(gpu::FrameParams), "render pipeline layout");
-  renderer.pipeline = createComputePipeline(device, renderer.pipelineLayout, "render.comp");
+  renderer.kernel = settings.kernel.value_or(featuresOf(scene));
+  SpecializationConstants constants;
+  constants.set(gpu::kSpecEnabledModels, renderer.kernel.models).set(gpu::kSpecFeatures, renderer.kernel.features);
+  renderer.pipeline = createComputePipeline(device, renderer.pipelineLayout, "render.comp", &constants);
 
   const VkDeviceSize pixels = VkDeviceSize(settings.width) * settings.height;
   renderer.accumulation = createBuffer(device, pixels * sizeof(glm::vec4),

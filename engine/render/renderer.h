@@ -3,8 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "image/image.h"
+#include "render/kernel_features.h"
 #include "scene/gpu_scene.h"
 #include "scene/scene.h"
 #include "shared/frame.h"
@@ -21,6 +23,7 @@ struct RenderSettings {
   std::uint32_t seed = 0;
   bool jitter = true;                 // anti-aliasing by jittered sub-pixel samples; off: pixel centres
   float throughputCutoff = 1.0e-3f;   // paths whose weight falls below this stop
+  std::optional<KernelFeatures> kernel;  // the kernel variant; default: exactly what the scene uses
 };
 
 struct RayCounts {
@@ -37,6 +40,7 @@ struct Renderer {
   DescriptorSet descriptors;
   Buffer accumulation;  // vec4 per pixel: radiance sum and sample count
   Buffer stats;         // RayStats per submission, host-visible
+  KernelFeatures kernel;  // what the pipeline was specialised for
   gpu::FrameParams params{};
   std::uint32_t samplesDone = 0;
   RayCounts rays;

@@ -1,19 +1,8 @@
 #include "scene/default_scene.h"
 
-namespace raylab {
+#include "scene/shapes.h"
 
-Mesh makeGroundPlane(float halfSize, float height) {
-  Mesh mesh;
-  mesh.name = "ground";
-  mesh.positions = {{-halfSize, height, -halfSize},
-                    {-halfSize, height, halfSize},
-                    {halfSize, height, halfSize},
-                    {halfSize, height, -halfSize}};
-  mesh.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
-  mesh.uvs = {{0.0f, 0.0f}, {0.0f, 1.0f}, {1.0f, 1.0f}, {1.0f, 0.0f}};
-  mesh.indices = {0, 1, 2, 0, 2, 3};  // counter-clockwise seen from +y
-  return mesh;
-}
+namespace raylab {
 
 Scene makeDefaultScene() {
   Scene scene;

@@ -8,7 +8,4 @@ namespace raylab {
 // A ground plane, a row of spheres (one a mirror), two point lights and a camera.
 Scene makeDefaultScene();
 
-// A large square in the y = `height` plane facing +y.
-Mesh makeGroundPlane(float halfSize, float height);
-
 }  // namespace raylab

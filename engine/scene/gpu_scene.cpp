@@ -65,6 +65,24 @@ PackedMeshes packMeshes(const Scene& scene) {
   return packed;
 }
 
+// Every texture's texels one after another, as packed RGBA8 words, and the record saying where each starts.
+void packTextures(const Scene& scene, std::vector<gpu::TextureRecord>& records, std::vector<std::uint32_t>& texels) {
+  for (const Texture& texture : scene.textures) {
+    const std::size_t count = std::size_t(texture.width) * texture.height;
+    if (count == 0 || texture.rgba.size() != count * 4) {
+      throw Error("texture '" + texture.name + "': " + std::to_string(texture.rgba.size()) + " bytes for " +
+                  std::to_string(texture.width) + "x" + std::to_string(texture.height) + " RGBA8 texels");
+    }
+    records.push_back({static_cast<std::uint32_t>(texels.size()), texture.width, texture.height,
+                       texture.wrapS | (texture.wrapT << 2)});
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::uint8_t* t = &texture.rgba[i * 4];
+      texels.push_back(std::uint32_t(t[0]) | std::uint32_t(t[1]) << 8 | std::uint32_t(t[2]) << 16 |
+                       std::uint32_t(t[3]) << 24);
+    }
+  }
+}
+
 std::vector<gpu::MaterialRecord> materialRecords(std::span<const Material> materials) {
   std::vector<gpu::MaterialRecord> records;
   for (const Material& material : materials) records.push_back(material.record);
@@ -86,6 +104,13 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
   }
   for (const Sphere& sphere : scene.spheres) {
     if (sphere.material >= scene.materials.size()) throw Error("a sphere refers to a material that does not exist");
+  }
+  for (const Material& material : scene.materials) {
+    const int texture = material.record.baseColorTexture;
+    if (texture >= 0 && static_cast<std::size_t>(texture) >= scene.textures.size()) {
+      throw Error("material '" + material.name + "' refers to texture " + std::to_string(texture) +
+                  ", which does not exist");
+    }
   }
 
   GpuScene gpuScene;
@@ -176,6 +201,12 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
   const std::vector<gpu::LightRecord> lights = lightRecords(scene.lights);
   gpuScene.lights = createBufferWithData<gpu::LightRecord>(device, lights, kStorage, "lights");
   gpuScene.lightCount = static_cast<std::uint32_t>(lights.size());
+
+  std::vector<gpu::TextureRecord> textureRecords;
+  std::vector<std::uint32_t> texels;
+  packTextures(scene, textureRecords, texels);
+  gpuScene.textures = createBufferWithData<gpu::TextureRecord>(device, textureRecords, kStorage, "textures");
+  gpuScene.texels = createBufferWithData<std::uint32_t>(device, texels, kStorage, "texels");
   return gpuScene;
 }
 
@@ -184,7 +215,7 @@ void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
   for (AccelerationStructure& blas : gpuScene.blases) destroyAccelerationStructure(device, blas);
   for (Buffer* buffer : {&gpuScene.instances, &gpuScene.positions, &gpuScene.normals, &gpuScene.uvs,
                          &gpuScene.indices, &gpuScene.spheres, &gpuScene.sphereAabbs, &gpuScene.materials,
-                         &gpuScene.lights}) {
+                         &gpuScene.lights, &gpuScene.textures, &gpuScene.texels}) {
     destroyBuffer(device, *buffer);
   }
   gpuScene = {};
@@ -213,6 +244,8 @@ std::vector<DescriptorBinding> sceneBindings() {
       {gpu::kBindingSpheres, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingMaterials, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingTextures, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingTexels, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   };
 }
 
@@ -226,6 +259,8 @@ void writeSceneDescriptors(const Device& device, VkDescriptorSet set, const GpuS
   writeStorageBuffer(device, set, gpu::kBindingSpheres, gpuScene.spheres.handle);
   writeStorageBuffer(device, set, gpu::kBindingMaterials, gpuScene.materials.handle);
   writeStorageBuffer(device, set, gpu::kBindingLights, gpuScene.lights.handle);
+  writeStorageBuffer(device, set, gpu::kBindingTextures, gpuScene.textures.handle);
+  writeStorageBuffer(device, set, gpu::kBindingTexels, gpuScene.texels.handle);
 }
 
 }  // namespace raylab

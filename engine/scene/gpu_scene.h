@@ -24,6 +24,8 @@ struct GpuScene {
   Buffer sphereAabbs;
   Buffer materials;
   Buffer lights;
+  Buffer textures;  // TextureRecord[]
+  Buffer texels;    // RGBA8 sRGB texels of every texture
   std::vector<AccelerationStructure> blases;
   AccelerationStructure tlas;
   std::uint32_t lightCount = 0;

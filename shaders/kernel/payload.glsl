@@ -8,14 +8,19 @@
 const float kRayTMax = 3.0e38;
 
 // A path in flight. The raygen traces (origin, direction); closestHit or miss add what they see to
-// `radiance` and either set up the next segment or mark the path done. No recursion: the raygen loops.
+// `radiance` and either set up the next segment or mark the path done. Glass splits a path in two: the second
+// continuation goes in the `split*` fields and the raygen keeps it for later. No recursion: the raygen loops.
 struct Payload {
-  vec3 radiance;    // gathered so far
+  vec3 radiance;    // gathered so far, already weighted by the throughput of the segment that saw it
   vec3 throughput;  // weight of whatever the next segment brings back
   vec3 origin;      // the next segment
   vec3 direction;   // unit length
   uint depth;       // bounces taken after the primary hit
   bool done;
+  bool split;       // closestHit left a second continuation below
+  vec3 splitOrigin;
+  vec3 splitDirection;
+  vec3 splitThroughput;
   Rng rng;
   uint shadowRays;
 };
@@ -31,5 +36,7 @@ struct Hit {
   mat4x3 objectToWorld;
   mat4x3 worldToObject;
 };
+
+float maxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
 
 #endif

@@ -14,5 +14,7 @@ layout(set = 0, binding = kBindingIndices, scalar) readonly buffer IndexBuffer {
 layout(set = 0, binding = kBindingSpheres, scalar) readonly buffer SphereBuffer { SphereRecord spheres[]; };
 layout(set = 0, binding = kBindingMaterials, scalar) readonly buffer MaterialBuffer { MaterialRecord materials[]; };
 layout(set = 0, binding = kBindingLights, scalar) readonly buffer LightBuffer { LightRecord lights[]; };
+layout(set = 0, binding = kBindingTextures, scalar) readonly buffer TextureBuffer { TextureRecord textures[]; };
+layout(set = 0, binding = kBindingTexels, scalar) readonly buffer TexelBuffer { uint texels[]; };
 
 #endif

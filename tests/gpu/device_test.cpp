@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "scene/default_scene.h"
+#include "scene/shapes.h"
 #include "support/gpu_test.h"
 
 namespace raylab::test {

@@ -9,39 +9,14 @@
 
 #include "render/renderer.h"
 #include "scene/default_scene.h"
+#include "scene/shapes.h"
+#include "support/analytic.h"
 #include "support/gpu_test.h"
 
 namespace raylab::test {
 namespace {
 
 class AnalyticRenderTest : public GpuTest {};
-
-constexpr double kPi = 3.14159265358979323846;
-
-struct Ray {
-  glm::dvec3 origin;
-  glm::dvec3 direction;
-};
-
-// The primary ray through the centre of `pixel`, computed as render.comp does, in double precision.
-Ray pixelCenterRay(const gpu::FrameParams& params, std::uint32_t x, std::uint32_t y) {
-  const double ndcX = 2.0 * (x + 0.5) / params.width - 1.0;
-  const double ndcY = 1.0 - 2.0 * (y + 0.5) / params.height;
-  const glm::dvec3 d = glm::dvec3(params.cameraForward) + ndcX * glm::dvec3(params.cameraRight) +
-                       ndcY * glm::dvec3(params.cameraUp);
-  return {glm::dvec3(params.cameraOrigin), glm::normalize(d)};
-}
-
-// Distance to the sphere along a unit ray, with the distance of the ray's line from the centre.
-std::optional<double> hitSphere(const Ray& ray, glm::dvec3 center, double radius, double* missDistance) {
-  const glm::dvec3 f = ray.origin - center;
-  const double b = glm::dot(f, ray.direction);
-  const glm::dvec3 perpendicular = f - b * ray.direction;
-  *missDistance = glm::length(perpendicular);
-  const double discriminant = radius * radius - glm::dot(perpendicular, perpendicular);
-  if (discriminant < 0.0) return std::nullopt;
-  return -b - std::sqrt(discriminant);
-}
 
 struct SphereSetup {
   glm::dvec3 center;
@@ -111,10 +86,7 @@ TEST_F(AnalyticRenderTest, LambertSphereUnderPointLightMatchesClosedForm) {
   settings.height = 72;
   settings.jitter = false;
   const Image image = renderImage(device(), scene, settings, 1);
-  gpu::FrameParams params{};
-  params.width = settings.width;
-  params.height = settings.height;
-  applyCamera(params, scene.camera, settings.width, settings.height);
+  const gpu::FrameParams params = frameFor(scene, settings.width, settings.height);
   EXPECT_GT(expectAnalyticSphere(image, params, setup, 0.0), 1500);
 }
 
@@ -130,10 +102,7 @@ TEST_F(AnalyticRenderTest, FarFromTheOriginTheRayOffsetStillAvoidsSelfShadowing)
   settings.height = 64;
   settings.jitter = false;
   const Image image = renderImage(device(), scene, settings, 1);
-  gpu::FrameParams params{};
-  params.width = settings.width;
-  params.height = settings.height;
-  applyCamera(params, scene.camera, settings.width, settings.height);
+  const gpu::FrameParams params = frameFor(scene, settings.width, settings.height);
   EXPECT_GT(expectAnalyticSphere(image, params, setup, 2e-3), 800);
 }
 
@@ -155,10 +124,7 @@ TEST_F(AnalyticRenderTest, ShadowedGroundIsExactlyZeroAndLitGroundMatchesClosedF
   settings.height = 60;
   settings.jitter = false;
   const Image image = renderImage(device(), scene, settings, 1);
-  gpu::FrameParams params{};
-  params.width = settings.width;
-  params.height = settings.height;
-  applyCamera(params, scene.camera, settings.width, settings.height);
+  const gpu::FrameParams params = frameFor(scene, settings.width, settings.height);
 
   int shadowed = 0, lit = 0;
   for (std::uint32_t y = 0; y < image.height; ++y) {

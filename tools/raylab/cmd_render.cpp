@@ -29,6 +29,8 @@ struct RenderOptions {
   float exposure = 0.0f;
   std::string toneMap = "clamp";
   bool noAntialiasing = false;
+  bool stats = false;
+  bool allFeatures = false;
   std::optional<std::uint32_t> device;
 };
 
@@ -68,9 +70,12 @@ int runRender(int argc, char** argv) {
   args.option("--png", &o.pngPath, "FILE.png", "write the tone-mapped image here (sRGB, 8-bit)");
   args.option("--exposure", &o.exposure, "exposure of the PNG in stops", -20.0f, 20.0f);
   args.choice("--tonemap", &o.toneMap, {"clamp", "reinhard", "aces"}, "tone curve of the PNG (default clamp)");
+  args.flag("--stats", &o.stats, "print which BRDF models and features the kernel was compiled with");
+  args.flag("--all-features", &o.allFeatures, "compile every model and feature in, not only what the scene uses");
   args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(argc, argv)) return kExitOk;
   o.settings.jitter = !o.noAntialiasing;
+  if (o.allFeatures) o.settings.kernel = allFeatures();
 
   if (!o.exrPath.empty()) requireExtension("--out", o.exrPath, ".exr");
   if (!o.pngPath.empty()) requireExtension("--png", o.pngPath, ".png");
@@ -121,6 +126,7 @@ int runRender(int argc, char** argv) {
                 o.settings.width, o.settings.height, o.spp,
                 static_cast<unsigned long long>(gpuScene.triangleCount), gpuScene.sphereCount, gpuScene.lightCount);
     std::printf("acceleration structures: %s\n", formatSeconds(gpuScene.accelerationBuildSeconds).c_str());
+    if (o.stats) std::printf("kernel: %s\n", describe(renderer.kernel).c_str());
     std::printf("first sample: %s (kernel compilation included)\n", formatSeconds(firstSampleSeconds).c_str());
     std::printf("per sample: %s\n", formatSeconds(perSample).c_str());
     std::printf("rays: %s (primary %s, shadow %s, secondary %s), %s\n",

@@ -6,5 +6,6 @@ namespace raylab {
 
 int runRender(int argc, char** argv);
 int runDevices(int argc, char** argv);
+int runBench(int argc, char** argv);
 
 }  // namespace raylab

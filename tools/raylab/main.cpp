@@ -19,6 +19,7 @@ struct Command {
 constexpr Command kCommands[] = {
     {"render", raylab::runRender, "render a scene offscreen to OpenEXR and PNG"},
     {"devices", raylab::runDevices, "list Vulkan devices and whether raylab can use them"},
+    {"bench", raylab::runBench, "benchmarks: kernel variants, ray throughput"},
 };
 
 void printUsage(std::FILE* stream) {

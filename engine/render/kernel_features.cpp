@@ -1,0 +1,52 @@
+#include "render/kernel_features.h"
+
+#include "scene/material_params.h"
+#include "shared/features.h"
+
+namespace raylab {
+
+KernelFeatures featuresOf(const Scene& scene) {
+  KernelFeatures f;
+  for (const Material& material : scene.materials) {
+    f.models |= 1u << material.record.model;
+    if (material.record.model == gpu::kModelGlass) f.features |= gpu::kFeatureGlass;
+    if (material.record.delta > 0.0f) f.features |= gpu::kFeatureMirror;
+    if (material.record.baseColorTexture >= 0) f.features |= gpu::kFeatureTextures;
+  }
+  for (const Light& light : scene.lights) {
+    switch (light.record.type) {
+      case gpu::kLightPoint: f.features |= gpu::kFeaturePointLights; break;
+      case gpu::kLightSpot: f.features |= gpu::kFeatureSpotLights; break;
+      case gpu::kLightDirectional: f.features |= gpu::kFeatureDirectionalLights; break;
+      default: break;
+    }
+  }
+  return f;
+}
+
+KernelFeatures allFeatures() { return {gpu::kAllModels, gpu::kAllFeatures}; }
+
+std::string describe(const KernelFeatures& features) {
+  std::string models;
+  for (const ModelInfo& model : allModels()) {
+    if (features.models & (1u << model.id)) models += (models.empty() ? "" : ", ") + std::string(model.name);
+  }
+  struct Named {
+    std::uint32_t bit;
+    const char* name;
+  };
+  constexpr Named kNames[] = {{gpu::kFeatureGlass, "glass"},
+                              {gpu::kFeatureMirror, "mirror reflection"},
+                              {gpu::kFeaturePointLights, "point lights"},
+                              {gpu::kFeatureSpotLights, "spot lights"},
+                              {gpu::kFeatureDirectionalLights, "directional lights"},
+                              {gpu::kFeatureTextures, "base-colour textures"}};
+  std::string list;
+  for (const Named& named : kNames) {
+    if (features.features & named.bit) list += (list.empty() ? "" : ", ") + std::string(named.name);
+  }
+  return "models: " + (models.empty() ? std::string("none") : models) +
+         "; features: " + (list.empty() ? std::string("none") : list);
+}
+
+}  // namespace raylab

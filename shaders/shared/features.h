@@ -1,0 +1,27 @@
+// Kernel variants: specialization constants say which BRDF models and features a scene uses, so that the
+// driver compiles everything else away (a Lambert-only scene gets a Lambert-only kernel).
+#ifndef RAYLAB_SHARED_FEATURES_H
+#define RAYLAB_SHARED_FEATURES_H
+
+#include "compat.h"
+
+RL_NAMESPACE_BEGIN
+
+// Specialization constant ids.
+RL_CONST uint kSpecEnabledModels = 0;  // bit (1 << kModel...) per model compiled in
+RL_CONST uint kSpecFeatures = 1;       // kFeature... bits
+
+// kSpecFeatures bits.
+RL_CONST uint kFeatureGlass = 1;             // glass materials: reflection and refraction
+RL_CONST uint kFeatureMirror = 2;            // some delta > 0: the mirror-reflection loop
+RL_CONST uint kFeaturePointLights = 4;
+RL_CONST uint kFeatureSpotLights = 8;
+RL_CONST uint kFeatureDirectionalLights = 16;
+RL_CONST uint kFeatureTextures = 32;         // base-colour textures
+
+RL_CONST uint kAllModels = 0xFFFFFFFFu;
+RL_CONST uint kAllFeatures = 0xFFFFFFFFu;
+
+RL_NAMESPACE_END
+
+#endif

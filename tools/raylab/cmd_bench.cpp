@@ -1,0 +1,131 @@
+// `raylab bench`: benchmarks that print machine-independent ratios where they can, and absolute figures with
+// the driver (Mesa, LLVM) and core count recorded. Benchmarks are not tests: they measure, they do not assert.
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#include "args.h"
+#include "commands.h"
+#include "gpu_session.h"
+#include "render/kernel_features.h"
+#include "render/renderer.h"
+#include "scene/default_scene.h"
+#include "scene/gpu_scene.h"
+#include "util/error.h"
+#include "util/progress.h"
+#include "util/timer.h"
+
+namespace raylab {
+
+namespace {
+
+struct VariantTiming {
+  std::string name;
+  std::string kernel;
+  double pipelineSeconds = 0.0;     // vkCreateComputePipelines
+  double firstSampleSeconds = 0.0;  // the first dispatch: lavapipe compiles the kernel with LLVM here
+  double perSampleSeconds = 0.0;    // steady state
+};
+
+VariantTiming timeVariant(const Device& device, const Scene& scene, RenderSettings settings, const char* name,
+                          std::uint32_t samples) {
+  GpuScene gpuScene = uploadScene(device, scene);
+  VariantTiming timing;
+  timing.name = name;
+  const Stopwatch pipelineClock;
+  Renderer renderer = createRenderer(device, gpuScene, scene, settings);
+  timing.pipelineSeconds = pipelineClock.seconds();
+  timing.kernel = describe(renderer.kernel);
+  const Stopwatch firstClock;
+  renderSamples(device, renderer, 1);
+  timing.firstSampleSeconds = firstClock.seconds();
+  const Stopwatch steadyClock;
+  renderSamples(device, renderer, samples);
+  timing.perSampleSeconds = steadyClock.seconds() / samples;
+  destroyRenderer(device, renderer);
+  destroyGpuScene(device, gpuScene);
+  return timing;
+}
+
+// The default scene with every material made plain Lambert: the case specialization helps most.
+Scene lambertOnlyScene() {
+  Scene scene = makeDefaultScene();
+  scene.name = "default, Lambert only";
+  for (Material& material : scene.materials) material.record = lambertMaterial(material.record.rhoD);
+  return scene;
+}
+
+int benchKernels(int argc, char** argv) {
+  std::uint32_t width = 640, height = 360, samples = 16;
+  bool json = false;
+  std::optional<std::uint32_t> deviceIndex;
+  ArgParser args("raylab bench kernels", "[options]",
+                 "Compares the kernel specialised for a Lambert-only scene with the all-features kernel:\n"
+                 "driver compilation time and time per sample. Mesa's shader cache is disabled for this\n"
+                 "command so that compilation is measured, not a cache hit.");
+  args.option("--width", &width, "image width", 1, 16384);
+  args.option("--height", &height, "image height", 1, 16384);
+  args.option("--spp", &samples, "samples timed per variant after the first", 1, 4096);
+  args.flag("--json", &json, "print one JSON object instead of the table");
+  args.option("--device", &deviceIndex, "Vulkan device index from `raylab devices`");
+  if (!args.parse(argc, argv)) return kExitOk;
+
+  // Must be set before the driver initialises its disk cache.
+  setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+  GpuSession gpu(deviceIndex, json);
+  const Scene scene = lambertOnlyScene();
+  RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  const VariantTiming specialised = timeVariant(gpu.device, scene, settings, "specialised", samples);
+  settings.kernel = allFeatures();
+  const VariantTiming everything = timeVariant(gpu.device, scene, settings, "all features", samples);
+
+  const unsigned cores = std::thread::hardware_concurrency();
+  if (json) {
+    std::printf("{\"benchmark\": \"kernels\", \"device\": \"%s\", \"driver\": \"%s\", \"cores\": %u, "
+                "\"width\": %u, \"height\": %u, \"variants\": [",
+                gpu.device.report.name.c_str(), gpu.device.report.driver.c_str(), cores, width, height);
+    for (const VariantTiming* t : {&specialised, &everything}) {
+      std::printf("%s{\"name\": \"%s\", \"pipeline_s\": %.6f, \"first_sample_s\": %.6f, \"per_sample_s\": %.6f}",
+                  t == &specialised ? "" : ", ", t->name.c_str(), t->pipelineSeconds, t->firstSampleSeconds,
+                  t->perSampleSeconds);
+    }
+    std::printf("], \"compile_ratio\": %.4f, \"per_sample_ratio\": %.4f}\n",
+                everything.firstSampleSeconds / specialised.firstSampleSeconds,
+                everything.perSampleSeconds / specialised.perSampleSeconds);
+    return kExitOk;
+  }
+  std::printf("device: %s (%s), %u cores; scene: %s, %ux%u\n", gpu.device.report.name.c_str(),
+              gpu.device.report.driver.c_str(), cores, scene.name.c_str(), width, height);
+  std::printf("%-14s %12s %22s %12s\n", "kernel", "pipeline", "first sample (compile)", "per sample");
+  for (const VariantTiming* t : {&specialised, &everything}) {
+    std::printf("%-14s %12s %22s %12s\n", t->name.c_str(), formatSeconds(t->pipelineSeconds).c_str(),
+                formatSeconds(t->firstSampleSeconds).c_str(), formatSeconds(t->perSampleSeconds).c_str());
+  }
+  std::printf("specialised: %s\n", specialised.kernel.c_str());
+  std::printf("all features / specialised: compile %.2fx, per sample %.2fx\n",
+              everything.firstSampleSeconds / specialised.firstSampleSeconds,
+              everything.perSampleSeconds / specialised.perSampleSeconds);
+  return kExitOk;
+}
+
+}  // namespace
+
+int runBench(int argc, char** argv) {
+  const std::string usage =
+      "Usage: raylab bench <benchmark> [options]\n\nBenchmarks:\n"
+      "  kernels    the scene-specialised kernel against the all-features kernel\n"
+      "\n`raylab bench <benchmark> --help` describes each.\n";
+  if (argc < 1) throw Error("raylab bench: which benchmark?\n" + usage, kExitUsage);
+  const std::string which = argv[0];
+  if (which == "--help" || which == "-h") {
+    std::fputs(usage.c_str(), stdout);
+    return kExitOk;
+  }
+  if (which == "kernels") return benchKernels(argc - 1, argv + 1);
+  throw Error("raylab bench: unknown benchmark '" + which + "'\n" + usage, kExitUsage);
+}
+
+}  // namespace raylab
