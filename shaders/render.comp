@@ -28,7 +28,7 @@ vec3 primaryDirection(uvec2 pixel, vec2 offset) {
 }
 
 void main() {
-  const uvec2 pixel = gl_GlobalInvocationID.xy;
+  const uvec2 pixel = params.tileOrigin + gl_GlobalInvocationID.xy;
   const bool inside = pixel.x < params.width && pixel.y < params.height;
   uvec3 rays = uvec3(0u);  // primary, shadow, secondary
 

@@ -121,27 +121,15 @@ std::uint64_t maxRaysPerSample(const gpu::FrameParams& params) {
 }
 
 void submitSamples(const Device& device, Renderer& renderer, std::uint32_t samples) {
-  const std::uint32_t groupsX = (renderer.params.width + kWorkgroupSize - 1) / kWorkgroupSize;
-  const std::uint32_t groupsY = (renderer.params.height + kWorkgroupSize - 1) / kWorkgroupSize;
+  const glm::uvec2 size(renderer.params.width, renderer.params.height);
   submitAndWait(device, [&](VkCommandBuffer cmd) {
-    vkCmdFillBuffer(cmd, renderer.stats.handle, 0, VK_WHOLE_SIZE, 0);
-    computeBarrier(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipelineLayout, 0, 1,
-                            &renderer.descriptors.set, 0, nullptr);
+    recordResetRayStats(cmd, renderer);
     for (std::uint32_t i = 0; i < samples; ++i) {
-      gpu::FrameParams params = renderer.params;
-      params.sampleIndex = renderer.samplesDone + i;
-      vkCmdPushConstants(cmd, renderer.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params, &params);
-      vkCmdDispatch(cmd, groupsX, groupsY, 1);
-      computeBarrier(cmd);  // the next sample reads and adds to the same sums
+      recordSamplePass(cmd, renderer, renderer.samplesDone + i, glm::uvec2(0), size);
     }
   });
   renderer.samplesDone += samples;
-  const auto* stats = static_cast<const gpu::RayStats*>(renderer.stats.mapped);
-  renderer.rays.primary += stats->primaryRays;
-  renderer.rays.shadow += stats->shadowRays;
-  renderer.rays.secondary += stats->secondaryRays;
+  collectRayStats(renderer);
 }
 
 }  // namespace
@@ -154,6 +142,32 @@ void renderSamples(const Device& device, Renderer& renderer, std::uint32_t sampl
     submitSamples(device, renderer, batch);
     samples -= batch;
   }
+}
+
+void recordSamplePass(VkCommandBuffer cmd, const Renderer& renderer, std::uint32_t sampleIndex,
+                      glm::uvec2 tileOrigin, glm::uvec2 tileSize) {
+  gpu::FrameParams params = renderer.params;
+  params.sampleIndex = sampleIndex;
+  params.tileOrigin = tileOrigin;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipelineLayout, 0, 1,
+                          &renderer.descriptors.set, 0, nullptr);
+  vkCmdPushConstants(cmd, renderer.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params, &params);
+  vkCmdDispatch(cmd, (tileSize.x + kWorkgroupSize - 1) / kWorkgroupSize, (tileSize.y + kWorkgroupSize - 1) / kWorkgroupSize,
+                1);
+  computeBarrier(cmd);  // the next pass reads and adds to the same sums
+}
+
+void recordResetRayStats(VkCommandBuffer cmd, const Renderer& renderer) {
+  vkCmdFillBuffer(cmd, renderer.stats.handle, 0, VK_WHOLE_SIZE, 0);
+  computeBarrier(cmd);
+}
+
+void collectRayStats(Renderer& renderer) {
+  const auto* stats = static_cast<const gpu::RayStats*>(renderer.stats.mapped);
+  renderer.rays.primary += stats->primaryRays;
+  renderer.rays.shadow += stats->shadowRays;
+  renderer.rays.secondary += stats->secondaryRays;
 }
 
 Image readImage(const Device& device, const Renderer& renderer) {

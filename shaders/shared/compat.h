@@ -12,7 +12,8 @@
   using uint = std::uint32_t; \
   using glm::vec2;           \
   using glm::vec3;           \
-  using glm::vec4;
+  using glm::vec4;            \
+  using glm::uvec2;
 #define RL_NAMESPACE_END }
 #define RL_CONST inline constexpr
 #define RL_CHECK_SIZE(type, bytes) static_assert(sizeof(type) == (bytes), #type " must match its GLSL layout")

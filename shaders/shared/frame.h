@@ -21,13 +21,13 @@ struct FrameParams {
   vec3 cameraForward;
   uint sampleIndex;  // which sample of every pixel this dispatch adds; keys the RNG
   vec3 background;   // radiance of rays that miss everything
-  uint reserved;
   uint maxDepth;     // bounces after the primary hit
   uint lightCount;
   uint flags;
   float throughputCutoff;  // a path whose throughput drops below this stops
+  uvec2 tileOrigin;  // first pixel of this dispatch; tiles are multiples of the 8x8 workgroup
 };
-RL_CHECK_SIZE(FrameParams, 96);
+RL_CHECK_SIZE(FrameParams, 100);
 
 struct RayStats {
   uint primaryRays;
