@@ -18,6 +18,13 @@ namespace {
 
 constexpr std::uint32_t kWorkgroupSize = 8;  // render.comp: local_size 8 x 8
 
+void checkImageSize(std::uint32_t width, std::uint32_t height) {
+  if (width == 0 || height == 0 || width > 16384 || height > 16384) {
+    throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1..16384",
+                kExitUsage);
+  }
+}
+
 std::vector<DescriptorBinding> rendererBindings() {
   std::vector<DescriptorBinding> bindings = sceneBindings();
   bindings.push_back({gpu::kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
@@ -50,10 +57,7 @@ void applyCamera(gpu::FrameParams& params, const Camera& camera, std::uint32_t w
 
 Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Scene& scene,
                         const RenderSettings& settings) {
-  if (settings.width == 0 || settings.height == 0 || settings.width > 16384 || settings.height > 16384) {
-    throw Error("image size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                " is outside 1..16384", kExitUsage);
-  }
+  checkImageSize(settings.width, settings.height);
   Renderer renderer;
   gpu::FrameParams& params = renderer.params;
   params.width = settings.width;
@@ -71,25 +75,50 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   renderer.pipelineLayout =
       createPipelineLayout(device, renderer.setLayout, sizeof(gpu::FrameParams), "render pipeline layout");
   renderer.kernel = settings.kernel.value_or(featuresOf(scene));
-  SpecializationConstants constants;
-  constants.set(gpu::kSpecEnabledModels, renderer.kernel.models).set(gpu::kSpecFeatures, renderer.kernel.features);
-  renderer.pipeline = createComputePipeline(device, renderer.pipelineLayout, "render.comp", &constants);
+  renderer.pipeline = createRenderPipeline(device, renderer, renderer.kernel);
 
-  const VkDeviceSize pixels = VkDeviceSize(settings.width) * settings.height;
-  renderer.accumulation = createBuffer(device, pixels * sizeof(glm::vec4),
-                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                           VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                       MemoryUse::kDevice, "accumulation");
   renderer.stats = createBuffer(device, sizeof(gpu::RayStats),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                 MemoryUse::kHost, "ray stats");
 
   renderer.descriptors = allocateDescriptorSet(device, renderer.setLayout, bindings, "render set");
   writeSceneDescriptors(device, renderer.descriptors.set, gpuScene);
-  writeStorageBuffer(device, renderer.descriptors.set, gpu::kBindingAccumulation, renderer.accumulation.handle);
   writeStorageBuffer(device, renderer.descriptors.set, gpu::kBindingRayStats, renderer.stats.handle);
-  resetAccumulation(device, renderer);
+  resizeRenderer(device, renderer, settings.width, settings.height);
   return renderer;
+}
+
+VkPipeline createRenderPipeline(const Device& device, const Renderer& renderer, const KernelFeatures& kernel) {
+  SpecializationConstants constants;
+  constants.set(gpu::kSpecEnabledModels, kernel.models).set(gpu::kSpecFeatures, kernel.features);
+  return createComputePipeline(device, renderer.pipelineLayout, "render.comp", &constants);
+}
+
+void swapRenderPipeline(const Device& device, Renderer& renderer, VkPipeline pipeline, const KernelFeatures& kernel) {
+  vkDestroyPipeline(device.handle, renderer.pipeline, nullptr);
+  renderer.pipeline = pipeline;
+  renderer.kernel = kernel;
+}
+
+void setCamera(Renderer& renderer, const Camera& camera) {
+  applyCamera(renderer.params, camera, renderer.params.width, renderer.params.height);
+}
+
+void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t width, std::uint32_t height) {
+  checkImageSize(width, height);
+  destroyBuffer(device, renderer.accumulation);
+  renderer.accumulation = createBuffer(device, VkDeviceSize(width) * height * sizeof(glm::vec4),
+                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                           VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                       MemoryUse::kDevice, "accumulation");
+  writeStorageBuffer(device, renderer.descriptors.set, gpu::kBindingAccumulation, renderer.accumulation.handle);
+  // The camera's aspect ratio follows the image.
+  const float oldAspect = float(renderer.params.width) / float(renderer.params.height);
+  const float newAspect = float(width) / float(height);
+  renderer.params.cameraRight *= newAspect / oldAspect;
+  renderer.params.width = width;
+  renderer.params.height = height;
+  resetAccumulation(device, renderer);
 }
 
 void destroyRenderer(const Device& device, Renderer& renderer) {

@@ -64,6 +64,16 @@ void recordSamplePass(VkCommandBuffer cmd, const Renderer& renderer, std::uint32
 void recordResetRayStats(VkCommandBuffer cmd, const Renderer& renderer);
 void collectRayStats(Renderer& renderer);
 
+// Live changes (the viewer). Each leaves the accumulated samples stale: reset them afterwards.
+void setCamera(Renderer& renderer, const Camera& camera);
+// New image size: reallocates the accumulation buffer (and resets it).
+void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t width, std::uint32_t height);
+// A pipeline of the renderer's layout specialised for `kernel`; thread-safe, for building one in the
+// background. On lavapipe the driver compiles it at its first dispatch, not here.
+VkPipeline createRenderPipeline(const Device& device, const Renderer& renderer, const KernelFeatures& kernel);
+// Replaces the pipeline (the old one is destroyed: the device must not be using it).
+void swapRenderPipeline(const Device& device, Renderer& renderer, VkPipeline pipeline, const KernelFeatures& kernel);
+
 // Clears the accumulated samples (after a camera or parameter change).
 void resetAccumulation(const Device& device, Renderer& renderer);
 
