@@ -10,7 +10,7 @@
 #include "gpu_session.h"
 #include "image/image.h"
 #include "render/renderer.h"
-#include "scene/default_scene.h"
+#include "scene/load_scene.h"
 #include "scene/gpu_scene.h"
 #include "util/error.h"
 #include "util/progress.h"
@@ -46,11 +46,6 @@ void requireExtension(const std::string& option, const std::string& path, const 
   }
 }
 
-Scene loadSceneArgument(const std::string& path) {
-  if (path.empty()) return makeDefaultScene();
-  throw Error(path + ": scene files are not supported by this build yet; run without SCENE for the built-in scene");
-}
-
 }  // namespace
 
 int runRender(int argc, char** argv) {
@@ -80,7 +75,7 @@ int runRender(int argc, char** argv) {
   if (!o.exrPath.empty()) requireExtension("--out", o.exrPath, ".exr");
   if (!o.pngPath.empty()) requireExtension("--png", o.pngPath, ".png");
 
-  Scene scene = loadSceneArgument(o.scene);
+  Scene scene = loadScene({o.scene, ""});
   if (o.exrPath.empty() && o.pngPath.empty()) {
     o.exrPath = "out/" + scene.name + ".exr";
     o.pngPath = "out/" + scene.name + ".png";
