@@ -24,6 +24,10 @@ RL_CONST uint kBindingAccumulation = 9;  // vec4[] running sum of radiance sampl
 RL_CONST uint kBindingRayStats = 10;     // RayStats, counters reset before every dispatch
 RL_CONST uint kBindingProbeRays = 11;    // trace_rays.comp: ProbeRay[] in
 RL_CONST uint kBindingProbeHits = 12;    // trace_rays.comp: ProbeHit[] out
+RL_CONST uint kBindingBrdfCases = 13;    // brdf_eval.comp: BrdfEvalCase[] in
+RL_CONST uint kBindingBrdfValues = 14;   // brdf_eval.comp: BrdfEvalValue[] out
+RL_CONST uint kBindingBrdfUniforms = 15; // brdf_sample.comp: vec3[] uniform numbers in [0, 1), one per sample
+RL_CONST uint kBindingBrdfSamples = 16;  // brdf_sample.comp: BrdfSampleValue[] out
 
 RL_NAMESPACE_END
 

@@ -1,0 +1,62 @@
+// Glass: a smooth dielectric interface, a delta BSDF. bsdfEval and bsdfPdf return 0 for it; the renderer
+// follows the two delta directions with the weights computed here.
+// | parameter | range   | default | meaning                                  |
+// |-----------|---------|---------|------------------------------------------|
+// | eta       | [1, 10] | 1.5     | index of refraction, inside over outside |
+// | tint      | [0, 1]  | 1       | transmittance colour, RGB                |
+// Snell's law and the Fresnel equations (Born & Wolf, "Principles of Optics", §1.5); Schlick 1994 for the
+// approximations; conventions of ../shared/BRDF_SPEC.md: if wi.n >= 0 the light comes from outside
+// (eta_i = 1, eta_t = eta, nn = n), else from inside (eta_i = eta, eta_t = 1, nn = -n).
+#ifndef RAYLAB_BRDF_GLASS_GLSL
+#define RAYLAB_BRDF_GLASS_GLSL
+
+#include "brdf/fresnel.glsl"
+
+struct GlassEvent {
+  float fresnelExact;         // the exact unpolarised F; 1 under total internal reflection
+  float fresnelSchlick;       // Schlick with the cosine on the optically thinner (outside) side; 1 under TIR
+  float fresnelSchlickNaive;  // Schlick with cos_i always (the common student form)
+  bool tir;
+  vec3 reflected;             // 2 cos_i nn - wi
+  vec3 refracted;             // zero under TIR
+};
+
+// wi towards the light and n the outward normal, both unit, in any common frame.
+GlassEvent glassEvent(float eta, vec3 wi, vec3 n) {
+  const float cosN = dot(wi, n);
+  const bool outside = cosN >= 0.0;
+  const float etaI = outside ? 1.0 : eta;
+  const float etaT = outside ? eta : 1.0;
+  const vec3 nn = outside ? n : -n;
+  const float cosI = abs(cosN);
+  // sin^2 theta_i from the cross product: 1 - cos^2 cancels near normal incidence.
+  const vec3 c = cross(wi, n);
+  const float sin2I = min(1.0, dot(c, c));
+  const float ratio = etaI / etaT;
+  // (eta_t cos_t)^2 = d + eta_i^2 cos_i^2 with d = eta_t^2 - eta_i^2 a product of exact differences: the
+  // same quantity F_DielectricExact uses, and sin^2 theta_t >= 1 exactly when it is <= 0.
+  const float A2 = (etaT - etaI) * (etaT + etaI) + etaI * etaI * cosI * cosI;
+  const float F0 = F0FromEta(eta);
+
+  GlassEvent event;
+  event.tir = A2 <= 0.0;
+  event.reflected = 2.0 * cosI * nn - wi;
+  event.fresnelExact = F_DielectricExact(cosI, etaI, etaT);
+  // 1 - cos = sin^2 / (1 + cos), which does not cancel near normal incidence.
+  const float oneMinusCosI = sin2I / (1.0 + cosI);
+  event.fresnelSchlickNaive = F_Schlick(F0, oneMinusCosI);
+  if (event.tir) {
+    event.fresnelSchlick = 1.0;
+    event.refracted = vec3(0.0);
+  } else {
+    const float cosT = sqrt(A2) / etaT;
+    // t = -ratio wi + (ratio cos_i - cos_t) nn, written as the tangential part of wi scaled by the ratio
+    // plus the normal part, which avoids the cancellation in (ratio cos_i - cos_t) near eta = 1.
+    event.refracted = -ratio * (wi - cosI * nn) - cosT * nn;
+    const float oneMinusCosT = ratio * ratio * sin2I / (1.0 + cosT);
+    event.fresnelSchlick = F_Schlick(F0, outside ? oneMinusCosI : oneMinusCosT);
+  }
+  return event;
+}
+
+#endif

@@ -1,0 +1,50 @@
+// Phong, energy-normalised: a cosine-power lobe around the mirror direction plus a Lambertian term.
+// | parameter | range      | default | meaning                   |
+// |-----------|------------|---------|---------------------------|
+// | rho_d     | [0, 1]     | 0.5     | diffuse reflectance, RGB  |
+// | rho_s     | [0, 1]     | 0.5     | specular reflectance, RGB |
+// | s         | [1, 10000] | 50      | specular exponent         |
+// Phong, "Illumination for Computer Generated Pictures", CACM 18(6), 1975; normalisation (s+2)/(2 pi) from
+// Lewis, "Making Shaders More Physically Plausible", CGF 13(2), 1994, and Lafortune & Willems, "Using the
+// Modified Phong Reflectance Model for Physically Based Rendering", 1994 (also the sampling).
+//   f = rho_d / pi + rho_s (s+2)/(2 pi) max(0, R.wo)^s,   R = 2 (n.wi) n - wi.
+#ifndef RAYLAB_BRDF_PHONG_GLSL
+#define RAYLAB_BRDF_PHONG_GLSL
+
+#include "brdf/sampling.glsl"
+
+// max(0, R.wo)^s with R the mirror of wi about n (symmetric in wi and wo). For unit vectors
+// 1 - R.wo = |R - wo|^2 / 2, which has no cancellation near the peak, where 1 - dot(R, wo) would lose all
+// accuracy that matters for s = 10^4; the power is exp(s log1p(-x)) for the reason in common.glsl.
+float phongLobe(vec3 wi, vec3 wo, float s) {
+  const vec3 d = vec3(-wi.xy, wi.z) - wo;
+  const float x = 0.5 * dot(d, d);
+  if (x >= 1.0) return 0.0;  // R.wo <= 0
+  return exp(s * log1pAccurate(-x));
+}
+
+vec3 phongEval(vec3 rhoD, vec3 rhoS, float s, vec3 wi, vec3 wo) {
+  if (!(wi.z > 0.0 && wo.z > 0.0)) return vec3(0.0);  // one-sided; also false for NaN directions
+  return rhoD * kInvPi + rhoS * ((s + 2.0) / kTwoPi * phongLobe(wi, wo, s));
+}
+
+float phongPdf(vec3 rhoD, vec3 rhoS, float s, vec3 wi, vec3 wo) {
+  if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
+  const float pSpec = specularProbability(rhoD, rhoS);
+  return (1.0 - pSpec) * cosineHemispherePdf(wi) + pSpec * (s + 1.0) / kTwoPi * phongLobe(wi, wo, s);
+}
+
+BsdfSample phongSample(vec3 rhoD, vec3 rhoS, float s, vec3 wo, vec3 u) {
+  if (!(wo.z > 0.0)) return noSample();
+  vec3 wi;
+  if (u.x < specularProbability(rhoD, rhoS)) {
+    const vec2 cs = powerCosine(u.y, s + 1.0);
+    wi = aroundAxis(vec3(-wo.xy, wo.z), cs.x, cs.y, kTwoPi * u.z);
+  } else {
+    wi = sampleCosineHemisphere(u.yz);
+  }
+  if (!(wi.z > 0.0)) return noSample();
+  return acceptSample(wi, phongEval(rhoD, rhoS, s, wi, wo), phongPdf(rhoD, rhoS, s, wi, wo));
+}
+
+#endif
