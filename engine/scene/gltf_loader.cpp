@@ -1,0 +1,457 @@
+// The glTF entry points and the walk over the default scene's node hierarchy: transforms, mesh instances,
+// raylab spheres, cameras and lights, and the defaults for files without a camera or lights.
+#include "scene/gltf_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scene/gltf_document.h"
+#include "scene/gltf_geometry.h"
+#include "scene/gltf_lights.h"
+#include "scene/gltf_materials.h"
+#include "util/error.h"
+#include "util/files.h"
+
+namespace raylab {
+
+namespace {
+
+using gltf::Document;
+using nlohmann::json;
+
+// The extensions raylab reads; a file that requires any other cannot be shown faithfully.
+const std::vector<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_ior",
+                                                       "KHR_materials_transmission"};
+constexpr float kUniformScaleTolerance = 1e-4f;  // relative, for the scale of a raylab sphere's node
+// Defaults for a file without a camera (docs/scenes.md): the bounds seen from +Z, raised 20 degrees.
+constexpr float kDefaultYfov = glm::radians(40.0f);
+constexpr float kDefaultElevation = glm::radians(20.0f);
+constexpr float kFramingMargin = 1.05f;
+// The default light: irradiance at the scene's centre such that white Lambert facing it has radiance 0.8.
+constexpr float kDefaultLightRadiance = 0.8f;
+constexpr float kPi = 3.14159265358979323846f;
+
+const json* findPath(const json& object, std::initializer_list<const char*> path) {
+  const json* current = &object;
+  for (const char* key : path) {
+    if (!current->is_object()) return nullptr;
+    const auto it = current->find(key);
+    if (it == current->end()) return nullptr;
+    current = &*it;
+  }
+  return current;
+}
+
+bool isFinite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      if (!std::isfinite(m[c][r])) return false;
+    }
+  }
+  return true;
+}
+
+// A [r, g, b] of finite numbers >= 0, or an Error naming `where`.
+glm::vec3 readColor(const json& value, const std::string& where) {
+  const bool ok = value.is_array() && value.size() == 3 && value[0].is_number() && value[1].is_number() &&
+                  value[2].is_number();
+  glm::vec3 color = ok ? glm::vec3(value[0].get<float>(), value[1].get<float>(), value[2].get<float>()) : glm::vec3(-1.0f);
+  if (!ok || !(color.r >= 0.0f && color.g >= 0.0f && color.b >= 0.0f) || !std::isfinite(color.r + color.g + color.b)) {
+    throw Error(where + ": expected [r, g, b] of finite numbers >= 0, found " + value.dump());
+  }
+  return color;
+}
+
+struct CameraUse {
+  int camera;
+  int node;
+  glm::mat4 world;
+};
+
+struct Bounds {
+  glm::vec3 low{std::numeric_limits<float>::max()};
+  glm::vec3 high{-std::numeric_limits<float>::max()};
+  void add(glm::vec3 p) {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  bool empty() const { return low.x > high.x; }
+};
+
+class SceneBuilder {
+ public:
+  SceneBuilder(Document& document, const GltfOptions& options, Scene& scene)
+      : document_(document), model_(document.model), options_(options), scene_(scene),
+        onPath_(document.model.nodes.size(), false) {}
+
+  void build() {
+    checkExtensions();
+    gltf::convertMaterials(document_, scene_);
+    const std::vector<int> roots = sceneRoots();
+    for (int root : roots) visit(root, glm::mat4(1.0f), "scene");
+    if (scene_.instances.empty() && scene_.spheres.empty()) {
+      document_.fail("the scene has nothing to render (no triangle meshes or raylab spheres)");
+    }
+    if (!model_.animations.empty()) document_.ignore("animations");
+    chooseCamera();
+    if (scene_.lights.empty()) addDefaultLight();
+    document_.reportIgnored();
+  }
+
+ private:
+  void checkExtensions() {
+    const auto supported = [](const std::string& name) {
+      return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), name) != kSupportedExtensions.end();
+    };
+    for (const std::string& name : model_.extensionsRequired) {
+      if (!supported(name)) document_.fail("requires the extension " + name + ", which raylab does not support");
+    }
+    for (const std::string& name : model_.extensionsUsed) {
+      if (!supported(name)) document_.ignore("the extension " + name);
+    }
+  }
+
+  // The nodes of the default scene (the first when the file names none); a file without scenes shows every
+  // node that is nobody's child.
+  std::vector<int> sceneRoots() {
+    if (model_.scenes.empty()) {
+      if (model_.nodes.empty()) document_.fail("has no scenes and no nodes: nothing to render");
+      std::vector<bool> isChild(model_.nodes.size(), false);
+      for (const tinygltf::Node& node : model_.nodes) {
+        for (int child : node.children) {
+          if (child >= 0 && std::size_t(child) < isChild.size()) isChild[std::size_t(child)] = true;
+        }
+      }
+      std::vector<int> roots;
+      for (std::size_t i = 0; i < isChild.size(); ++i) {
+        if (!isChild[i]) roots.push_back(int(i));
+      }
+      document_.warnOnce("no scene", "has no scenes; showing every root node");
+      return roots;
+    }
+    const int sceneIndex = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+    if (std::size_t(sceneIndex) >= model_.scenes.size()) {
+      document_.fail("the default scene " + std::to_string(sceneIndex) + " does not exist (the file has " +
+                     std::to_string(model_.scenes.size()) + ")");
+    }
+    readSceneExtras(document_.json["scenes"][std::size_t(sceneIndex)],
+                    gltf::describe("scene", sceneIndex, model_.scenes[std::size_t(sceneIndex)].name));
+    return model_.scenes[std::size_t(sceneIndex)].nodes;
+  }
+
+  void readSceneExtras(const json& sceneJson, const std::string& sceneWhere) {
+    const json* raylab = findPath(sceneJson, {"extras", "raylab"});
+    if (raylab == nullptr) return;
+    const std::string where = document_.label + ": " + sceneWhere + ": extras.raylab";
+    if (!raylab->is_object()) throw Error(where + ": expected an object, found " + raylab->dump());
+    for (const auto& [key, value] : raylab->items()) {
+      if (key == "background") {
+        scene_.background = readColor(value, where + ".background");
+      } else {
+        throw Error(where + ": unknown key '" + key + "' (a scene's extras.raylab has background)");
+      }
+    }
+  }
+
+  glm::mat4 localTransform(const tinygltf::Node& node, const std::string& where) {
+    glm::mat4 local(1.0f);
+    if (node.matrix.size() == 16) {
+      // glTF matrices are column-major, as glm's are.
+      for (int i = 0; i < 16; ++i) glm::value_ptr(local)[i] = float(node.matrix[std::size_t(i)]);
+    } else {
+      glm::vec3 t(0.0f), s(1.0f);
+      glm::quat r(1.0f, 0.0f, 0.0f, 0.0f);
+      if (node.translation.size() == 3) t = glm::vec3(node.translation[0], node.translation[1], node.translation[2]);
+      if (node.scale.size() == 3) s = glm::vec3(node.scale[0], node.scale[1], node.scale[2]);
+      if (node.rotation.size() == 4) {
+        // glTF stores x, y, z, w; glm's constructor takes w first.
+        r = glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2]));
+        const float length = glm::length(r);
+        if (!(length > 0.0f) || !std::isfinite(length)) document_.fail(where + ": rotation is not a unit quaternion");
+        r /= length;
+      }
+      local = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
+    }
+    if (!isFinite(local)) document_.fail(where + ": the transform has non-finite entries");
+    return local;
+  }
+
+  void visit(int nodeIndex, const glm::mat4& parent, const std::string& parentWhere) {
+    if (nodeIndex < 0 || std::size_t(nodeIndex) >= model_.nodes.size()) {
+      document_.fail(parentWhere + ": node " + std::to_string(nodeIndex) + " does not exist (the file has " +
+                     std::to_string(model_.nodes.size()) + ")");
+    }
+    const tinygltf::Node& node = model_.nodes[std::size_t(nodeIndex)];
+    const std::string where = gltf::describe("node", nodeIndex, node.name);
+    if (onPath_[std::size_t(nodeIndex)]) document_.fail(where + ": is its own ancestor (the node hierarchy has a cycle)");
+    onPath_[std::size_t(nodeIndex)] = true;
+
+    const glm::mat4 world = parent * localTransform(node, where);
+    if (!isFinite(world)) document_.fail(where + ": the world transform overflows");
+    const json& nodeJson = document_.json["nodes"][std::size_t(nodeIndex)];
+    if (node.skin >= 0) document_.ignore("skins (meshes are shown in their bind pose)");
+
+    const json* sphere = nodeRaylabSphere(nodeJson, where);
+    if (sphere != nullptr) {
+      addSphere(*sphere, node, world, where);
+    } else if (node.mesh >= 0) {
+      if (std::size_t(node.mesh) >= model_.meshes.size()) {
+        document_.fail(where + ": mesh " + std::to_string(node.mesh) + " does not exist (the file has " +
+                       std::to_string(model_.meshes.size()) + ")");
+      }
+      addMeshInstances(node.mesh, world, where);
+    }
+    if (node.camera >= 0) {
+      if (std::size_t(node.camera) >= model_.cameras.size()) {
+        document_.fail(where + ": camera " + std::to_string(node.camera) + " does not exist (the file has " +
+                       std::to_string(model_.cameras.size()) + ")");
+      }
+      cameras_.push_back({node.camera, nodeIndex, world});
+    }
+    if (const json* light = findPath(nodeJson, {"extensions", "KHR_lights_punctual", "light"})) {
+      scene_.lights.push_back(gltf::convertLight(document_, light->get<int>(), world, where));
+    }
+    for (int child : node.children) visit(child, world, where);
+    onPath_[std::size_t(nodeIndex)] = false;
+  }
+
+  // The node's extras.raylab.sphere object, or null; extras.raylab may hold nothing else.
+  const json* nodeRaylabSphere(const json& nodeJson, const std::string& where) {
+    const json* raylab = findPath(nodeJson, {"extras", "raylab"});
+    if (raylab == nullptr) return nullptr;
+    const std::string prefix = document_.label + ": " + where + ": extras.raylab";
+    if (!raylab->is_object()) throw Error(prefix + ": expected an object, found " + raylab->dump());
+    for (const auto& [key, value] : raylab->items()) {
+      if (key != "sphere") throw Error(prefix + ": unknown key '" + key + "' (a node's extras.raylab has sphere)");
+    }
+    return findPath(*raylab, {"sphere"});
+  }
+
+  void addSphere(const json& sphere, const tinygltf::Node& node, const glm::mat4& world, const std::string& where) {
+    const std::string prefix = document_.label + ": " + where + ": extras.raylab.sphere";
+    if (!sphere.is_object()) throw Error(prefix + ": expected {\"radius\": r, \"material\": i}, found " + sphere.dump());
+    for (const auto& [key, value] : sphere.items()) {
+      if (key != "radius" && key != "material") {
+        throw Error(prefix + ": unknown key '" + key + "' (a sphere has radius and material)");
+      }
+    }
+    const auto radius = sphere.find("radius");
+    if (radius == sphere.end() || !radius->is_number() || !(radius->get<double>() > 0.0) ||
+        !std::isfinite(radius->get<float>())) {
+      throw Error(prefix + ".radius: expected a finite number > 0, found " +
+                  (radius == sphere.end() ? std::string("nothing") : radius->dump()));
+    }
+
+    std::uint32_t material = 0;
+    if (const auto index = sphere.find("material"); index != sphere.end()) {
+      if (!index->is_number_integer() || index->get<std::int64_t>() < 0 ||
+          index->get<std::int64_t>() >= std::int64_t(model_.materials.size())) {
+        throw Error(prefix + ".material: " + index->dump() + " is not a material index (the file has " +
+                    std::to_string(model_.materials.size()) + " materials)");
+      }
+      material = index->get<std::uint32_t>();
+    } else {
+      // The material of the stand-in mesh's first primitive, so that other viewers and raylab agree.
+      const bool hasMesh = node.mesh >= 0 && std::size_t(node.mesh) < model_.meshes.size() &&
+                           !model_.meshes[std::size_t(node.mesh)].primitives.empty();
+      const int first = hasMesh ? model_.meshes[std::size_t(node.mesh)].primitives[0].material : -1;
+      material = first >= 0 && std::size_t(first) < model_.materials.size() ? std::uint32_t(first)
+                                                                            : defaultMaterial_.index(scene_);
+    }
+
+    // An exact sphere stays one only under a similarity: equal scale on three orthogonal axes.
+    const glm::mat3 linear(world);
+    const glm::vec3 scale(glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2]));
+    const float largest = std::max({scale.x, scale.y, scale.z});
+    const float smallest = std::min({scale.x, scale.y, scale.z});
+    const float skew = std::max({std::abs(glm::dot(linear[0], linear[1])), std::abs(glm::dot(linear[1], linear[2])),
+                                 std::abs(glm::dot(linear[0], linear[2]))});
+    if (!(smallest > 0.0f) || largest - smallest > kUniformScaleTolerance * largest ||
+        skew > kUniformScaleTolerance * largest * largest) {
+      char axes[96];
+      std::snprintf(axes, sizeof axes, "(%g, %g, %g)", scale.x, scale.y, scale.z);
+      document_.fail(where + ": a raylab sphere needs a uniform scale, but the world transform scales the axes by " +
+                     axes + (skew > kUniformScaleTolerance * largest * largest ? " with shear" : ""));
+    }
+    scene_.spheres.push_back({glm::vec3(world[3]), radius->get<float>() * scale.x, material});
+  }
+
+  void addMeshInstances(int meshIndex, const glm::mat4& world, const std::string& where) {
+    auto cached = meshes_.find(meshIndex);
+    if (cached == meshes_.end()) {
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> parts;  // scene mesh, scene material
+      for (gltf::PrimitiveMesh& primitive : gltf::convertMesh(document_, meshIndex)) {
+        const std::uint32_t material =
+            primitive.material >= 0 ? std::uint32_t(primitive.material) : defaultMaterial_.index(scene_);
+        const gpu::MaterialRecord& record = scene_.materials[material].record;
+        if (record.baseColorTexture >= 0 && primitive.mesh.uvs.empty()) {
+          document_.warnOnce("no uvs", primitive.mesh.name + ": a textured material on a mesh without TEXCOORD_0 "
+                                                             "(the texture is sampled at (0, 0))");
+        }
+        parts.emplace_back(std::uint32_t(scene_.meshes.size()), material);
+        scene_.meshes.push_back(std::move(primitive.mesh));
+      }
+      cached = meshes_.emplace(meshIndex, std::move(parts)).first;
+    }
+    // A singular transform (zero scale hides a node) would give the kernel an infinite inverse.
+    const float determinant = glm::determinant(glm::mat3(world));
+    if (!(std::abs(determinant) > 0.0f)) {
+      document_.warnOnce("singular", where + ": has a zero scale; its mesh is not shown");
+      return;
+    }
+    for (const auto& [mesh, material] : cached->second) scene_.instances.push_back({mesh, world, material});
+  }
+
+  std::string cameraName(const CameraUse& use) const {
+    const std::string& name = model_.cameras[std::size_t(use.camera)].name;
+    if (!name.empty()) return name;
+    const std::string& nodeName = model_.nodes[std::size_t(use.node)].name;
+    return nodeName.empty() ? "camera " + std::to_string(use.camera) : nodeName;
+  }
+
+  void chooseCamera() {
+    const CameraUse* chosen = nullptr;
+    if (!options_.camera.empty()) {
+      std::string known;
+      for (const CameraUse& use : cameras_) {
+        const std::string& cameraName = model_.cameras[std::size_t(use.camera)].name;
+        const std::string& nodeName = model_.nodes[std::size_t(use.node)].name;
+        if (chosen == nullptr && (cameraName == options_.camera || nodeName == options_.camera)) chosen = &use;
+        known += (known.empty() ? "'" : ", '") + this->cameraName(use) + "'";
+      }
+      if (chosen == nullptr) {
+        document_.fail("has no camera named '" + options_.camera + "' (" +
+                       (known.empty() ? std::string("it has no cameras") : "cameras: " + known) + ")");
+      }
+      if (model_.cameras[std::size_t(chosen->camera)].type != "perspective") {
+        document_.fail("camera '" + options_.camera + "' is " + model_.cameras[std::size_t(chosen->camera)].type +
+                       "; raylab renders perspective cameras only");
+      }
+    } else {
+      // The first perspective camera of the file's list that the scene uses.
+      for (const CameraUse& use : cameras_) {
+        if (model_.cameras[std::size_t(use.camera)].type != "perspective") {
+          document_.ignore("orthographic cameras");
+          continue;
+        }
+        if (chosen == nullptr || use.camera < chosen->camera) chosen = &use;
+      }
+    }
+    if (chosen == nullptr) {
+      frameBounds();
+      return;
+    }
+    const tinygltf::Camera& camera = model_.cameras[std::size_t(chosen->camera)];
+    const std::string where = gltf::describe("camera", chosen->camera, camera.name);
+    if (camera.type != "perspective") document_.fail(where + ": type \"" + camera.type + "\" is not perspective");
+    const double yfov = camera.perspective.yfov;
+    if (!(yfov > 0.0 && yfov < 3.1)) {
+      document_.fail(where + ": yfov " + std::to_string(yfov) + " rad is outside (0, 3.1)");
+    }
+    // The camera looks down its node's -Z with +Y up (glTF 2.0 § 3.10.1).
+    const glm::mat4& world = chosen->world;
+    const glm::vec3 forward(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+    const glm::vec3 up(world * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+    const float across = glm::length(glm::cross(forward, up));
+    if (!(across > 0.0f) || !std::isfinite(across)) {
+      document_.fail(where + ": its node's transform collapses the view direction or the up axis");
+    }
+    scene_.camera.name = cameraName(*chosen);
+    scene_.camera.position = glm::vec3(world[3]);
+    scene_.camera.target = scene_.camera.position + glm::normalize(forward);
+    scene_.camera.up = glm::normalize(up);
+    scene_.camera.yfov = float(yfov);
+  }
+
+  Bounds sceneBounds() const {
+    Bounds bounds;
+    for (const MeshInstance& instance : scene_.instances) {
+      for (const glm::vec3& p : scene_.meshes[instance.mesh].positions) {
+        bounds.add(glm::vec3(instance.transform * glm::vec4(p, 1.0f)));
+      }
+    }
+    for (const Sphere& sphere : scene_.spheres) {
+      bounds.add(sphere.center - sphere.radius);
+      bounds.add(sphere.center + sphere.radius);
+    }
+    return bounds;
+  }
+
+  void frameBounds() {
+    const Bounds bounds = sceneBounds();
+    const glm::vec3 center = 0.5f * (bounds.low + bounds.high);
+    float radius = 0.5f * glm::length(bounds.high - bounds.low);
+    if (!(radius > 0.0f)) radius = 1.0f;
+    const float distance = kFramingMargin * radius / std::sin(0.5f * kDefaultYfov);
+    const glm::vec3 direction(0.0f, std::sin(kDefaultElevation), std::cos(kDefaultElevation));
+    scene_.camera.name = "default";
+    scene_.camera.position = center + distance * direction;
+    scene_.camera.target = center;
+    scene_.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    scene_.camera.yfov = kDefaultYfov;
+    document_.warnOnce("no camera", "has no perspective camera; framing the scene's bounds from +Z (docs/scenes.md)");
+  }
+
+  // A white point light above and to the left of the camera, bright enough that white Lambert at the
+  // scene's centre facing it has radiance 0.8.
+  void addDefaultLight() {
+    const Bounds bounds = sceneBounds();
+    const glm::vec3 center = 0.5f * (bounds.low + bounds.high);
+    const Camera& camera = scene_.camera;
+    const glm::vec3 w = glm::normalize(camera.target - camera.position);
+    const glm::vec3 u = glm::normalize(glm::cross(w, camera.up));
+    const glm::vec3 v = glm::cross(u, w);
+    const float distance = std::max(glm::length(center - camera.position), 1e-3f);
+    const glm::vec3 position = camera.position + 0.3f * distance * (v - u);
+    const float toCenter = glm::length(center - position);
+    const float intensity = kDefaultLightRadiance * kPi * toCenter * toCenter;
+    scene_.lights.push_back({"default", pointLight(position, glm::vec3(intensity))});
+    document_.warnOnce("no lights", "has no KHR_lights_punctual lights; added a default point light near the camera "
+                                    "(docs/scenes.md)");
+  }
+
+  Document& document_;
+  const tinygltf::Model& model_;
+  const GltfOptions& options_;
+  Scene& scene_;
+  std::vector<bool> onPath_;
+  std::vector<CameraUse> cameras_;
+  std::map<int, std::vector<std::pair<std::uint32_t, std::uint32_t>>> meshes_;
+  gltf::DefaultMaterial defaultMaterial_;
+};
+
+Scene loadDocument(Document& document, const std::string& name, const GltfOptions& options) {
+  Scene scene;
+  scene.name = name;
+  SceneBuilder(document, options, scene).build();
+  return scene;
+}
+
+}  // namespace
+
+Scene loadGltfFile(const std::string& path, const GltfOptions& options) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) throw Error(path + ": no such file");
+  if (std::filesystem::is_directory(status)) throw Error(path + ": is a directory, not a glTF file");
+  const std::filesystem::path file(path);
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string bytes = readTextFile(path);
+  Document document = gltf::parseDocument(bytes, file.parent_path().string(), path, extension == ".glb");
+  return loadDocument(document, file.stem().string(), options);
+}
+
+Scene loadGltfText(const std::string& json, const std::string& baseDirectory, const std::string& sceneName,
+                   const GltfOptions& options) {
+  Document document = gltf::parseDocument(json, baseDirectory, sceneName, false);
+  return loadDocument(document, sceneName, options);
+}
+
+}  // namespace raylab

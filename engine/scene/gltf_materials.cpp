@@ -1,0 +1,293 @@
+#include "scene/gltf_materials.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+
+#include "scene/material_params.h"
+#include "util/error.h"
+
+namespace raylab::gltf {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr float kMaxEta = 10.0f;  // the contract's range of eta, [1, 10]
+constexpr glm::vec3 kDefaultGrey{0.8f};
+
+float schlickF0(float eta) {
+  const float r = (eta - 1.0f) / (eta + 1.0f);
+  return r * r;
+}
+
+// The eta whose Schlick F0 is `f0` (the inverse of schlickF0 on [1, inf)).
+float etaFromF0(float f0) {
+  const float s = std::sqrt(std::clamp(f0, 0.0f, 0.999f));
+  return (1.0f + s) / (1.0f - s);
+}
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// A glTF factor must lie in [low, high]; the error names the material and the property.
+float checkedFactor(double value, double low, double high, const std::string& where, const std::string& property) {
+  if (!(value >= low && value <= high)) {
+    throw Error(where + ": " + property + " = " + number(value) + " is outside [" + number(low) + ", " + number(high) + "]");
+  }
+  return static_cast<float>(value);
+}
+
+std::string found(const json& value) {
+  std::string text = value.dump();
+  return text.size() > 40 ? text.substr(0, 37) + "..." : text;
+}
+
+std::uint32_t wrapMode(int glMode, const std::string& where) {
+  switch (glMode) {
+    case TINYGLTF_TEXTURE_WRAP_REPEAT: return gpu::kWrapRepeat;
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return gpu::kWrapClamp;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return gpu::kWrapMirror;
+  }
+  throw Error(where + ": wrap mode " + std::to_string(glMode) + " is not 10497 (repeat), 33071 (clamp) or 33648 (mirror)");
+}
+
+// Base-colour textures as RGBA8, each glTF texture converted once however many materials use it.
+class TextureConverter {
+ public:
+  TextureConverter(Document& document, Scene& scene) : document_(document), scene_(scene) {}
+
+  // The scene texture of glTF texture `index`, or -1 when it has no image raylab can use (reported once).
+  int convert(int index, const std::string& where) {
+    const auto cached = cache_.find(index);
+    if (cached != cache_.end()) return cached->second;
+    const tinygltf::Model& model = document_.model;
+    if (index < 0 || std::size_t(index) >= model.textures.size()) {
+      document_.fail(where + ": texture " + std::to_string(index) + " does not exist (the file has " +
+                     std::to_string(model.textures.size()) + ")");
+    }
+    const tinygltf::Texture& gltfTexture = model.textures[std::size_t(index)];
+    const std::string textureName = describe("texture", index, gltfTexture.name);
+    if (gltfTexture.source < 0) {
+      // Sources in extensions (KHR_texture_basisu, EXT_texture_webp) only.
+      document_.ignore("textures without a PNG or JPEG source");
+      return cache_[index] = -1;
+    }
+    if (std::size_t(gltfTexture.source) >= model.images.size()) {
+      document_.fail(textureName + ": image " + std::to_string(gltfTexture.source) + " does not exist (the file has " +
+                     std::to_string(model.images.size()) + ")");
+    }
+    Texture texture = decode(model.images[std::size_t(gltfTexture.source)], gltfTexture.source);
+    if (gltfTexture.sampler >= 0) {
+      if (std::size_t(gltfTexture.sampler) >= model.samplers.size()) {
+        document_.fail(textureName + ": sampler " + std::to_string(gltfTexture.sampler) + " does not exist");
+      }
+      const tinygltf::Sampler& sampler = model.samplers[std::size_t(gltfTexture.sampler)];
+      const std::string samplerName = document_.label + ": " + describe("sampler", gltfTexture.sampler, sampler.name);
+      texture.wrapS = wrapMode(sampler.wrapS, samplerName + " wrapS");
+      texture.wrapT = wrapMode(sampler.wrapT, samplerName + " wrapT");
+    }
+    if (!gltfTexture.name.empty()) texture.name = gltfTexture.name;
+    scene_.textures.push_back(std::move(texture));
+    return cache_[index] = static_cast<int>(scene_.textures.size() - 1);
+  }
+
+ private:
+  // tinygltf has decoded the image with stb (RGBA unless told otherwise); any channel count and 8 or 16 bits
+  // are accepted and stored as RGBA8 with the colour still sRGB-encoded.
+  Texture decode(const tinygltf::Image& image, int imageIndex) {
+    const std::string where = describe("image", imageIndex, image.name);
+    const int channels = image.component;
+    const int bytesPerChannel = image.bits / 8;
+    if (image.width <= 0 || image.height <= 0 || channels < 1 || channels > 4 ||
+        (image.bits != 8 && image.bits != 16)) {
+      document_.fail(where + ": decoded to " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                     " with " + std::to_string(channels) + " channels of " + std::to_string(image.bits) +
+                     " bits; expected 1 to 4 channels of 8 or 16 bits");
+    }
+    const std::size_t texels = std::size_t(image.width) * std::size_t(image.height);
+    if (image.image.size() != texels * std::size_t(channels) * std::size_t(bytesPerChannel)) {
+      document_.fail(where + ": decoded pixel data has " + std::to_string(image.image.size()) + " bytes, not " +
+                     std::to_string(texels * std::size_t(channels * bytesPerChannel)));
+    }
+    const auto channel = [&](std::size_t texel, int c) -> std::uint8_t {
+      const std::size_t offset = (texel * std::size_t(channels) + std::size_t(c)) * std::size_t(bytesPerChannel);
+      if (bytesPerChannel == 1) return image.image[offset];
+      std::uint16_t value;
+      std::memcpy(&value, image.image.data() + offset, sizeof value);
+      return static_cast<std::uint8_t>((std::uint32_t(value) * 255 + 32767) / 65535);
+    };
+    Texture texture;
+    texture.name = !image.name.empty() ? image.name
+                   : (!image.uri.empty() && !tinygltf::IsDataURI(image.uri)) ? image.uri
+                                                                             : "image " + std::to_string(imageIndex);
+    texture.width = std::uint32_t(image.width);
+    texture.height = std::uint32_t(image.height);
+    texture.rgba.resize(texels * 4);
+    for (std::size_t t = 0; t < texels; ++t) {
+      std::uint8_t* out = &texture.rgba[4 * t];
+      if (channels <= 2) {  // grey, or grey and alpha
+        out[0] = out[1] = out[2] = channel(t, 0);
+        out[3] = channels == 2 ? channel(t, 1) : 255;
+      } else {
+        for (int c = 0; c < 3; ++c) out[c] = channel(t, c);
+        out[3] = channels == 4 ? channel(t, 3) : 255;
+      }
+    }
+    return texture;
+  }
+
+  Document& document_;
+  Scene& scene_;
+  std::map<int, int> cache_;
+};
+
+const json* findPath(const json& object, std::initializer_list<const char*> path) {
+  const json* current = &object;
+  for (const char* key : path) {
+    if (!current->is_object()) return nullptr;
+    const auto it = current->find(key);
+    if (it == current->end()) return nullptr;
+    current = &*it;
+  }
+  return current;
+}
+
+bool hasRhoD(std::uint32_t model) {
+  for (const ParamInfo& param : modelInfo(model).params) {
+    if (param.name == "rho_d" || param.name == "Rd") return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where) {
+  if (input.transmission >= 1.0f) {
+    gpu::MaterialRecord record = defaultRecord(gpu::kModelGlass);
+    setParam(record, "eta", glm::vec3(input.ior), where + " (KHR_materials_ior)");
+    setParam(record, "tint", input.baseColor, where + " (base colour as glass tint)");
+    return record;
+  }
+  gpu::MaterialRecord record = defaultRecord(gpu::kModelCookTorrance);
+  // glTF's specular reflectance at normal incidence: F0 of the ior for dielectrics, the base colour for metals.
+  const glm::vec3 f0 = glm::mix(glm::vec3(schlickF0(input.ior)), input.baseColor, input.metallic);
+  const float f0Max = std::max({f0.r, f0.g, f0.b});
+  // One scalar eta carries the largest channel; rho_s scales the others down. F0 above F0(10) = 0.67 cannot
+  // be reached: such metals keep their hue but lose up to a third of their reflectance.
+  const float eta = std::clamp(etaFromF0(std::min(f0Max, schlickF0(kMaxEta))), 1.0f, kMaxEta);
+  const float f0Eta = schlickF0(eta);
+  const glm::vec3 rhoS = f0Eta > 0.0f ? glm::clamp(f0 / f0Eta, 0.0f, 1.0f) : glm::vec3(0.0f);
+  const float m = std::clamp(input.roughness * input.roughness, 0.001f, 1.0f);
+  const std::string mapped = where + " (metallic-roughness mapping)";
+  setParam(record, "rho_d", input.baseColor * (1.0f - input.metallic), mapped);
+  setParam(record, "rho_s", rhoS, mapped);
+  setParam(record, "m", glm::vec3(m), mapped);
+  setParam(record, "eta", glm::vec3(eta), mapped);
+  return record;
+}
+
+void applyRaylabMaterial(gpu::MaterialRecord& record, const json& raylab, const std::string& where) {
+  const std::string extras = where + ": extras.raylab";
+  if (!raylab.is_object()) throw Error(extras + ": expected an object, found " + found(raylab));
+  if (const auto model = raylab.find("model"); model != raylab.end()) {
+    const ModelInfo* info = model->is_string() ? findModel(model->get<std::string>()) : nullptr;
+    if (info == nullptr) {
+      std::string known;
+      for (const ModelInfo& m : allModels()) known += (known.empty() ? "" : ", ") + std::string(m.name);
+      throw Error(extras + ".model: " + found(*model) + " is not a model (the models are " + known + ")");
+    }
+    record = defaultRecord(info->id);
+  }
+  const ModelInfo& model = modelInfo(record.model);
+  for (const auto& [key, value] : raylab.items()) {
+    if (key == "model") continue;
+    const ParamInfo* param = findParam(model, key);
+    if (param == nullptr) {
+      setParam(record, key, glm::vec3(0.0f), extras);  // throws, listing the model's parameters
+      continue;
+    }
+    glm::vec3 v(0.0f);
+    if (param->rgb) {
+      const bool rgb = value.is_array() && value.size() == 3 && value[0].is_number() && value[1].is_number() &&
+                       value[2].is_number();
+      if (!rgb) throw Error(extras + "." + key + ": expected [r, g, b], found " + found(value));
+      v = glm::vec3(value[0].get<float>(), value[1].get<float>(), value[2].get<float>());
+    } else {
+      if (!value.is_number()) throw Error(extras + "." + key + ": expected a number, found " + found(value));
+      v = glm::vec3(value.get<float>());
+    }
+    setParam(record, key, v, extras);
+  }
+}
+
+void convertMaterials(Document& document, Scene& scene) {
+  TextureConverter textures(document, scene);
+  const json* materialsJson = findPath(document.json, {"materials"});
+  for (std::size_t i = 0; i < document.model.materials.size(); ++i) {
+    const tinygltf::Material& material = document.model.materials[i];
+    const json& materialJson = (*materialsJson)[i];
+    const std::string where = document.label + ": " + describe("material", int(i), material.name);
+    const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+
+    MetallicRoughness input;
+    for (int c = 0; c < 3; ++c) {
+      input.baseColor[c] = checkedFactor(pbr.baseColorFactor[std::size_t(c)], 0.0, 1.0, where,
+                                         "baseColorFactor[" + std::to_string(c) + "]");
+    }
+    input.metallic = checkedFactor(pbr.metallicFactor, 0.0, 1.0, where, "metallicFactor");
+    input.roughness = checkedFactor(pbr.roughnessFactor, 0.0, 1.0, where, "roughnessFactor");
+    if (const json* ior = findPath(materialJson, {"extensions", "KHR_materials_ior", "ior"})) {
+      input.ior = checkedFactor(ior->get<double>(), 1.0, kMaxEta, where, "KHR_materials_ior.ior");
+    }
+    if (const json* transmission =
+            findPath(materialJson, {"extensions", "KHR_materials_transmission", "transmissionFactor"})) {
+      input.transmission =
+          checkedFactor(transmission->get<double>(), 0.0, 1.0, where, "KHR_materials_transmission.transmissionFactor");
+      if (input.transmission > 0.0f && input.transmission < 1.0f) {
+        document.ignore("transmission factors between 0 and 1 (such materials are opaque)");
+      }
+    }
+    if (findPath(materialJson, {"extensions", "KHR_materials_transmission", "transmissionTexture"})) {
+      document.ignore("textures other than base colour");
+    }
+
+    gpu::MaterialRecord record = mapMetallicRoughness(input, where);
+    if (const json* raylab = findPath(materialJson, {"extras", "raylab"})) applyRaylabMaterial(record, *raylab, where);
+
+    if (pbr.baseColorTexture.index >= 0) {
+      if (pbr.baseColorTexture.texCoord != 0) {
+        document.ignore("base-colour textures on TEXCOORD_1 and above");
+      } else if (hasRhoD(record.model)) {
+        record.baseColorTexture = textures.convert(pbr.baseColorTexture.index, describe("material", int(i), material.name));
+      }
+    }
+    if (pbr.metallicRoughnessTexture.index >= 0 || material.normalTexture.index >= 0 ||
+        material.occlusionTexture.index >= 0 || material.emissiveTexture.index >= 0) {
+      document.ignore("textures other than base colour");
+    }
+    const bool emissive = material.emissiveFactor.size() == 3 &&
+                          (material.emissiveFactor[0] > 0.0 || material.emissiveFactor[1] > 0.0 ||
+                           material.emissiveFactor[2] > 0.0);
+    if (emissive) document.ignore("emission");
+    if (!material.alphaMode.empty() && material.alphaMode != "OPAQUE") {
+      document.ignore("alpha modes MASK and BLEND (surfaces are opaque)");
+    }
+    scene.materials.push_back({material.name.empty() ? "material " + std::to_string(i) : material.name, record});
+  }
+}
+
+std::uint32_t DefaultMaterial::index(Scene& scene) {
+  if (index_ < 0) {
+    index_ = static_cast<std::int64_t>(scene.materials.size());
+    scene.materials.push_back({"default", lambertMaterial(kDefaultGrey)});
+  }
+  return static_cast<std::uint32_t>(index_);
+}
+
+}  // namespace raylab::gltf

@@ -1,0 +1,50 @@
+// Internal to the glTF loader: glTF materials into MaterialRecords, either chosen explicitly in
+// extras.raylab or mapped from the core metallic-roughness model (docs/scenes.md), and their base-colour
+// textures into RGBA8 images.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "scene/gltf_document.h"
+#include "scene/scene.h"
+
+namespace raylab::gltf {
+
+// The inputs of the metallic-roughness mapping, as the core material and its KHR_materials_ior and
+// KHR_materials_transmission extensions give them (glTF's defaults).
+struct MetallicRoughness {
+  glm::vec3 baseColor{1.0f};
+  float metallic = 1.0f;
+  float roughness = 1.0f;
+  float ior = 1.5f;
+  float transmission = 0.0f;
+};
+
+// glass (eta = ior, tint = base colour) when transmission is 1, else cooktorrance with
+// rho_d = base colour (1 - metallic), m = roughness², and eta and rho_s chosen so that rho_s F0(eta) is the
+// glTF F0 = mix(F0(ior), base colour, metallic) wherever eta <= 10 allows. `where` starts error messages.
+gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where);
+
+// Applies an extras.raylab material object to `record`: "model" (optional) restarts from that model's
+// defaults, every other key must be a parameter of the model or "delta", RGB values written [r, g, b].
+// Throws Error starting with `where` for unknown models or keys, wrong JSON types and out-of-range values.
+void applyRaylabMaterial(gpu::MaterialRecord& record, const nlohmann::json& raylab, const std::string& where);
+
+// Fills scene.materials so that scene material i is glTF material i, and scene.textures with the base-colour
+// textures they use.
+void convertMaterials(Document& document, Scene& scene);
+
+// The material of primitives and spheres without one, appended to scene.materials on first use.
+class DefaultMaterial {
+ public:
+  std::uint32_t index(Scene& scene);
+
+ private:
+  std::int64_t index_ = -1;
+};
+
+}  // namespace raylab::gltf
