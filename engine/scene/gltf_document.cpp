@@ -14,6 +14,8 @@ constexpr std::uint32_t kGlbMagic = 0x46546C67;      // "glTF"
 constexpr std::uint32_t kGlbJsonChunk = 0x4E4F534A;  // "JSON"
 constexpr std::size_t kGlbHeaderSize = 12;
 constexpr std::size_t kGlbChunkHeaderSize = 8;
+// The extensions raylab reads; a file that requires any other cannot be shown faithfully.
+const char* const kSupportedExtensions[] = {"KHR_lights_punctual", "KHR_materials_ior", "KHR_materials_transmission"};
 constexpr std::size_t kMaxFileBytes = std::size_t(1) << 31;  // tinygltf takes sizes as unsigned int
 
 std::uint32_t readU32(const std::string& bytes, std::size_t offset) {
@@ -54,6 +56,30 @@ nlohmann::json parseJson(const std::string& text, const std::string& label) {
     const std::size_t bracket = what.find("] ");
     if (what.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) what = what.substr(bracket + 2);
     throw Error(label + ": not valid JSON: " + what);
+  }
+}
+
+bool isSupported(const std::string& extension) {
+  for (const char* supported : kSupportedExtensions) {
+    if (extension == supported) return true;
+  }
+  return false;
+}
+
+// Before tinygltf, which would otherwise fail on what a required extension changes (KHR_draco_mesh_compression
+// leaves accessors without buffer views) with a message that does not say why.
+void checkExtensions(Document& document) {
+  if (const auto required = document.json.find("extensionsRequired"); required != document.json.end()) {
+    for (const nlohmann::json& name : *required) {
+      if (!isSupported(name.get<std::string>())) {
+        document.fail("requires the extension " + name.get<std::string>() + ", which raylab does not support");
+      }
+    }
+  }
+  if (const auto used = document.json.find("extensionsUsed"); used != document.json.end()) {
+    for (const nlohmann::json& name : *used) {
+      if (!isSupported(name.get<std::string>())) document.ignore("the extension " + name.get<std::string>());
+    }
   }
 }
 
@@ -98,6 +124,7 @@ Document parseDocument(const std::string& bytes, const std::string& baseDirector
   document.label = label;
   document.json = parseJson(binary ? glbJson(bytes, label) : bytes, label);
   checkSchema(document.json, label);
+  checkExtensions(document);
 
   tinygltf::TinyGLTF loader;
   std::string errors;

@@ -25,9 +25,6 @@ namespace {
 using gltf::Document;
 using nlohmann::json;
 
-// The extensions raylab reads; a file that requires any other cannot be shown faithfully.
-const std::vector<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_ior",
-                                                       "KHR_materials_transmission"};
 constexpr float kUniformScaleTolerance = 1e-4f;  // relative, for the scale of a raylab sphere's node
 // Defaults for a file without a camera (docs/scenes.md): the bounds seen from +Z, raised 20 degrees.
 constexpr float kDefaultYfov = glm::radians(40.0f);
@@ -91,12 +88,14 @@ class SceneBuilder {
         onPath_(document.model.nodes.size(), false) {}
 
   void build() {
-    checkExtensions();
     gltf::convertMaterials(document_, scene_);
     const std::vector<int> roots = sceneRoots();
     for (int root : roots) visit(root, glm::mat4(1.0f), "scene");
     if (scene_.instances.empty() && scene_.spheres.empty()) {
-      document_.fail("the scene has nothing to render (no triangle meshes or raylab spheres)");
+      std::string skipped;
+      for (const std::string& feature : document_.ignored) skipped += (skipped.empty() ? "" : "; ") + feature;
+      document_.fail("the scene has nothing to render (no triangle meshes or raylab spheres" +
+                     (skipped.empty() ? std::string() : "; ignored: " + skipped) + ")");
     }
     if (!model_.animations.empty()) document_.ignore("animations");
     chooseCamera();
@@ -105,18 +104,6 @@ class SceneBuilder {
   }
 
  private:
-  void checkExtensions() {
-    const auto supported = [](const std::string& name) {
-      return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), name) != kSupportedExtensions.end();
-    };
-    for (const std::string& name : model_.extensionsRequired) {
-      if (!supported(name)) document_.fail("requires the extension " + name + ", which raylab does not support");
-    }
-    for (const std::string& name : model_.extensionsUsed) {
-      if (!supported(name)) document_.ignore("the extension " + name);
-    }
-  }
-
   // The nodes of the default scene (the first when the file names none); a file without scenes shows every
   // node that is nobody's child.
   std::vector<int> sceneRoots() {
