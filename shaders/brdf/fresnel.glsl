@@ -26,9 +26,11 @@ vec3 F_Schlick(vec3 F0, float oneMinusCos) { return F0 + (1.0 - F0) * pow5(oneMi
 // of exact differences). r_p's bracket vanishes at Brewster's angle, a true zero.
 float F_DielectricExact(float cosI, float etaI, float etaT) {
   const float d = (etaT - etaI) * (etaT + etaI);
+  // Equal indices are no interface, even at cos_i = 0 where Snell's sin^2 theta_t reaches 1 (and the
+  // amplitudes below would be 0/0).
+  if (d == 0.0) return 0.0;
   const float A2 = d + etaI * etaI * cosI * cosI;
   if (A2 <= 0.0) return 1.0;  // total internal reflection: sin^2 theta_t >= 1
-  if (d == 0.0) return 0.0;   // eta = 1: no interface (and 0/0 at grazing otherwise)
   const float A = sqrt(A2);
   const float s = etaI * cosI + A;                 // > 0: A > 0 here
   const float p = etaT * etaT * cosI + etaI * A;   // > 0: A > 0 here

@@ -39,12 +39,21 @@ GlassEvent glassEvent(float eta, vec3 wi, vec3 n) {
   const float F0 = F0FromEta(eta);
 
   GlassEvent event;
-  event.tir = A2 <= 0.0;
   event.reflected = 2.0 * cosI * nn - wi;
-  event.fresnelExact = F_DielectricExact(cosI, etaI, etaT);
   // 1 - cos = sin^2 / (1 + cos), which does not cancel near normal incidence.
   const float oneMinusCosI = sin2I / (1.0 + cosI);
   event.fresnelSchlickNaive = F_Schlick(F0, oneMinusCosI);
+  if (eta == 1.0) {
+    // No interface: F = 0 and the ray goes straight on, also at cos_i = 0, where Snell's sin^2 theta_t
+    // reaches 1 and would otherwise call the grazing ray totally reflected (docs/brdfs.md, "Glass").
+    event.tir = false;
+    event.fresnelExact = 0.0;
+    event.fresnelSchlick = F_Schlick(F0, oneMinusCosI);  // Schlick's (1 - cos)^5 does not vanish at eta = 1
+    event.refracted = -wi;
+    return event;
+  }
+  event.tir = A2 <= 0.0;
+  event.fresnelExact = F_DielectricExact(cosI, etaI, etaT);
   if (event.tir) {
     event.fresnelSchlick = 1.0;
     event.refracted = vec3(0.0);
