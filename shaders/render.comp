@@ -20,11 +20,41 @@ layout(set = 0, binding = kBindingRayStats, scalar) buffer Stats { RayStats stat
 #include "kernel/closest_hit.glsl"
 #include "kernel/miss.glsl"
 
+// Continuations waiting their turn after glass split a path. Deeper splits than this are resolved by
+// choosing one branch at random in proportion to its weight (unbiased, a little noise).
+const uint kMaxPending = 4u;
+struct Pending {
+  vec3 origin;
+  vec3 direction;
+  vec3 throughput;
+  uint depth;
+};
+
 // The primary ray through a point of the pixel; `offset` in [0, 1)^2 within the pixel.
 vec3 primaryDirection(uvec2 pixel, vec2 offset) {
   const vec2 ndc = vec2(2.0 * (float(pixel.x) + offset.x) / float(params.width) - 1.0,
                         1.0 - 2.0 * (float(pixel.y) + offset.y) / float(params.height));
   return normalize(params.cameraForward + ndc.x * params.cameraRight + ndc.y * params.cameraUp);
+}
+
+// Keeps the split continuation of `p`: queued if there is room, else one of the two branches survives.
+void keepSplit(inout Payload p, inout Pending pending[kMaxPending], inout uint pendingCount) {
+  p.split = false;
+  if (pendingCount < kMaxPending) {
+    pending[pendingCount] = Pending(p.splitOrigin, p.splitDirection, p.splitThroughput, p.depth);
+    pendingCount += 1u;
+    return;
+  }
+  const float keep = maxComponent(p.throughput);
+  const float other = maxComponent(p.splitThroughput);
+  const float pickOther = other / (keep + other);
+  if (rngNext4(p.rng).x < pickOther) {
+    p.origin = p.splitOrigin;
+    p.direction = p.splitDirection;
+    p.throughput = p.splitThroughput / pickOther;
+  } else {
+    p.throughput /= 1.0 - pickOther;
+  }
 }
 
 void main() {
@@ -42,14 +72,30 @@ void main() {
     p.throughput = vec3(1.0);
     p.depth = 0u;
     p.done = false;
+    p.split = false;
     p.shadowRays = 0u;
-    // closestHit bounds the loop: it stops the path at maxDepth.
-    while (!p.done) {
+    Pending pending[kMaxPending];
+    uint pendingCount = 0u;
+    uint segments = 0u;
+
+    // closestHit bounds every path by maxDepth, and each split happens at a bounce: the loop ends.
+    while (true) {
       Hit hit;
+      segments += 1u;
       if (traceClosest(p.origin, p.direction, 0.0, kRayTMax, hit)) closestHit(hit, p);
       else miss(p);
+      if (p.split) keepSplit(p, pending, pendingCount);
+      if (p.done) {
+        if (pendingCount == 0u) break;
+        pendingCount -= 1u;
+        p.origin = pending[pendingCount].origin;
+        p.direction = pending[pendingCount].direction;
+        p.throughput = pending[pendingCount].throughput;
+        p.depth = pending[pendingCount].depth;
+        p.done = false;
+      }
     }
-    rays = uvec3(1u, p.shadowRays, p.depth);
+    rays = uvec3(1u, p.shadowRays, segments - 1u);
     accumulation[pixel.y * params.width + pixel.x] += vec4(p.radiance, 1.0);
   }
 

@@ -1,14 +1,17 @@
 // closestHit of the direct integrator (equation 2 of the original slides, ../shared/BRDF_SPEC.md):
 //   L_o = delta L_i(x, w_r) + (1 - delta) sum_k f_r(w_k, w_o) E_k,   E_k = V_k I_k cos(theta_k) / r_k^2.
-// The delta term continues the path along the mirror direction; the raygen loops, nothing recurses.
-// Needs `params` (FrameParams) and the scene bindings.
+// The delta term continues the path along the mirror direction. Glass splits into Fresnel-weighted
+// reflection and refraction (exact Fresnel, total internal reflection, optional tint). The raygen loops over
+// the continuations; nothing recurses. Needs `params` (FrameParams) and the scene bindings.
 #ifndef RAYLAB_KERNEL_CLOSEST_HIT_GLSL
 #define RAYLAB_KERNEL_CLOSEST_HIT_GLSL
 
 #include "brdf/bsdf.glsl"
 #include "common/ray_offset.glsl"
+#include "common/specialization.glsl"
 #include "kernel/lights.glsl"
 #include "kernel/surface.glsl"
+#include "kernel/textures.glsl"
 #include "kernel/trace.glsl"
 
 // sum_k f_r(w_k, w_o) E_k over every light, with a shadow ray each. ng faces the viewer's side.
@@ -22,18 +25,82 @@ vec3 directLighting(vec3 position, vec3 ng, ShadingFrame frame, vec3 woLocal, Ma
     if (dot(light.wi, ng) <= 0.0) continue;
     const vec3 wiLocal = toLocal(frame, light.wi);
     const vec3 contribution = bsdfEval(material, wiLocal, woLocal) * light.irradiance * wiLocal.z;
-    // Only unoccluded light that would contribute is worth a shadow ray.
-    if (!(max(contribution.r, max(contribution.g, contribution.b)) > 0.0)) continue;
+    // Only light that would contribute is worth a shadow ray.
+    if (!(maxComponent(contribution) > 0.0)) continue;
     p.shadowRays += 1u;
     if (traceVisibility(shadowOrigin, light.wi, light.distance)) sum += contribution;
   }
   return sum;
 }
 
+// Sets the payload's next segment; false when the path should stop there.
+bool continuePath(inout Payload p, vec3 origin, vec3 direction, vec3 throughput) {
+  if (maxComponent(throughput) < params.throughputCutoff) return false;
+  p.origin = origin;
+  p.direction = direction;
+  p.throughput = throughput;
+  return true;
+}
+
+// Glass: delta L_i(w_r) + (1 - delta) [F L_i(w_r) + (1 - F) tint L_i(w_t)], both continuations kept.
+void glassHit(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
+  const GlassEvent event = glassEvent(material.eta, wo, s.shadingNormal);
+  const float delta = material.delta;
+  const bool entering = dot(wo, s.geometricNormal) > 0.0;
+  const vec3 weightReflect = p.throughput * (delta + (1.0 - delta) * event.fresnelExact);
+  // The tint colours light once, as it enters: a closed object then tints what is seen through it once.
+  const vec3 weightRefract =
+      event.tir ? vec3(0.0) : p.throughput * (1.0 - delta) * (1.0 - event.fresnelExact) * (entering ? material.tint : vec3(1.0));
+
+  // Each continuation leaves from the side of the geometric surface it travels into.
+  const vec3 ngOutside = s.geometricNormal;
+  const bool reflectOk = dot(event.reflected, entering ? ngOutside : -ngOutside) > 0.0;
+  const bool refractOk = !event.tir && dot(event.refracted, entering ? -ngOutside : ngOutside) > 0.0;
+  const vec3 reflectOrigin = offsetRayOrigin(s.position, entering ? ngOutside : -ngOutside);
+  const vec3 refractOrigin = offsetRayOrigin(s.position, entering ? -ngOutside : ngOutside);
+
+  // The heavier branch continues now; the other waits in the raygen's queue.
+  const bool reflectFirst = maxComponent(weightReflect) >= maxComponent(weightRefract);
+  p.done = true;
+  p.split = false;
+  const vec3 origin1 = reflectFirst ? reflectOrigin : refractOrigin;
+  const vec3 direction1 = reflectFirst ? event.reflected : event.refracted;
+  const vec3 weight1 = reflectFirst ? weightReflect : weightRefract;
+  const bool ok1 = reflectFirst ? reflectOk : refractOk;
+  const vec3 origin2 = reflectFirst ? refractOrigin : reflectOrigin;
+  const vec3 direction2 = reflectFirst ? event.refracted : event.reflected;
+  const vec3 weight2 = reflectFirst ? weightRefract : weightReflect;
+  const bool ok2 = reflectFirst ? refractOk : reflectOk;
+  if (ok1 && continuePath(p, origin1, direction1, weight1)) p.done = false;
+  if (ok2 && maxComponent(weight2) >= params.throughputCutoff) {
+    if (p.done) {
+      p.done = !continuePath(p, origin2, direction2, weight2);
+    } else {
+      p.split = true;
+      p.splitOrigin = origin2;
+      p.splitDirection = direction2;
+      p.splitThroughput = weight2;
+    }
+  }
+}
+
 void closestHit(Hit hit, inout Payload p) {
   const Surface s = surfaceAt(hit);
-  const MaterialRecord material = materials[s.material];
+  MaterialRecord material = materials[s.material];
   const vec3 wo = -p.direction;
+  p.done = true;
+  p.split = false;
+
+  if (featureEnabled(kFeatureGlass) && material.model == kModelGlass) {
+    if (p.depth < params.maxDepth) {
+      p.depth += 1u;
+      glassHit(s, material, wo, p);
+    }
+    return;
+  }
+  if (featureEnabled(kFeatureTextures) && material.baseColorTexture >= 0) {
+    material.rhoD *= sampleTexture(uint(material.baseColorTexture), s.uv).rgb;
+  }
 
   // The BRDFs are one-sided: shade the side the ray arrived on.
   const vec3 ng = s.frontFace ? s.geometricNormal : -s.geometricNormal;
@@ -42,18 +109,13 @@ void closestHit(Hit hit, inout Payload p) {
   if (dot(ns, wo) <= 0.0) ns = ng;
   const ShadingFrame frame = makeShadingFrame(ns, s.tangent);
 
-  const float delta = material.delta;
+  const float delta = featureEnabled(kFeatureMirror) ? material.delta : 0.0;
   if (delta < 1.0) {
     p.radiance += p.throughput * (1.0 - delta) * directLighting(s.position, ng, frame, toLocal(frame, wo), material, p);
   }
-
-  p.done = true;
   if (delta > 0.0 && p.depth < params.maxDepth) {
     const vec3 mirror = reflect(p.direction, ns);
-    p.throughput *= delta;
-    if (dot(mirror, ng) > 0.0 && max(p.throughput.r, max(p.throughput.g, p.throughput.b)) >= params.throughputCutoff) {
-      p.origin = offsetRayOrigin(s.position, ng);
-      p.direction = mirror;
+    if (dot(mirror, ng) > 0.0 && continuePath(p, offsetRayOrigin(s.position, ng), mirror, p.throughput * delta)) {
       p.depth += 1u;
       p.done = false;
     }
