@@ -1,13 +1,13 @@
 #include "scene/load_scene.h"
 
 #include "scene/default_scene.h"
-#include "util/error.h"
+#include "scene/gltf_loader.h"
 
 namespace raylab {
 
 Scene loadScene(const SceneRequest& request) {
   if (request.path.empty()) return makeDefaultScene();
-  throw Error(request.path + ": scene files are not supported by this build yet; run without SCENE for the built-in scene");
+  return loadGltfFile(request.path, GltfOptions{request.camera});
 }
 
 }  // namespace raylab

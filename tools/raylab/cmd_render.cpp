@@ -22,6 +22,7 @@ namespace {
 
 struct RenderOptions {
   std::string scene;
+  std::string camera;
   RenderSettings settings;
   std::uint32_t spp = 16;
   std::string exrPath;
@@ -55,6 +56,7 @@ int runRender(int argc, char** argv) {
                  "OpenEXR image and a tone-mapped sRGB PNG. The same command gives a bit-identical image on\n"
                  "the same device. Without --out and --png it writes out/<scene>.exr and out/<scene>.png.");
   args.positional("SCENE", &o.scene, "a .gltf or .glb file (default: the built-in scene)");
+  args.option("--camera", &o.camera, "NAME", "the glTF camera (or its node) to render from (default: the first)");
   args.option("--width", &o.settings.width, "image width in pixels", 1, 16384);
   args.option("--height", &o.settings.height, "image height in pixels", 1, 16384);
   args.option("--spp", &o.spp, "samples per pixel", 1, 1u << 20);
@@ -75,7 +77,7 @@ int runRender(int argc, char** argv) {
   if (!o.exrPath.empty()) requireExtension("--out", o.exrPath, ".exr");
   if (!o.pngPath.empty()) requireExtension("--png", o.pngPath, ".png");
 
-  Scene scene = loadScene({o.scene, ""});
+  Scene scene = loadScene({o.scene, o.camera});
   if (o.exrPath.empty() && o.pngPath.empty()) {
     o.exrPath = "out/" + scene.name + ".exr";
     o.pngPath = "out/" + scene.name + ".png";
