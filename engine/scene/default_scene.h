@@ -1,11 +1,14 @@
-// The scene `raylab render` draws when no file is given: it needs no asset on disk.
+// The scene `raylab render` and `raylab view` draw when no file is given: assets/scenes/showcase.gltf, every
+// BRDF model side by side, compiled into the binary so that it needs no file on disk.
 #pragma once
+
+#include <string>
 
 #include "scene/scene.h"
 
 namespace raylab {
 
-// A ground plane, a row of spheres (one a mirror), two point lights and a camera.
-Scene makeDefaultScene();
+// `camera`: a camera name of the showcase file; empty for its first camera.
+Scene makeDefaultScene(const std::string& camera = "");
 
 }  // namespace raylab

@@ -6,7 +6,7 @@
 namespace raylab {
 
 Scene loadScene(const SceneRequest& request) {
-  if (request.path.empty()) return makeDefaultScene();
+  if (request.path.empty()) return makeDefaultScene(request.camera);
   return loadGltfFile(request.path, GltfOptions{request.camera});
 }
 
