@@ -17,6 +17,10 @@ struct Chi2Options {
   int phiCells = 20;         // cells in phi over [0, 2 pi)
   double significance = 0.01;
   int testCount = 1;         // tests in the whole suite, for the Šidák correction
+  double minExpected = 5.0;  // cells expecting fewer samples are pooled
+  // Absolute error allowed in each cell's expected count (probability times attempts); the adaptive
+  // quadrature refines until it is met, so it must stay well below the statistical noise sqrt(expected).
+  double countTolerance = 1e-3;
 };
 
 struct Chi2Result {
@@ -31,11 +35,20 @@ struct Chi2Result {
 
 // `directions`: the unit directions of the valid samples (failed samples are left out), `attempts`: how many
 // samples were drawn in all, valid or not. `pdf`: density per unit solid angle of one attempt.
+// The failed attempts form one more cell, expecting attempts * (1 - integral of pdf), so that a sampler that
+// fails too often (or a pdf that misses mass) is caught too. A sample in a cell where the pdf integrates to
+// exactly 0 fails the test outright. Each cell's integral of the pdf is computed by nested adaptive Simpson
+// quadrature in (cos theta, phi) with at least 4 x 4 panels per cell.
 Chi2Result chi2Test(std::span<const glm::dvec3> directions, std::size_t attempts,
                     const std::function<double(const glm::dvec3&)>& pdf, const Chi2Options& options);
 
-// The regularised upper incomplete gamma function Q(a, x): the p-value of a χ² statistic x with 2a degrees
-// of freedom is Q(dof/2, x/2).
+// The regularised upper incomplete gamma function Q(a, x) = Γ(a, x) / Γ(a), for a > 0, x >= 0: the p-value of a
+// χ² statistic x with k degrees of freedom is Q(k/2, x/2). Series for x < a + 1, continued fraction beyond
+// (Press et al., "Numerical Recipes", 3rd ed., 6.2), with relative accuracy near 1e-14 in both tails.
 double upperIncompleteGammaQ(double a, double x);
+
+// Šidák's correction: the per-test significance that keeps the chance of any false alarm among `testCount`
+// independent tests at `significance`: 1 - (1 - significance)^(1/testCount).
+double sidakSignificance(double significance, int testCount);
 
 }  // namespace raylab::test

@@ -1,0 +1,120 @@
+#include "reference/albedo.h"
+
+#include <cmath>
+#include <limits>
+
+#include "reference/cubature.h"
+#include "reference/models.h"
+#include "reference/terms.h"
+
+namespace raylab::reference {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The widths of the specular lobe along the two axes of its gnomonic coordinates, in units of the slope
+// (tan of the angle from the lobe's centre), chosen so that the lobe is about exp(-radius^2) in them.
+dvec2 lobeWidths(const Material& material) {
+  switch (material.model) {
+    case gpu::kModelPhong:  // c^s ~ exp(-s beta^2 / 2) around R, in wi space
+    case gpu::kModelBlinnPhong: return dvec2(std::sqrt(2.0 / material.s));  // (N.H)^s, likewise in H
+    case gpu::kModelCookTorrance: return dvec2(material.m);                  // exp(-tan^2 / m^2)
+    case gpu::kModelWard:
+    case gpu::kModelWardDuer:
+    case gpu::kModelWardGmd: return {material.alphaX, material.alphaY};     // exp(-(p/ax)^2 - (q/ay)^2)
+    case gpu::kModelAshikhminShirley:  // (N.H)^k ~ exp(-(nu p^2 + nv q^2) / 2)
+      return {std::sqrt(2.0 / material.nu), std::sqrt(2.0 / material.nv)};
+    default: return dvec2(1.0);
+  }
+}
+
+// The largest radius rho >= 0 along the ray (p, q) = rho (a, b) of the gnomonic coordinates for which wi
+// stays above the horizon; infinity when it never meets it.
+double phongHorizonRadius(const Frame& around, double a, double b) {
+  // wi ~ R + p t + q b: wi.z = R.z + rho (a t.z + b b.z), linear in rho.
+  const double slope = a * around.t.z + b * around.b.z;
+  return slope >= 0.0 ? kInfinity : around.n.z / -slope;
+}
+
+double halfVectorHorizonRadius(const dvec3& wo, double a, double b) {
+  // H ~ (p, q, 1), wi = 2 (wo.H) H - wo: wi.z > 0 iff wo.z + 2 rho K - wo.z rho^2 L > 0 with
+  // K = wo.x a + wo.y b, L = a^2 + b^2: one positive root, written without cancellation for either sign of K.
+  const double K = wo.x * a + wo.y * b;
+  const double L = a * a + b * b;
+  const double root = std::sqrt(K * K + wo.z * wo.z * L);
+  return K >= 0.0 ? (K + root) / (wo.z * L) : wo.z / (root - K);
+}
+
+// The integrand of the specular term in (v, psi): the radius is rho = tan(v tau*(psi)), with tau* = atan of
+// the horizon radius, so that v in [0, 1] spans exactly the directions above the horizon.
+dvec3 specularIntegrand(const Material& material, const dvec3& wo, const Frame& phongFrame, const dvec2& width,
+                        double v, double psi) {
+  const double a = width.x * std::cos(psi);
+  const double b = width.y * std::sin(psi);
+  const bool phong = material.model == gpu::kModelPhong;
+  const double horizon = phong ? phongHorizonRadius(phongFrame, a, b) : halfVectorHorizonRadius(wo, a, b);
+  const double tauMax = std::atan(horizon);  // pi/2 for an infinite radius
+  const double rho = std::tan(v * tauMax);
+  const double p = rho * a;
+  const double q = rho * b;
+  const double secant2 = 1.0 + p * p + q * q;
+  // dp dq = wx wy rho drho dpsi, drho = (1 + rho^2) tau* dv; gnomonic: dw = dp dq / secant^3.
+  const double jacobian = width.x * width.y * rho * (1.0 + rho * rho) * tauMax / (secant2 * std::sqrt(secant2));
+  dvec3 wi;
+  double extra = 1.0;
+  if (phong) {
+    wi = glm::normalize(phongFrame.n + p * phongFrame.t + q * phongFrame.b);
+  } else {
+    const dvec3 H = dvec3(p, q, 1.0) / std::sqrt(secant2);
+    const double VoH = glm::dot(wo, H);
+    wi = 2.0 * VoH * H - wo;
+    extra = 4.0 * VoH;  // dwi = 4 (wo.H) dH
+  }
+  if (!(wi.z > 0.0)) return dvec3(0.0);  // rounding at the horizon edge
+  return evalLobes(material, wi, wo).specular * (wi.z * extra * jacobian);
+}
+
+}  // namespace
+
+dvec3 directionFromAngles(double theta, double phi) {
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+Albedo directionalAlbedo(const Material& material, const dvec3& wo, const AlbedoOptions& options) {
+  Albedo albedo;
+  if (!aboveHorizon(wo, wo) || material.model == gpu::kModelGlass) return albedo;
+  CubatureOptions cubature;
+  cubature.relTolerance = options.relTolerance;
+  cubature.maxRegions = options.maxRegions;
+  // A floor on the error target: below 1e-13 the diffuse or specular term is negligible next to 1.
+  cubature.absTolerance = 1e-13;
+
+  // Diffuse: over (cos theta_i, phi_i), dw cos_i = cos_i dcos dphi.
+  const CubatureResult diffuse = integrate2d(
+      [&](double c, double phi) {
+        const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
+        const dvec3 wi(s * std::cos(phi), s * std::sin(phi), c);
+        return evalLobes(material, wi, wo).diffuse * c;
+      },
+      dvec2(0.0, 0.0), dvec2(1.0, 2.0 * kPi), cubature);
+
+  CubatureResult specular;
+  specular.converged = true;
+  if (material.model != gpu::kModelLambert) {
+    const Frame phongFrame = makeFrame(dvec3(-wo.x, -wo.y, wo.z), dvec3(0.0));
+    const dvec2 width = lobeWidths(material);
+    specular = integrate2d(
+        [&](double v, double psi) { return specularIntegrand(material, wo, phongFrame, width, v, psi); },
+        dvec2(0.0, 0.0), dvec2(1.0, 2.0 * kPi), cubature);
+  }
+  albedo.diffuse = diffuse.value;
+  albedo.specular = specular.value;
+  albedo.value = diffuse.value + specular.value;
+  albedo.errorEstimate = diffuse.errorEstimate + specular.errorEstimate;
+  albedo.evaluations = diffuse.evaluations + specular.evaluations;
+  albedo.converged = diffuse.converged && specular.converged;
+  return albedo;
+}
+
+}  // namespace raylab::reference
