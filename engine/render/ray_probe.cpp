@@ -15,11 +15,12 @@ namespace {
 
 constexpr std::uint32_t kWorkgroupSize = 64;  // trace_rays.comp: local_size_x
 
-void recordTrace(VkCommandBuffer cmd, const RayProbe& probe, std::uint32_t rayCount) {
+void recordTrace(VkCommandBuffer cmd, const RayProbe& probe, std::uint32_t rayCount, std::uint32_t mode) {
+  const gpu::ProbeParams params{rayCount, mode};
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, probe.pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, probe.pipelineLayout, 0, 1, &probe.descriptors.set, 0,
                           nullptr);
-  vkCmdPushConstants(cmd, probe.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof rayCount, &rayCount);
+  vkCmdPushConstants(cmd, probe.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params, &params);
   vkCmdDispatch(cmd, (rayCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
   computeBarrier(cmd);
 }
@@ -33,7 +34,7 @@ RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uin
   bindings.push_back({gpu::kBindingProbeRays, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   bindings.push_back({gpu::kBindingProbeHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   probe.setLayout = createDescriptorSetLayout(device, bindings, "probe set layout");
-  probe.pipelineLayout = createPipelineLayout(device, probe.setLayout, sizeof(std::uint32_t), "probe pipeline layout");
+  probe.pipelineLayout = createPipelineLayout(device, probe.setLayout, sizeof(gpu::ProbeParams), "probe pipeline layout");
   probe.pipeline = createComputePipeline(device, probe.pipelineLayout, "trace_rays.comp");
   probe.rays = createBuffer(device, VkDeviceSize(capacity) * sizeof(gpu::ProbeRay),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kDevice,
@@ -58,23 +59,25 @@ void destroyRayProbe(const Device& device, RayProbe& probe) {
   probe = {};
 }
 
-std::vector<gpu::ProbeHit> traceRays(const Device& device, RayProbe& probe, std::span<const gpu::ProbeRay> rays) {
+std::vector<gpu::ProbeHit> traceRays(const Device& device, RayProbe& probe, std::span<const gpu::ProbeRay> rays,
+                                     std::uint32_t mode) {
   if (rays.size() > probe.capacity) {
     throw Error("traceRays: " + std::to_string(rays.size()) + " rays exceed the probe's capacity of " +
                 std::to_string(probe.capacity));
   }
   const auto count = static_cast<std::uint32_t>(rays.size());
   uploadBuffer(device, probe.rays, rays.data(), rays.size_bytes());
-  submitAndWait(device, [&](VkCommandBuffer cmd) { recordTrace(cmd, probe, count); });
+  submitAndWait(device, [&](VkCommandBuffer cmd) { recordTrace(cmd, probe, count, mode); });
   std::vector<gpu::ProbeHit> hits(count);
   downloadBuffer(device, probe.hits, hits.data(), hits.size() * sizeof(gpu::ProbeHit));
   return hits;
 }
 
-double timeTraceRays(const Device& device, RayProbe& probe, std::uint32_t rayCount, std::uint32_t repetitions) {
+double timeTraceRays(const Device& device, RayProbe& probe, std::uint32_t rayCount, std::uint32_t mode,
+                     std::uint32_t repetitions) {
   const Stopwatch clock;
   submitAndWait(device, [&](VkCommandBuffer cmd) {
-    for (std::uint32_t i = 0; i < repetitions; ++i) recordTrace(cmd, probe, rayCount);
+    for (std::uint32_t i = 0; i < repetitions; ++i) recordTrace(cmd, probe, rayCount, mode);
   });
   return clock.seconds() / std::max<std::uint32_t>(1, repetitions);
 }

@@ -25,10 +25,13 @@ struct RayProbe {
 RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uint32_t capacity);
 void destroyRayProbe(const Device& device, RayProbe& probe);
 
-// Uploads the rays (at most `capacity`), traces them in one dispatch and downloads the hits.
-std::vector<gpu::ProbeHit> traceRays(const Device& device, RayProbe& probe, std::span<const gpu::ProbeRay> rays);
+// Uploads the rays (at most `capacity`), traces them in one dispatch and downloads the hits. `mode`:
+// gpu::kProbeClosest, kProbeOcclusion or kProbeClosestBare.
+std::vector<gpu::ProbeHit> traceRays(const Device& device, RayProbe& probe, std::span<const gpu::ProbeRay> rays,
+                                     std::uint32_t mode = gpu::kProbeClosest);
 
-// Times `repetitions` dispatches over rays already uploaded by traceRays; returns seconds per dispatch.
-double timeTraceRays(const Device& device, RayProbe& probe, std::uint32_t rayCount, std::uint32_t repetitions);
+// Times `repetitions` dispatches over the rays of the last traceRays call; returns seconds per dispatch.
+double timeTraceRays(const Device& device, RayProbe& probe, std::uint32_t rayCount, std::uint32_t mode,
+                     std::uint32_t repetitions);
 
 }  // namespace raylab

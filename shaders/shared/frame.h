@@ -48,6 +48,17 @@ RL_CHECK_SIZE(ProbeRay, 32);
 
 RL_CONST uint kProbeMiss = 0xFFFFFFFFu;
 
+// ProbeParams.mode
+RL_CONST uint kProbeClosest = 0;       // closest hit with the surface reconstructed, as closestHit sees it
+RL_CONST uint kProbeOcclusion = 1;     // shadow-ray query: instance 0 when blocked, kProbeMiss when clear
+RL_CONST uint kProbeClosestBare = 2;   // closest hit distance and ids only: the bare cost of traversal
+
+struct ProbeParams {
+  uint rayCount;
+  uint mode;
+};
+RL_CHECK_SIZE(ProbeParams, 8);
+
 struct ProbeHit {
   float t;
   uint instance;   // instance custom index, kProbeMiss on a miss

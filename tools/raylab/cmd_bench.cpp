@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "args.h"
+#include "bench_commands.h"
 #include "commands.h"
 #include "gpu_session.h"
 #include "render/kernel_features.h"
@@ -55,6 +56,8 @@ Scene lambertOnlyScene() {
   for (Material& material : scene.materials) material.record = lambertMaterial(material.record.rhoD);
   return scene;
 }
+
+}  // namespace
 
 int benchKernels(int argc, char** argv) {
   std::uint32_t width = 640, height = 360, samples = 16;
@@ -111,12 +114,11 @@ int benchKernels(int argc, char** argv) {
   return kExitOk;
 }
 
-}  // namespace
-
 int runBench(int argc, char** argv) {
   const std::string usage =
       "Usage: raylab bench <benchmark> [options]\n\nBenchmarks:\n"
       "  kernels    the scene-specialised kernel against the all-features kernel\n"
+      "  rays       raylab against Embree 3 on the same rays of fixed scenes\n"
       "\n`raylab bench <benchmark> --help` describes each.\n";
   if (argc < 1) throw Error("raylab bench: which benchmark?\n" + usage, kExitUsage);
   const std::string which = argv[0];
@@ -125,6 +127,7 @@ int runBench(int argc, char** argv) {
     return kExitOk;
   }
   if (which == "kernels") return benchKernels(argc - 1, argv + 1);
+  if (which == "rays") return benchRays(argc - 1, argv + 1);
   throw Error("raylab bench: unknown benchmark '" + which + "'\n" + usage, kExitUsage);
 }
 
