@@ -78,7 +78,8 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   renderer.pipeline = createRenderPipeline(device, renderer, renderer.kernel);
 
   renderer.stats = createBuffer(device, sizeof(gpu::RayStats),
-                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT,  // recordCopyRayStats
                                 MemoryUse::kHost, "ray stats");
 
   renderer.descriptors = allocateDescriptorSet(device, renderer.setLayout, bindings, "render set");
@@ -189,6 +190,12 @@ void recordSamplePass(VkCommandBuffer cmd, const Renderer& renderer, std::uint32
 
 void recordResetRayStats(VkCommandBuffer cmd, const Renderer& renderer) {
   vkCmdFillBuffer(cmd, renderer.stats.handle, 0, VK_WHOLE_SIZE, 0);
+  computeBarrier(cmd);
+}
+
+void recordCopyRayStats(VkCommandBuffer cmd, const Renderer& renderer, VkBuffer destination) {
+  const VkBufferCopy region{0, 0, sizeof(gpu::RayStats)};
+  vkCmdCopyBuffer(cmd, renderer.stats.handle, destination, 1, &region);
   computeBarrier(cmd);
 }
 

@@ -63,6 +63,9 @@ void recordSamplePass(VkCommandBuffer cmd, const Renderer& renderer, std::uint32
 // Ray counters: zero them at the start of a submission, add them to renderer.rays after it completed.
 void recordResetRayStats(VkCommandBuffer cmd, const Renderer& renderer);
 void collectRayStats(Renderer& renderer);
+// Copies the counters into `destination` (a RayStats-sized transfer-destination buffer) and makes them visible
+// to the host: for callers with several submissions in flight, each reading its own copy (the viewer).
+void recordCopyRayStats(VkCommandBuffer cmd, const Renderer& renderer, VkBuffer destination);
 
 // Live changes (the viewer). Each leaves the accumulated samples stale: reset them afterwards.
 void setCamera(Renderer& renderer, const Camera& camera);

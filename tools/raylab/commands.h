@@ -7,5 +7,6 @@ namespace raylab {
 int runRender(int argc, char** argv);
 int runDevices(int argc, char** argv);
 int runBench(int argc, char** argv);
+int runView(int argc, char** argv);
 
 }  // namespace raylab

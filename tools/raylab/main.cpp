@@ -20,6 +20,7 @@ constexpr Command kCommands[] = {
     {"render", raylab::runRender, "render a scene offscreen to OpenEXR and PNG"},
     {"devices", raylab::runDevices, "list Vulkan devices and whether raylab can use them"},
     {"bench", raylab::runBench, "benchmarks: kernel variants, ray throughput"},
+    {"view", raylab::runView, "open an interactive window on a scene (X11; headless: xvfb-run -a)"},
 };
 
 void printUsage(std::FILE* stream) {

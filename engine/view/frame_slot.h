@@ -1,0 +1,54 @@
+// What one frame in flight owns: its command buffer, the fence the main thread polls instead of waiting, the
+// acquire semaphore, timestamps around the trace passes (the scheduler's cost model), a copy of the ray
+// counters, and a read-back buffer for window captures.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "vk/device.h"
+#include "vk/resources.h"
+
+namespace raylab {
+
+// Timestamp queries of a frame.
+enum FrameTimestamp : std::uint32_t {
+  kFrameBegin = 0,
+  kTraceEnd = 1,
+  kFrameEnd = 2,
+  kFrameTimestampCount = 3,
+};
+
+struct FrameSlot {
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  VkFence fence = VK_NULL_HANDLE;  // signalled: the slot is free
+  VkSemaphore imageAvailable = VK_NULL_HANDLE;
+  VkQueryPool timestamps = VK_NULL_HANDLE;
+  Buffer rayStats;     // RayStats after this frame's passes
+  Buffer capture;      // swapchain pixels, when the frame captured the window
+  bool inFlight = false;
+
+  // What the submitted frame did, read back when it completes.
+  double submitSeconds = 0.0;
+  std::uint64_t pixelSamples = 0;
+  glm::uvec2 traceExtent{0};
+  bool preview = false;
+  std::uint32_t spp = 0;
+  bool measure = false;   // its timings may feed the cost model (not a kernel's first dispatch)
+  bool captured = false;
+  VkExtent2D captureExtent{};
+};
+
+FrameSlot createFrameSlot(const Device& device);
+void destroyFrameSlot(const Device& device, FrameSlot& slot);
+
+struct FrameTimes {
+  double traceSeconds = 0.0;  // trace passes on the device
+  double totalSeconds = 0.0;  // the whole command buffer on the device
+};
+FrameTimes readFrameTimes(const Device& device, const FrameSlot& slot);
+
+}  // namespace raylab

@@ -1,0 +1,91 @@
+#include "view/kernel_build.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+
+#include "scene/default_scene.h"
+#include "scene/gpu_scene.h"
+#include "util/error.h"
+#include "util/timer.h"
+
+namespace raylab {
+
+namespace {
+
+bool shaderCacheDisabled() {
+  const char* value = std::getenv("MESA_SHADER_CACHE_DISABLE");
+  return value != nullptr && (std::strcmp(value, "true") == 0 || std::strcmp(value, "1") == 0 ||
+                              std::strcmp(value, "yes") == 0);
+}
+
+// One 8x8 dispatch of `kernel` on a device of our own. The scene only has to make every binding valid: the
+// compiled code depends on the SPIR-V and the specialization constants, not on the data.
+void warmUp(const Instance& instance, const DeviceReport& report, const KernelFeatures& kernel) {
+  Device device = createDevice(instance, report);
+  GpuScene gpuScene;
+  Renderer renderer;
+  try {
+    const Scene scene = makeDefaultScene();
+    gpuScene = uploadScene(device, scene);
+    RenderSettings settings;
+    settings.width = 8;
+    settings.height = 8;
+    settings.kernel = kernel;
+    renderer = createRenderer(device, gpuScene, scene, settings);
+    renderSamples(device, renderer, 1);
+  } catch (...) {
+    destroyRenderer(device, renderer);
+    destroyGpuScene(device, gpuScene);
+    destroyDevice(device);
+    throw;
+  }
+  destroyRenderer(device, renderer);
+  destroyGpuScene(device, gpuScene);
+  destroyDevice(device);
+}
+
+}  // namespace
+
+std::unique_ptr<KernelBuild> startKernelBuild(const Instance& instance, const Device& device, const Renderer& renderer,
+                                              const KernelFeatures& kernel) {
+  auto build = std::make_unique<KernelBuild>();
+  build->kernel = kernel;
+  const bool warm = device.report.type == VK_PHYSICAL_DEVICE_TYPE_CPU && !shaderCacheDisabled();
+  // The thread gets copies of the handles it reads: the main thread goes on changing the renderer's state.
+  build->thread = std::thread([&device, instance, rendererHandles = renderer, kernel, warm, b = build.get()] {
+    const Stopwatch clock;
+    try {
+      b->pipeline = createRenderPipeline(device, rendererHandles, kernel);
+      if (warm) {
+        warmUp(instance, device.report, kernel);
+        b->warmedUp = true;
+      }
+    } catch (const std::exception& error) {
+      b->error = error.what();
+    }
+    b->seconds = clock.seconds();
+    b->finished.store(true);
+  });
+  return build;
+}
+
+VkPipeline finishKernelBuild(const Device& device, KernelBuild& build) {
+  if (build.thread.joinable()) build.thread.join();
+  if (!build.error.empty()) {
+    if (build.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, build.pipeline, nullptr);
+    build.pipeline = VK_NULL_HANDLE;
+    throw Error("building the kernel for " + describe(build.kernel) + " failed: " + build.error);
+  }
+  const VkPipeline pipeline = build.pipeline;
+  build.pipeline = VK_NULL_HANDLE;
+  return pipeline;
+}
+
+void abandonKernelBuild(const Device& device, KernelBuild& build) {
+  if (build.thread.joinable()) build.thread.join();
+  if (build.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, build.pipeline, nullptr);
+  build.pipeline = VK_NULL_HANDLE;
+}
+
+}  // namespace raylab

@@ -1,0 +1,156 @@
+#include "view/panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cstdio>
+
+#include "scene/material_params.h"
+#include "util/progress.h"
+#include "view/scene_edits.h"
+
+namespace raylab {
+
+namespace {
+
+// One slider (or colour editor) per parameter, over the contract's range; log-scale parameters get a
+// logarithmic slider. Returns true when the value changed.
+bool drawParam(gpu::MaterialRecord& record, const ParamInfo& param) {
+  glm::vec3 value = getParam(record, param.name);
+  const std::string label(param.name);
+  bool changed = false;
+  if (param.rgb && param.min == 0.0f && param.max == 1.0f) {
+    changed = ImGui::ColorEdit3(label.c_str(), &value.x, ImGuiColorEditFlags_Float);
+  } else if (param.rgb) {
+    changed = ImGui::SliderFloat3(label.c_str(), &value.x, param.min, param.max, "%.3g", ImGuiSliderFlags_AlwaysClamp);
+  } else {
+    ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
+    if (param.logScale) flags |= ImGuiSliderFlags_Logarithmic;
+    changed = ImGui::SliderFloat(label.c_str(), &value.x, param.min, param.max, "%.4g", flags);
+    value = glm::vec3(value.x);
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s [%g, %g]", std::string(param.meaning).c_str(), param.min, param.max);
+  if (changed) {
+    value = glm::clamp(value, glm::vec3(param.min), glm::vec3(param.max));
+    setParam(record, param.name, value, "panel");
+  }
+  return changed;
+}
+
+bool drawMaterial(Material& material) {
+  bool changed = false;
+  gpu::MaterialRecord& record = material.record;
+  const ModelInfo& current = modelInfo(record.model);
+  const std::string comboLabel = "model";
+  if (ImGui::BeginCombo(comboLabel.c_str(), std::string(current.name).c_str())) {
+    for (const ModelInfo& model : allModels()) {
+      const bool selected = model.id == record.model;
+      if (ImGui::Selectable(std::string(model.name).c_str(), selected) && !selected) {
+        switchModel(record, model.id);
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  for (const ParamInfo& param : modelInfo(record.model).params) changed |= drawParam(record, param);
+  changed |= drawParam(record, deltaParam());
+  return changed;
+}
+
+bool drawLight(Light& light, float dragSpeed) {
+  gpu::LightRecord& record = light.record;
+  bool changed = false;
+  if (record.type == gpu::kLightDirectional) {
+    if (ImGui::DragFloat3("direction", &record.direction.x, 0.01f, -1.0f, 1.0f)) {
+      if (glm::length(record.direction) > 1.0e-6f) record.direction = glm::normalize(record.direction);
+      else record.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+      changed = true;
+    }
+  } else {
+    changed |= ImGui::DragFloat3("position", &record.position.x, dragSpeed);
+  }
+  const float intensitySpeed = 0.01f * std::max(1.0f, std::max({record.intensity.x, record.intensity.y, record.intensity.z}));
+  changed |= ImGui::DragFloat3("intensity", &record.intensity.x, intensitySpeed, 0.0f, FLT_MAX, "%.3g",
+                               ImGuiSliderFlags_AlwaysClamp);
+  return changed;
+}
+
+}  // namespace
+
+std::string statusLine(const PanelStatus& status) {
+  char text[160];
+  std::snprintf(text, sizeof text, "%u spp  %ux%u%s  %.1f ms/frame  %s", status.spp, status.traceExtent.x,
+                status.traceExtent.y, status.preview ? " (preview)" : "", status.frameMs,
+                formatCount(status.raysPerSecond, "rays/s").c_str());
+  return text;
+}
+
+PanelEdits drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, float sceneSize) {
+  PanelEdits edits;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("raylab", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::TextUnformatted(statusLine(status).c_str());
+  if (status.compiling) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "compiling kernel...");
+  if (!status.message.empty()) ImGui::TextWrapped("%s", status.message.c_str());
+
+  if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) {
+    int depth = static_cast<int>(settings.maxDepth);
+    if (ImGui::SliderInt("max depth", &depth, 0, 64, "%d", ImGuiSliderFlags_AlwaysClamp)) {
+      settings.maxDepth = static_cast<std::uint32_t>(depth);
+      edits.maxDepth = true;
+    }
+    ImGui::SliderFloat("exposure", &settings.exposure, -10.0f, 10.0f, "%.2f stops", ImGuiSliderFlags_AlwaysClamp);
+    const char* curves[] = {"clamp", "reinhard", "aces"};
+    int curve = static_cast<int>(settings.toneMap);
+    if (ImGui::Combo("tone curve", &curve, curves, 3)) settings.toneMap = static_cast<ToneMap>(curve);
+    if (ImGui::SliderFloat("resolution scale", &settings.resolutionScale, 0.25f, 1.0f, "%.2f",
+                           ImGuiSliderFlags_AlwaysClamp)) {
+      edits.resolutionScale = true;
+    }
+    ImGui::SliderFloat("target frame", &settings.targetMs, 16.0f, 200.0f, "%.0f ms", ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::Button("reset view (R)")) edits.resetView = true;
+    ImGui::SameLine();
+    if (ImGui::Button("screenshot (F12)")) edits.screenshot = true;
+  }
+
+  if (ImGui::CollapsingHeader("Materials", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+      Material& material = scene.materials[i];
+      ImGui::PushID(static_cast<int>(i));
+      const std::string label = material.name.empty() ? "material " + std::to_string(i) : material.name;
+      if (ImGui::TreeNode(label.c_str())) {
+        edits.materials |= drawMaterial(material);
+        ImGui::TreePop();
+      }
+      ImGui::PopID();
+    }
+  }
+
+  if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const float dragSpeed = 0.002f * sceneSize;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+      Light& light = scene.lights[i];
+      ImGui::PushID(1000 + static_cast<int>(i));
+      const std::string label = light.name.empty() ? "light " + std::to_string(i) : light.name;
+      if (ImGui::TreeNode(label.c_str())) {
+        edits.lights |= drawLight(light, dragSpeed);
+        ImGui::TreePop();
+      }
+      ImGui::PopID();
+    }
+  }
+
+  if (ImGui::CollapsingHeader("Controls")) {
+    ImGui::TextUnformatted(
+        "left drag: orbit    shift+left / middle drag: pan\n"
+        "wheel: zoom         right drag: look, + WASD/QE: fly\n"
+        "R / Home: reset view    F1 / Tab: panel\n"
+        "F12 / P: screenshot     Esc: quit");
+  }
+  ImGui::End();
+  return edits;
+}
+
+}  // namespace raylab

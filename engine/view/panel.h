@@ -1,0 +1,50 @@
+// The viewer's ImGui panel: status line, render settings, the materials (model and parameters, driven by the
+// parameter table of scene/material_params.h) and the lights. It edits plain values and reports what changed;
+// the viewer uploads and resets.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace raylab {
+
+// What the panel edits besides the scene.
+struct ViewSettings {
+  std::uint32_t maxDepth = 8;
+  float exposure = 0.0f;
+  ToneMap toneMap = ToneMap::kClamp;
+  float resolutionScale = 1.0f;  // full render size over window size
+  float targetMs = 50.0f;
+};
+
+struct PanelStatus {
+  std::uint32_t spp = 0;
+  glm::uvec2 traceExtent{0};
+  bool preview = false;
+  double frameMs = 0.0;
+  double raysPerSecond = 0.0;
+  bool compiling = false;
+  std::string message;  // last screenshot, kernel error, ...
+};
+
+struct PanelEdits {
+  bool materials = false;
+  bool lights = false;
+  bool maxDepth = false;
+  bool resolutionScale = false;
+  bool resetView = false;
+  bool screenshot = false;
+};
+
+// Builds the panel for this ImGui frame. `sceneSize` (the scene's diagonal) sets how fast lights drag.
+PanelEdits drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, float sceneSize);
+
+// "12 spp  640x360  48.2 ms/frame  3.1 Mrays/s" (also printed by automation runs).
+std::string statusLine(const PanelStatus& status);
+
+}  // namespace raylab

@@ -1,0 +1,142 @@
+#include "view/scheduler.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+
+namespace {
+
+constexpr double kSmoothing = 0.3;       // weight of a new measurement in the running estimates
+constexpr float kHysteresis = 0.12f;     // preview sizes within 12% of the current one keep the current one
+constexpr double kMinTraceShare = 0.25;  // tracing gets at least this share of the frame, whatever the overhead
+
+double traceBudget(const Scheduler& s) {
+  const double target = s.settings.targetFrameSeconds;
+  return std::max(target - s.cost.overheadSeconds, kMinTraceShare * target);
+}
+
+void restart(Scheduler& s, glm::uvec2 extent, bool preview, FramePlan& plan) {
+  s.traceExtent = extent;
+  s.preview = preview;
+  // A preview pass is traced whole in one frame: one dispatch is cheaper than many.
+  s.tiles = preview ? std::vector<Tile>{{{0, 0}, extent}} : makeTiles(extent, s.settings.tileSize);
+  s.nextTile = 0;
+  s.sampleIndex = 0;
+  s.needsReset = false;
+  plan.reset = true;
+}
+
+void addPass(FramePlan& plan, const Tile& tile, std::uint32_t sampleIndex) {
+  plan.passes.push_back({tile, sampleIndex});
+  plan.pixelSamples += std::uint64_t(tile.size.x) * tile.size.y;
+}
+
+bool limitReached(const Scheduler& s) { return s.settings.sppLimit > 0 && s.sampleIndex >= s.settings.sppLimit; }
+
+// Takes tiles of the pass in progress (and the next passes) until `budget` is used; at least one tile.
+void addTiles(Scheduler& s, FramePlan& plan, double budget) {
+  double spent = 0.0;
+  while (!limitReached(s)) {
+    const Tile& tile = s.tiles[s.nextTile];
+    const double cost = double(tile.size.x) * tile.size.y * s.cost.secondsPerPixelSample;
+    if (!plan.passes.empty() && spent + cost > budget) break;
+    addPass(plan, tile, s.sampleIndex);
+    spent += cost;
+    if (++s.nextTile == s.tiles.size()) {
+      s.nextTile = 0;
+      ++s.sampleIndex;
+    }
+    // Nothing measured yet: one tile, to measure it.
+    if (s.cost.secondsPerPixelSample <= 0.0) break;
+  }
+}
+
+}  // namespace
+
+std::vector<Tile> makeTiles(glm::uvec2 extent, std::uint32_t tileSize) {
+  std::vector<Tile> tiles;
+  for (std::uint32_t y = 0; y < extent.y; y += tileSize) {
+    for (std::uint32_t x = 0; x < extent.x; x += tileSize) {
+      tiles.push_back({{x, y}, {std::min(tileSize, extent.x - x), std::min(tileSize, extent.y - y)}});
+    }
+  }
+  return tiles;
+}
+
+void addTraceMeasurement(CostModel& cost, std::uint64_t pixelSamples, double seconds) {
+  if (pixelSamples == 0 || !(seconds > 0.0)) return;
+  double sample = seconds / double(pixelSamples);
+  if (cost.traceMeasurements == 0) {
+    cost.secondsPerPixelSample = sample;
+  } else {
+    const double current = cost.secondsPerPixelSample;
+    sample = std::clamp(sample, 0.25 * current, 4.0 * current);
+    cost.secondsPerPixelSample = (1.0 - kSmoothing) * current + kSmoothing * sample;
+  }
+  ++cost.traceMeasurements;
+}
+
+void addOverheadMeasurement(CostModel& cost, double seconds) {
+  if (!(seconds >= 0.0)) return;
+  cost.overheadSeconds = cost.overheadSeconds == 0.0 ? seconds : (1.0 - kSmoothing) * cost.overheadSeconds + kSmoothing * seconds;
+}
+
+glm::uvec2 previewExtent(glm::uvec2 full, double budgetSeconds, double secondsPerPixelSample, float minScale) {
+  const double pixels = budgetSeconds / secondsPerPixelSample;
+  const double scale = std::clamp(std::sqrt(pixels / (double(full.x) * full.y)), double(minScale), 1.0);
+  return {std::clamp(std::uint32_t(std::lround(full.x * scale)), std::min(8u, full.x), full.x),
+          std::clamp(std::uint32_t(std::lround(full.y * scale)), std::min(8u, full.y), full.y)};
+}
+
+void setFullExtent(Scheduler& scheduler, glm::uvec2 extent) {
+  scheduler.fullExtent = extent;
+  scheduler.needsReset = true;
+}
+
+bool converged(const Scheduler& s) { return !s.preview && !s.needsReset && s.traceExtent == s.fullExtent && limitReached(s); }
+
+FramePlan planFrame(Scheduler& s, double now, bool changed, FrameKind kind) {
+  FramePlan plan;
+  if (changed) {
+    s.lastChange = now;
+    s.needsReset = true;
+  }
+  const bool moving = kind == FrameKind::kInteractive && now - s.lastChange < s.settings.settleSeconds;
+
+  if (moving) {
+    if (s.needsReset || !s.preview) {
+      glm::uvec2 extent = s.fullExtent;
+      if (s.cost.secondsPerPixelSample > 0.0) {
+        extent = previewExtent(s.fullExtent, traceBudget(s), s.cost.secondsPerPixelSample, s.settings.minPreviewScale);
+      } else {
+        extent = glm::max(glm::uvec2(glm::vec2(s.fullExtent) * s.settings.firstPreviewScale), glm::uvec2(8));
+        extent = glm::min(extent, s.fullExtent);
+      }
+      // Small swings of the estimate should not make the preview's size flicker.
+      if (s.preview && s.traceExtent.x > 0 && std::abs(float(extent.x) / float(s.traceExtent.x) - 1.0f) < kHysteresis) {
+        extent = s.traceExtent;
+      }
+      restart(s, extent, true, plan);
+    }
+    // The preview is sized so that one whole pass fits the budget: the window always shows a complete image.
+    for (const Tile& tile : s.tiles) addPass(plan, tile, s.sampleIndex);
+    ++s.sampleIndex;
+  } else {
+    if (s.needsReset || s.preview || s.traceExtent != s.fullExtent) restart(s, s.fullExtent, false, plan);
+    if (kind == FrameKind::kFullPass) {
+      if (!limitReached(s)) {
+        for (std::size_t i = s.nextTile; i < s.tiles.size(); ++i) addPass(plan, s.tiles[i], s.sampleIndex);
+        s.nextTile = 0;
+        ++s.sampleIndex;
+      }
+    } else {
+      addTiles(s, plan, traceBudget(s));
+    }
+  }
+  plan.traceExtent = s.traceExtent;
+  plan.preview = s.preview;
+  return plan;
+}
+
+}  // namespace raylab

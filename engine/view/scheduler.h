@@ -1,0 +1,91 @@
+// Decides what each viewer frame traces, so that a frame stays near its time budget on any device: while the
+// view changes, one pass over a reduced-resolution image sized to the budget (the display pass stretches it
+// over the window); once nothing has changed for a moment, full-resolution passes of every pixel with
+// increasing sample index, split into tiles so that no submission outlasts the budget. After N complete
+// full-resolution passes the accumulation holds exactly what `raylab render --spp N` computes: the same RNG
+// keys (pixel, sample index, seed) and each pixel's samples added in the same order.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace raylab {
+
+struct Tile {
+  glm::uvec2 origin{0};
+  glm::uvec2 size{0};
+};
+
+// Tiles of tileSize x tileSize (a multiple of the 8x8 workgroup) covering `extent` row by row; the last row and
+// column are cut at the image edge.
+std::vector<Tile> makeTiles(glm::uvec2 extent, std::uint32_t tileSize);
+
+// Running estimates from the device's timestamps.
+struct CostModel {
+  double secondsPerPixelSample = 0.0;  // 0 until the first measurement
+  double overheadSeconds = 0.0;        // display pass, UI and blit per frame
+  std::uint32_t traceMeasurements = 0;
+};
+
+// One measurement of `pixelSamples` traced in `seconds`. A sudden outlier (the driver compiling a kernel at
+// its first dispatch) moves the estimate by at most a factor of four.
+void addTraceMeasurement(CostModel& cost, std::uint64_t pixelSamples, double seconds);
+void addOverheadMeasurement(CostModel& cost, double seconds);
+
+struct SchedulerSettings {
+  double targetFrameSeconds = 0.050;
+  double settleSeconds = 0.25;      // unchanged this long: refine at full resolution
+  std::uint32_t tileSize = 64;      // multiple of 8
+  std::uint32_t sppLimit = 0;       // full-resolution passes to stop at; 0: never stop
+  float minPreviewScale = 1.0f / 16.0f;
+  float firstPreviewScale = 0.25f;  // before anything was measured
+};
+
+struct TracePass {
+  Tile tile;
+  std::uint32_t sampleIndex = 0;
+};
+
+struct FramePlan {
+  bool reset = false;           // clear the accumulation (traceExtent pixels) before the passes
+  glm::uvec2 traceExtent{0};    // the resolution the accumulation holds from this frame on
+  bool preview = false;         // traceExtent is a reduced resolution
+  std::vector<TracePass> passes;
+  std::uint64_t pixelSamples = 0;
+};
+
+enum class FrameKind {
+  kInteractive,  // budgeted: preview while moving, tiles of refinement while still
+  kFullPass,     // automation: exactly one full-resolution pass (or none past the spp limit)
+};
+
+struct Scheduler {
+  SchedulerSettings settings;
+  CostModel cost;
+  glm::uvec2 fullExtent{0};
+  // The accumulation's state.
+  glm::uvec2 traceExtent{0};
+  bool preview = false;
+  bool needsReset = true;
+  double lastChange = -1.0e30;
+  std::vector<Tile> tiles;       // of traceExtent
+  std::size_t nextTile = 0;      // first tile of the pass in progress still to trace
+  std::uint32_t sampleIndex = 0; // the pass in progress; also the number of complete passes
+};
+
+// `changed`: the camera, the scene or a render setting changed since the last plan. `now` in seconds.
+FramePlan planFrame(Scheduler& scheduler, double now, bool changed, FrameKind kind);
+
+// True when a still, full-resolution accumulation has reached the spp limit: there is nothing left to trace.
+bool converged(const Scheduler& scheduler);
+
+// Changes the full resolution (window resize, resolution scale); the next plan resets.
+void setFullExtent(Scheduler& scheduler, glm::uvec2 extent);
+
+// The reduced resolution that traces in `budgetSeconds` at `secondsPerPixelSample`, with the full image's
+// aspect ratio, at least 8 pixels a side and at most the full resolution.
+glm::uvec2 previewExtent(glm::uvec2 full, double budgetSeconds, double secondsPerPixelSample, float minScale);
+
+}  // namespace raylab

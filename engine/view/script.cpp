@@ -1,0 +1,223 @@
+#include "view/script.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "scene/material_params.h"
+#include "util/error.h"
+#include "util/files.h"
+#include "view/scene_edits.h"
+
+namespace raylab {
+
+namespace {
+
+// Splits a line into words; "double quoted" words may contain spaces. A # outside quotes starts a comment.
+std::vector<std::string> splitWords(const std::string& line, const std::string& where) {
+  std::vector<std::string> words;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    const char c = line[i];
+    if (c == ' ' || c == '\t' || c == '\r') {
+      ++i;
+    } else if (c == '#') {
+      break;
+    } else if (c == '"') {
+      const std::size_t end = line.find('"', i + 1);
+      if (end == std::string::npos) throw Error(where + ": unterminated quoted name");
+      words.push_back(line.substr(i + 1, end - i - 1));
+      i = end + 1;
+    } else {
+      std::size_t end = i;
+      while (end < line.size() && line[end] != ' ' && line[end] != '\t' && line[end] != '\r') ++end;
+      words.push_back(line.substr(i, end - i));
+      i = end;
+    }
+  }
+  return words;
+}
+
+float parseNumber(const std::string& word, const std::string& where, const char* what) {
+  float value = 0.0f;
+  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (error != std::errc() || end != word.data() + word.size() || !std::isfinite(value)) {
+    throw Error(where + ": " + what + " must be a number, not '" + word + "'");
+  }
+  return value;
+}
+
+std::uint32_t parseCount(const std::string& word, const std::string& where, const char* what) {
+  std::uint32_t value = 0;
+  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (error != std::errc() || end != word.data() + word.size()) {
+    throw Error(where + ": " + what + " must be a whole number >= 0, not '" + word + "'");
+  }
+  return value;
+}
+
+void expectWords(const std::vector<std::string>& words, std::size_t count, const std::string& where,
+                 const char* form) {
+  if (words.size() != count) throw Error(where + ": expected '" + form + "'");
+}
+
+void readValues(ScriptEvent& event, const std::vector<std::string>& words, std::size_t first, const char* what) {
+  for (std::size_t i = first; i < words.size(); ++i) {
+    event.value[event.valueCount++] = parseNumber(words[i], event.where, what);
+  }
+}
+
+ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& where) {
+  if (words.size() < 3 || words[0] != "at") {
+    throw Error(where + ": expected 'at <frame> <action> ...' (actions: orbit, pan, zoom, set, model, resize, "
+                        "screenshot)");
+  }
+  ScriptEvent event;
+  event.where = where;
+  event.frame = parseCount(words[1], where, "the frame");
+  const std::string& action = words[2];
+  if (action == "orbit" || action == "pan") {
+    expectWords(words, 5, where, action == "orbit" ? "at <frame> orbit <yaw-degrees> <pitch-degrees>"
+                                                   : "at <frame> pan <dx> <dy>");
+    event.action = action == "orbit" ? ScriptAction::kOrbit : ScriptAction::kPan;
+    readValues(event, words, 3, "an offset");
+  } else if (action == "zoom") {
+    expectWords(words, 4, where, "at <frame> zoom <factor>");
+    event.action = ScriptAction::kZoom;
+    readValues(event, words, 3, "the zoom factor");
+    if (!(event.value.x > 0.0f)) throw Error(where + ": the zoom factor must be > 0");
+  } else if (action == "model") {
+    expectWords(words, 5, where, "at <frame> model <material> <model>");
+    event.action = ScriptAction::kModel;
+    event.name = words[3];
+    event.param = words[4];
+  } else if (action == "resize") {
+    expectWords(words, 5, where, "at <frame> resize <width> <height>");
+    event.action = ScriptAction::kResize;
+    const std::uint32_t width = parseCount(words[3], where, "the width");
+    const std::uint32_t height = parseCount(words[4], where, "the height");
+    if (width < 8 || height < 8 || width > 16384 || height > 16384) {
+      throw Error(where + ": the window size must be within 8..16384 pixels a side");
+    }
+    event.value = glm::vec3(float(width), float(height), 0.0f);
+    event.valueCount = 2;
+  } else if (action == "screenshot") {
+    expectWords(words, 4, where, "at <frame> screenshot <file.exr>");
+    event.action = ScriptAction::kScreenshot;
+    event.name = words[3];
+    if (event.name.size() < 5 || event.name.substr(event.name.size() - 4) != ".exr") {
+      throw Error(where + ": the screenshot file must end in .exr");
+    }
+  } else if (action == "set") {
+    if (words.size() < 5) throw Error(where + ": expected 'at <frame> set material|light|exposure|max-depth ...'");
+    const std::string& what = words[3];
+    if (what == "material") {
+      if (words.size() != 7 && words.size() != 9) {
+        throw Error(where + ": expected 'at <frame> set material <name> <param> <value> [<g> <b>]'");
+      }
+      event.action = ScriptAction::kSetMaterial;
+      event.name = words[4];
+      event.param = words[5];
+      readValues(event, words, 6, "a parameter value");
+    } else if (what == "light") {
+      expectWords(words, 9, where, "at <frame> set light <name> intensity|position <x> <y> <z>");
+      event.name = words[4];
+      if (words[5] == "intensity") event.action = ScriptAction::kSetLightIntensity;
+      else if (words[5] == "position") event.action = ScriptAction::kSetLightPosition;
+      else throw Error(where + ": a light has 'intensity' and 'position', not '" + words[5] + "'");
+      readValues(event, words, 6, "a light value");
+      if (event.action == ScriptAction::kSetLightIntensity && glm::any(glm::lessThan(event.value, glm::vec3(0.0f)))) {
+        throw Error(where + ": a light's intensity must be >= 0");
+      }
+    } else if (what == "exposure") {
+      expectWords(words, 5, where, "at <frame> set exposure <stops>");
+      event.action = ScriptAction::kSetExposure;
+      readValues(event, words, 4, "the exposure");
+    } else if (what == "max-depth") {
+      expectWords(words, 5, where, "at <frame> set max-depth <bounces>");
+      event.action = ScriptAction::kSetMaxDepth;
+      event.value.x = float(parseCount(words[4], where, "the depth"));
+      event.valueCount = 1;
+      if (event.value.x > 64.0f) throw Error(where + ": max-depth must be within 0..64");
+    } else {
+      throw Error(where + ": 'set' takes material, light, exposure or max-depth, not '" + what + "'");
+    }
+  } else {
+    throw Error(where + ": unknown action '" + action +
+                "' (actions: orbit, pan, zoom, set, model, resize, screenshot)");
+  }
+  return event;
+}
+
+}  // namespace
+
+std::vector<ScriptEvent> parseScript(const std::string& text, const std::string& path) {
+  std::vector<ScriptEvent> events;
+  std::istringstream lines(text);
+  std::string line;
+  for (std::uint32_t number = 1; std::getline(lines, line); ++number) {
+    const std::string where = path + ":" + std::to_string(number);
+    const std::vector<std::string> words = splitWords(line, where);
+    if (!words.empty()) events.push_back(parseLine(words, where));
+  }
+  std::stable_sort(events.begin(), events.end(),
+                   [](const ScriptEvent& a, const ScriptEvent& b) { return a.frame < b.frame; });
+  return events;
+}
+
+std::vector<ScriptEvent> loadScript(const std::string& path) { return parseScript(readTextFile(path), path); }
+
+SceneEffect applyToScene(const ScriptEvent& event, Scene& scene) {
+  SceneEffect effect;
+  switch (event.action) {
+    case ScriptAction::kSetMaterial:
+    case ScriptAction::kModel: {
+      Material* material = findMaterial(scene, event.name);
+      if (material == nullptr) throw Error(event.where + ": the scene has no material '" + event.name + "'");
+      if (event.action == ScriptAction::kModel) {
+        const ModelInfo* model = findModel(event.param);
+        if (model == nullptr) {
+          std::string known;
+          for (const ModelInfo& m : allModels()) known += (known.empty() ? "" : ", ") + std::string(m.name);
+          throw Error(event.where + ": unknown model '" + event.param + "' (models: " + known + ")");
+        }
+        switchModel(material->record, model->id);
+      } else {
+        const ParamInfo* param = findParam(modelInfo(material->record.model), event.param);
+        // setParam's error lists the parameters the model has.
+        if (param == nullptr) setParam(material->record, event.param, glm::vec3(0.0f), event.where);
+        if (event.valueCount != 1 && !(param->rgb && event.valueCount == 3)) {
+          throw Error(event.where + ": " + event.param + " takes " + (param->rgb ? "1 or 3 values" : "1 value"));
+        }
+        const glm::vec3 value = event.valueCount == 1 ? glm::vec3(event.value.x) : event.value;
+        setParam(material->record, event.param, value, event.where);
+      }
+      effect.materials = true;
+      break;
+    }
+    case ScriptAction::kSetLightIntensity:
+    case ScriptAction::kSetLightPosition: {
+      Light* light = findLight(scene, event.name);
+      if (light == nullptr) throw Error(event.where + ": the scene has no light '" + event.name + "'");
+      if (event.action == ScriptAction::kSetLightIntensity) light->record.intensity = event.value;
+      else light->record.position = event.value;
+      effect.lights = true;
+      break;
+    }
+    default:
+      break;
+  }
+  return effect;
+}
+
+void checkScript(const std::vector<ScriptEvent>& events, const Scene& original) {
+  Scene scene = original;  // model switches earlier in the script decide which parameters exist later
+  for (const ScriptEvent& event : events) applyToScene(event, scene);
+}
+
+bool resetsAccumulation(const ScriptEvent& event) {
+  return event.action != ScriptAction::kScreenshot && event.action != ScriptAction::kSetExposure;
+}
+
+}  // namespace raylab

@@ -1,0 +1,76 @@
+// Viewer scripts: a small line-based list of camera and parameter changes, each at a frame number, that
+// `raylab view --script FILE` replays (tests, benchmarks, documentation shots). Format (docs/viewer.md):
+//
+//   # comment
+//   at <frame> orbit <yaw-degrees> <pitch-degrees>
+//   at <frame> pan <dx> <dy>                       fractions of the view height
+//   at <frame> zoom <factor>                       distance to the target times factor
+//   at <frame> set material <name> <param> <value> [<g> <b>]
+//   at <frame> set light <name> intensity <r> <g> <b>
+//   at <frame> set light <name> position <x> <y> <z>
+//   at <frame> set exposure <stops>
+//   at <frame> set max-depth <bounces>
+//   at <frame> model <material> <model>
+//   at <frame> resize <width> <height>
+//   at <frame> screenshot <file.exr>               also writes file.png
+//
+// Names containing spaces are written in double quotes. Events of one frame apply in file order, before that
+// frame is traced.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace raylab {
+
+enum class ScriptAction {
+  kOrbit,
+  kPan,
+  kZoom,
+  kSetMaterial,
+  kSetLightIntensity,
+  kSetLightPosition,
+  kSetExposure,
+  kSetMaxDepth,
+  kModel,
+  kResize,
+  kScreenshot,
+};
+
+struct ScriptEvent {
+  std::uint32_t frame = 0;
+  ScriptAction action = ScriptAction::kOrbit;
+  std::string where;      // "file:line", for error messages
+  std::string name;       // material or light; the model for kModel is `param`; the file for kScreenshot
+  std::string param;      // material parameter, or model name
+  glm::vec3 value{0.0f};  // numbers of the event; a single number for a scalar parameter is in x
+  int valueCount = 0;
+};
+
+// Parses `text` (read from `path`, which errors name with the line). Events come out sorted by frame, file
+// order kept within a frame.
+std::vector<ScriptEvent> parseScript(const std::string& text, const std::string& path);
+std::vector<ScriptEvent> loadScript(const std::string& path);
+
+struct SceneEffect {
+  bool materials = false;  // upload the materials (and check the kernel has their models)
+  bool lights = false;     // upload the lights
+};
+
+// Applies a material, model or light event to `scene` (other events touch nothing here). Throws Error naming
+// the line when a name or value is wrong.
+SceneEffect applyToScene(const ScriptEvent& event, Scene& scene);
+
+// Applies the whole script to a copy of `scene`, so that a typo fails before the window opens.
+void checkScript(const std::vector<ScriptEvent>& events, const Scene& scene);
+
+// True for events after which the accumulated samples are stale (all but screenshots and exposure, which
+// only the display pass uses).
+bool resetsAccumulation(const ScriptEvent& event);
+
+}  // namespace raylab

@@ -1,0 +1,65 @@
+// `raylab view`: the interactive window. One main thread polls input, builds the UI and records short
+// submissions; it never waits for trace work (docs/viewer.md explains the scheduling).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "image/image.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+#include "view/script.h"
+
+namespace raylab {
+
+struct ViewerOptions {
+  std::uint32_t width = 960;  // window size in pixels
+  std::uint32_t height = 540;
+  RenderSettings render;      // seed, max depth, jitter; the size follows the window
+  std::optional<std::uint32_t> device;
+  double targetMs = 50.0;
+  std::uint32_t sppLimit = 1024;  // 0: refine forever
+  float exposure = 0.0f;
+  ToneMap toneMap = ToneMap::kClamp;
+  bool panel = true;
+
+  // Automation. With `frames`, the viewer runs that many frames and exits; from the frame of the script's
+  // last change on, every frame is one full-resolution pass, so the image is deterministic.
+  std::optional<std::uint32_t> frames;
+  std::vector<ScriptEvent> script;
+  std::string screenshot;     // FILE.exr of the last frame's accumulation; a PNG beside it
+  std::string screenshotPng;  // overrides the PNG's path
+  std::string windowCapture;  // PNG of the last frame's window, panel included
+  bool exitWhenConverged = false;  // exit once still at full resolution with sppLimit samples (benchmarks)
+  bool quiet = false;
+};
+
+// One frame, as the benchmark sees it.
+struct FrameRecord {
+  double submitSeconds = 0.0;    // since the viewer started its loop
+  double completeSeconds = 0.0;  // when the main thread saw its fence
+  double traceSeconds = 0.0;     // device time of its trace passes
+  double deviceSeconds = 0.0;    // device time of the whole frame
+  glm::uvec2 traceExtent{0};
+  bool preview = false;
+  std::uint32_t spp = 0;         // complete passes at traceExtent after this frame
+  std::uint64_t pixelSamples = 0;
+};
+
+struct ViewerReport {
+  std::string device;
+  std::string driver;
+  glm::uvec2 fullExtent{0};
+  std::vector<FrameRecord> frames;
+  std::uint32_t spp = 0;
+};
+
+// Opens the window, runs until it is closed (or the automation ends) and returns what happened. Throws
+// Error(kExitNoDevice) without a capable device, Error(kExitFailure) without an X11 display.
+ViewerReport runViewer(const Scene& scene, const ViewerOptions& options);
+
+}  // namespace raylab
