@@ -19,13 +19,14 @@ Lobes ashikhminShirleyEval(const Material& material, const dvec3& wi, const dvec
   const double nu = material.nu;
   const double nv = material.nv;
   Lobes lobes;
-  lobes.diffuse = (28.0 / (23.0 * kPi)) * Rd * (dvec3(1.0) - Rs) * AS_DiffuseFactor(wi.z) * AS_DiffuseFactor(wo.z);
+  lobes.diffuse =
+      (28.0 / (23.0 * kPi)) * Rd * (dvec3(1.0) - Rs) * AS_diffuseFalloff(wi.z) * AS_diffuseFalloff(wo.z);
   const dvec3 h = wi + wo;
   const double HoL = glm::dot(wo, h) / glm::length(h);
   // HoL > 0 for unit wi, wo above the horizon; only rounding of non-unit inputs makes it <= 0 (see
   // cookTorranceEval), where the 1/HoL below would change sign.
   if (!(HoL > 0.0)) return lobes;
-  const double lobe = powCosThetaH(tan2ThetaH(h), AS_LobeExponent(h, nu, nv));
+  const double lobe = AS_lobe(h, nu, nv);
   const double scale = std::sqrt((nu + 1.0) * (nv + 1.0)) / (8.0 * kPi) * lobe / (HoL * std::max(wi.z, wo.z));
   lobes.specular = scale * F_Schlick(Rs, HoL);
   return lobes;
@@ -59,8 +60,7 @@ double ashikhminShirleyPdfSpecular(const Material& material, const dvec3& wi, co
   const dvec3 h = wi + wo;
   const double VoH = glm::dot(wo, h) / glm::length(h);
   if (!(VoH > 0.0)) return 0.0;  // see ashikhminShirleyEval
-  const double pH = std::sqrt((nu + 1.0) * (nv + 1.0)) / (2.0 * kPi) *
-                    powCosThetaH(tan2ThetaH(h), AS_LobeExponent(h, nu, nv));
+  const double pH = std::sqrt((nu + 1.0) * (nv + 1.0)) / (2.0 * kPi) * AS_lobe(h, nu, nv);
   return pH / (4.0 * VoH);
 }
 

@@ -25,7 +25,7 @@ Lobes wardFamilyEval(WardVariant variant, const Material& material, const dvec3&
   const double ax = material.alphaX;
   const double ay = material.alphaY;
   const dvec3 h = wi + wo;
-  const double lobe = std::exp(-Ward_Exponent(h, ax, ay));
+  const double lobe = std::exp(-wardExponent(h, ax, ay));
   // Once exp(-e) underflows the value is 0; stopping here keeps 0 * inf out of ward_gmd's 1/h_z^4.
   if (lobe == 0.0) return diffuseOnly;
   double spec = 0.0;
@@ -78,7 +78,7 @@ double wardPdfSpecular(const Material& material, const dvec3& wi, const dvec3& w
   const double length = glm::length(h);
   const double VoH = glm::dot(wo, h) / length;
   if (!(VoH > 0.0)) return 0.0;  // only through rounding of non-unit inputs, see cookTorranceEval
-  const double lobe = std::exp(-Ward_Exponent(h, ax, ay));
+  const double lobe = std::exp(-wardExponent(h, ax, ay));
   if (lobe == 0.0) return 0.0;  // keeps 0 * inf out of 1 / NoH^3
   const double NoH = h.z / length;
   return lobe / (4.0 * kPi * ax * ay * VoH * NoH * NoH * NoH);

@@ -122,8 +122,9 @@ TEST(Reciprocity, EveryModelIsSymmetricInWiAndWo) {
         const double relative = std::abs(forward[c] - backward[c]) / scale;
         worst = std::max(worst, relative);
         if (0.5 * glm::length(wi + wo) > 0.1) worstAway = std::max(worstAway, relative);
-        EXPECT_LE(relative, allowedAsymmetry(wi, wo)) << materialLabel(model, params) << " wi = (" << wi.x << ", " << wi.y << ", "
-                                        << wi.z << ") wo = (" << wo.x << ", " << wo.y << ", " << wo.z << ")";
+        EXPECT_LE(relative, allowedAsymmetry(wi, wo))
+            << materialLabel(model, params) << " wi = (" << wi.x << ", " << wi.y << ", " << wi.z << ") wo = (" << wo.x
+            << ", " << wo.y << ", " << wo.z << ")";
       }
     }
     worstPerModel[model] = std::max(worstPerModel[model], worst);
@@ -143,7 +144,9 @@ TEST(Reciprocity, EveryModelIsSymmetricInWiAndWo) {
 // a cosine into f) is caught by the same comparison.
 TEST(Reciprocity, DetectsANonReciprocalVariant) {
   const Material material = makeMaterial("phong", {{"rho_d", 0.2}, {"rho_s", 0.8}, {"s", 50}});
-  auto nonReciprocal = [&material](const dvec3& wi, const dvec3& wo) { return reference::eval(material, wi, wo) * wo.z; };
+  auto nonReciprocal = [&material](const dvec3& wi, const dvec3& wo) {
+    return reference::eval(material, wi, wo) * wo.z;
+  };
   double worst = 0.0;
   for (const auto& [wi, wo] : testPairs()) {
     const double a = nonReciprocal(wi, wo).x;

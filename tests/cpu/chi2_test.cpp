@@ -86,7 +86,9 @@ TEST(Chi2, AcceptsCorrectSamplers) {
   EXPECT_NEAR(sphere.pdfIntegral, 1.0, 1e-9);
 
   std::vector<dvec3> cosine;
-  for (std::size_t k = 0; k < n; ++k) cosine.push_back(reference::sampleCosineHemisphere({uniform01(rng), uniform01(rng)}));
+  for (std::size_t k = 0; k < n; ++k) {
+    cosine.push_back(reference::sampleCosineHemisphere({uniform01(rng), uniform01(rng)}));
+  }
   Chi2Options options;
   options.thetaCells = 20;
   options.phiCells = 40;
@@ -120,7 +122,8 @@ TEST(Chi2, RejectsPhongSampledWithTheWrongExponent) {
   EXPECT_FALSE(result.passed);
   EXPECT_LT(result.pValue, 1e-10);
   // The same samples against their own pdf pass.
-  const Chi2Result own = chi2Test(directions, n, [&](const dvec3& wi) { return reference::pdf(wrong, wi, wo); }, options);
+  const Chi2Result own =
+      chi2Test(directions, n, [&](const dvec3& wi) { return reference::pdf(wrong, wi, wo); }, options);
   std::printf("the same samples against their own pdf: %s", own.report.c_str());
   EXPECT_TRUE(own.passed);
 }
