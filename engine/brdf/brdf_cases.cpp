@@ -85,6 +85,11 @@ BrdfCase parseRow(std::string_view line, int lineNumber, const std::string& sour
   const bool glass = row.input.material.model == gpu::kModelGlass;
   row.input.wi = parseDirection(wi, fieldWhere(where, "wi"));
   row.input.n = parseDirection(n, fieldWhere(where, "n"));
+  for (const auto& [field, text] : {std::pair{"wo", &wo}, std::pair{"t", &t}}) {
+    if (!glass && text->empty()) {
+      throw Error(fieldWhere(where, field) + ": empty (only glass may leave wo and t empty)");
+    }
+  }
   row.input.wo = glass && wo.empty() ? glm::vec3(0.0f) : parseDirection(wo, fieldWhere(where, "wo"));
   // The tangent is only a hint: zero or parallel to n selects any tangent (shaders/common/frame.glsl).
   row.input.t = glass && t.empty() ? glm::vec3(0.0f) : parseVector(t, fieldWhere(where, "t"));

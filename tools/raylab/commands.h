@@ -8,5 +8,6 @@ int runRender(int argc, char** argv);
 int runDevices(int argc, char** argv);
 int runBench(int argc, char** argv);
 int runView(int argc, char** argv);
+int runBrdf(int argc, char** argv);
 
 }  // namespace raylab

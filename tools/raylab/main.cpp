@@ -21,6 +21,7 @@ constexpr Command kCommands[] = {
     {"devices", raylab::runDevices, "list Vulkan devices and whether raylab can use them"},
     {"bench", raylab::runBench, "benchmarks: kernel variants, ray throughput"},
     {"view", raylab::runView, "open an interactive window on a scene (X11; headless: xvfb-run -a)"},
+    {"brdf", raylab::runBrdf, "the BRDF library outside the renderer (brdf eval)"},
 };
 
 void printUsage(std::FILE* stream) {
