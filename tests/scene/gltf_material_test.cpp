@@ -1,0 +1,255 @@
+// glTF materials: extras.raylab models and parameters, the metallic-roughness mapping (docs/scenes.md),
+// KHR_materials_ior and KHR_materials_transmission, and base-colour textures.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "gltf_test_support.h"
+#include "scene/gltf_materials.h"
+#include "scene/material_params.h"
+
+namespace raylab::test {
+namespace {
+
+using nlohmann::json;
+
+// 2x2 RGB: red, green / blue, white.
+constexpr const char* kPngRgb =
+    "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAEklEQVR42mP4z8DAAMIM/4EAAB/uBfvxq7p3AAAAAElFTkSuQmCC";
+// 3x1 grey, 16 bits: 0x0000, 0x8080, 0xffff.
+constexpr const char* kPngGrey16 =
+    "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAMAAAABEAAAAABuG5crAAAAD0lEQVR42mNgYGho+P8fAAaEAv//G2LxAAAAAElFTkSuQmCC";
+// 2x1 grey and alpha: (10, 20), (200, 250).
+constexpr const char* kPngGreyAlpha =
+    "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAIAAAABCAQAAABeK7cBAAAADUlEQVR42mPgEjnxCwAC8wHhibjEdAAAAABJRU5ErkJggg==";
+
+void expectNear(glm::vec3 actual, glm::vec3 expected, const std::string& what, float tolerance = 1e-5f) {
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(actual[i], expected[i], tolerance) << what << " component " << i;
+}
+
+float schlickF0(float eta) { return std::pow((eta - 1.0f) / (eta + 1.0f), 2.0f); }
+
+// A scene with one quad using the given material.
+Scene loadMaterial(const json& material) {
+  GltfBuilder b;
+  b.addNode({{"mesh", b.addQuad(b.addMaterial(material))}});
+  return b.load();
+}
+
+std::string materialError(const json& material) {
+  return errorOf([&] { loadMaterial(material); });
+}
+
+TEST(GltfMaterial, ExtrasRaylabChoosesTheModelAndItsParameters) {
+  const Scene scene = loadMaterial({{"name", "brushed"},
+                                    {"extras", {{"raylab", {{"model", "ward"}, {"rho_d", {0.1, 0.1, 0.1}},
+                                                            {"rho_s", {0.9, 0.9, 0.9}}, {"alpha_x", 0.1},
+                                                            {"alpha_y", 0.4}, {"delta", 0.25}}}}}});
+  ASSERT_EQ(scene.materials.size(), 1u);
+  const gpu::MaterialRecord& r = scene.materials[0].record;
+  EXPECT_EQ(scene.materials[0].name, "brushed");
+  EXPECT_EQ(r.model, gpu::kModelWard);
+  expectNear(r.rhoD, glm::vec3(0.1f), "rho_d");
+  expectNear(r.rhoS, glm::vec3(0.9f), "rho_s");
+  EXPECT_FLOAT_EQ(r.alphaX, 0.1f);
+  EXPECT_FLOAT_EQ(r.alphaY, 0.4f);
+  EXPECT_FLOAT_EQ(r.delta, 0.25f);
+}
+
+TEST(GltfMaterial, EveryModelOfTheTableCanBeChosen) {
+  for (const ModelInfo& model : allModels()) {
+    const Scene scene = loadMaterial({{"extras", {{"raylab", {{"model", std::string(model.name)}}}}}});
+    EXPECT_EQ(scene.materials[0].record.model, model.id) << model.name;
+  }
+}
+
+TEST(GltfMaterial, ExtrasRaylabErrorsNameTheMaterial) {
+  const auto error = [](const json& raylab) {
+    return materialError({{"name", "gold"}, {"extras", {{"raylab", raylab}}}});
+  };
+  const std::string unknownKey = error({{"model", "phong"}, {"alpha_x", 0.2}});
+  EXPECT_NE(unknownKey.find("test: material 0 'gold': extras.raylab: 'alpha_x' is not a parameter of phong"),
+            std::string::npos) << unknownKey;
+  const std::string outOfRange = error({{"model", "cooktorrance"}, {"m", 2.0}});
+  EXPECT_NE(outOfRange.find("test: material 0 'gold': extras.raylab: m = 2 is outside [0.001, 1]"), std::string::npos)
+      << outOfRange;
+  const std::string unknownModel = error({{"model", "oren_nayar"}});
+  EXPECT_NE(unknownModel.find("material 0 'gold': extras.raylab.model: \"oren_nayar\" is not a model"),
+            std::string::npos) << unknownModel;
+  const std::string notRgb = error({{"model", "lambert"}, {"rho_d", 0.5}});
+  EXPECT_NE(notRgb.find("material 0 'gold': extras.raylab.rho_d: expected [r, g, b], found 0.5"), std::string::npos)
+      << notRgb;
+  const std::string notNumber = error({{"model", "phong"}, {"s", "shiny"}});
+  EXPECT_NE(notNumber.find("extras.raylab.s: expected a number"), std::string::npos) << notNumber;
+  const std::string delta = error({{"delta", 1.5}});
+  EXPECT_NE(delta.find("delta = 1.5 is outside [0, 1]"), std::string::npos) << delta;
+}
+
+TEST(GltfMaterial, NonFiniteValuesAreRejected) {
+  // JSON text cannot hold NaN: such a file fails to parse, naming the line and column.
+  const std::string text = R"({"asset": {"version": "2.0"},
+      "materials": [{"extras": {"raylab": {"model": "lambert", "rho_d": [NaN, 0, 0]}}}]})";
+  const std::string parse = errorOf([&] { loadGltfText(text, "", "nan.gltf", {}); });
+  EXPECT_NE(parse.find("nan.gltf: not valid JSON: parse error at line 2"), std::string::npos) << parse;
+  // A NaN that reaches the material (from code) is refused with the same message as an out-of-range value.
+  gpu::MaterialRecord record = defaultRecord(gpu::kModelLambert);
+  const json raylab = {{"rho_d", {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0}}};
+  const std::string nan = errorOf([&] { gltf::applyRaylabMaterial(record, raylab, "file: material 3 'x'"); });
+  EXPECT_NE(nan.find("file: material 3 'x': extras.raylab: rho_d = nan is outside [0, 1]"), std::string::npos) << nan;
+  const json huge = {{"model", "phong"}, {"s", 1e300}};
+  const std::string inf = errorOf([&] { gltf::applyRaylabMaterial(record, huge, "file: material 3 'x'"); });
+  EXPECT_NE(inf.find("s = inf is outside [1, 10000]"), std::string::npos) << inf;
+}
+
+TEST(GltfMaterial, DielectricMetallicRoughnessMapsToLambertPlusCookTorrance) {
+  const Scene scene = loadMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.1, 1.0}},
+                                                              {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}});
+  const gpu::MaterialRecord& r = scene.materials[0].record;
+  EXPECT_EQ(r.model, gpu::kModelCookTorrance);
+  expectNear(r.rhoD, {0.8f, 0.2f, 0.1f}, "rho_d = base colour (1 - metallic)");
+  expectNear(r.rhoS, glm::vec3(1.0f), "rho_s: white, the Fresnel term carries F0");
+  EXPECT_NEAR(r.eta, 1.5f, 1e-5f) << "glTF's default ior";
+  EXPECT_NEAR(r.m, 0.25f, 1e-6f) << "m = roughness^2";
+  EXPECT_FLOAT_EQ(r.delta, 0.0f);
+}
+
+TEST(GltfMaterial, MetalsKeepTheirF0WhereEtaAllowsIt) {
+  const glm::vec3 copper(0.6f, 0.4f, 0.3f);
+  const Scene scene = loadMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {copper.r, copper.g, copper.b, 1.0}},
+                                                              {"metallicFactor", 1.0}, {"roughnessFactor", 0.2}}}});
+  const gpu::MaterialRecord& r = scene.materials[0].record;
+  expectNear(r.rhoD, glm::vec3(0.0f), "no diffuse term for a metal");
+  expectNear(r.rhoS * schlickF0(r.eta), copper, "rho_s F0(eta) = the base colour", 1e-5f);
+  EXPECT_FLOAT_EQ(std::max({r.rhoS.r, r.rhoS.g, r.rhoS.b}), 1.0f);
+  EXPECT_NEAR(r.m, 0.04f, 1e-6f);
+
+  // Brighter than F0(10) = 0.669: eta saturates and the reflectance is scaled down, hue kept.
+  const Scene silver = loadMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {0.97, 0.96, 0.91, 1.0}},
+                                                               {"metallicFactor", 1.0}}}});
+  const gpu::MaterialRecord& s = silver.materials[0].record;
+  EXPECT_FLOAT_EQ(s.eta, 10.0f);
+  expectNear(s.rhoS, glm::vec3(1.0f), "rho_s saturates at 1");
+  EXPECT_NEAR(s.m, 1.0f, 1e-6f) << "glTF's default roughness is 1";
+}
+
+TEST(GltfMaterial, IorSetsEtaAndFullTransmissionMakesGlass) {
+  const Scene water = loadMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 1.33}}}}},
+                                    {"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}});
+  EXPECT_EQ(water.materials[0].record.model, gpu::kModelCookTorrance);
+  EXPECT_NEAR(water.materials[0].record.eta, 1.33f, 1e-5f);
+
+  const Scene glass = loadMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 1.7}}},
+                                                    {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}},
+                                    {"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 1.0, 0.95, 1.0}}}}});
+  const gpu::MaterialRecord& g = glass.materials[0].record;
+  EXPECT_EQ(g.model, gpu::kModelGlass);
+  EXPECT_NEAR(g.eta, 1.7f, 1e-6f);
+  expectNear(g.tint, {0.9f, 1.0f, 0.95f}, "tint = base colour");
+
+  WarningCapture warnings;
+  const Scene partial = loadMaterial({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}}}});
+  EXPECT_EQ(partial.materials[0].record.model, gpu::kModelCookTorrance);
+  EXPECT_EQ(warnings.count("transmission factors between 0 and 1"), 1);
+
+  const std::string error = materialError({{"name", "gem"}, {"extensions", {{"KHR_materials_ior", {{"ior", 0.5}}}}}});
+  EXPECT_NE(error.find("material 0 'gem': KHR_materials_ior.ior = 0.5 is outside [1, 10]"), std::string::npos) << error;
+}
+
+TEST(GltfMaterial, CoreFactorsOutOfRangeAreErrors) {
+  const std::string error =
+      materialError({{"name", "hot"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1.5, 0, 0, 1}}}}});
+  EXPECT_NE(error.find("material 0 'hot': baseColorFactor[0] = 1.5 is outside [0, 1]"), std::string::npos) << error;
+}
+
+TEST(GltfMaterial, ExtrasWithoutAModelAdjustTheMappedMaterial) {
+  const Scene scene = loadMaterial({{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
+                                    {"extras", {{"raylab", {{"delta", 0.5}}}}}});
+  EXPECT_EQ(scene.materials[0].record.model, gpu::kModelCookTorrance);
+  EXPECT_FLOAT_EQ(scene.materials[0].record.delta, 0.5f);
+}
+
+TEST(GltfMaterial, PrimitivesWithoutAMaterialShareADefaultGreyLambert) {
+  GltfBuilder b;
+  const int mesh = b.addQuad();
+  b.addNode({{"mesh", mesh}});
+  b.addNode({{"mesh", mesh}, {"translation", {2, 0, 0}}});
+  const Scene scene = b.load();
+  ASSERT_EQ(scene.materials.size(), 1u);
+  EXPECT_EQ(scene.materials[0].name, "default");
+  EXPECT_EQ(scene.materials[0].record.model, gpu::kModelLambert);
+  expectNear(scene.materials[0].record.rhoD, glm::vec3(0.8f), "default grey");
+}
+
+// A quad with TEXCOORD_0 and one material per texture image.
+GltfBuilder texturedScene(const std::vector<std::string>& images, const json& samplers, const json& textures) {
+  GltfBuilder b;
+  const int mesh = b.addQuad();
+  b.doc()["meshes"][mesh]["primitives"][0]["attributes"]["TEXCOORD_0"] = b.addFloats({0, 0, 1, 0, 1, 1, 0, 1}, "VEC2");
+  for (const std::string& uri : images) b.doc()["images"].push_back({{"uri", uri}});
+  b.doc()["samplers"] = samplers;
+  b.doc()["textures"] = textures;
+  for (std::size_t t = 0; t < textures.size(); ++t) {
+    const int material = b.addMaterial({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", t}}}}}});
+    json primitive = b.doc()["meshes"][mesh]["primitives"][0];
+    primitive["material"] = material;
+    b.doc()["meshes"].push_back({{"primitives", {primitive}}});
+    b.addNode({{"mesh", b.doc()["meshes"].size() - 1}});
+  }
+  return b;
+}
+
+TEST(GltfMaterial, BaseColourTexturesAreDecodedToRgba8WithTheirWrapModes) {
+  const GltfBuilder b = texturedScene(
+      {kPngRgb, kPngGrey16, kPngGreyAlpha},
+      json::array({{{"wrapS", 33071}, {"wrapT", 33648}}, {{"wrapS", 33648}}}),
+      json::array({{{"source", 0}, {"sampler", 0}}, {{"source", 1}, {"sampler", 1}}, {{"source", 2}},
+                   {{"source", 0}, {"sampler", 0}}}));
+  const Scene scene = b.load();
+  ASSERT_EQ(scene.textures.size(), 4u);
+  for (std::size_t m = 0; m < 4; ++m) EXPECT_EQ(scene.materials[m].record.baseColorTexture, int(m));
+
+  const Texture& rgb = scene.textures[0];
+  EXPECT_EQ(rgb.width, 2u);
+  EXPECT_EQ(rgb.height, 2u);
+  EXPECT_EQ(rgb.rgba, (std::vector<std::uint8_t>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255}));
+  EXPECT_EQ(rgb.wrapS, gpu::kWrapClamp);
+  EXPECT_EQ(rgb.wrapT, gpu::kWrapMirror);
+
+  const Texture& grey = scene.textures[1];
+  EXPECT_EQ(grey.rgba, (std::vector<std::uint8_t>{0, 0, 0, 255, 128, 128, 128, 255, 255, 255, 255, 255}))
+      << "16 bits round to 8, grey expands to RGB";
+  EXPECT_EQ(grey.wrapS, gpu::kWrapMirror);
+  EXPECT_EQ(grey.wrapT, gpu::kWrapRepeat) << "glTF's default wrap";
+
+  const Texture& greyAlpha = scene.textures[2];
+  EXPECT_EQ(greyAlpha.rgba, (std::vector<std::uint8_t>{10, 10, 10, 20, 200, 200, 200, 250}));
+  EXPECT_EQ(greyAlpha.wrapS, gpu::kWrapRepeat) << "no sampler: repeat";
+}
+
+TEST(GltfMaterial, OtherTextureSlotsAreIgnoredWithOneWarningPerFile) {
+  GltfBuilder b = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+  b.doc()["materials"][0]["normalTexture"] = {{"index", 0}};
+  b.doc()["materials"].push_back({{"occlusionTexture", {{"index", 0}}}, {"emissiveTexture", {{"index", 0}}}});
+  WarningCapture warnings;
+  const Scene scene = b.load();
+  EXPECT_EQ(scene.materials[0].record.baseColorTexture, 0) << "the base colour is still sampled";
+  EXPECT_EQ(warnings.count("textures other than base colour"), 1);
+}
+
+TEST(GltfMaterial, AnInvalidWrapModeIsAnErrorNamingTheSampler) {
+  const GltfBuilder b = texturedScene({kPngRgb}, json::array({{{"name", "odd"}, {"wrapS", 1234}}}),
+                                      json::array({{{"source", 0}, {"sampler", 0}}}));
+  const std::string error = errorOf([&] { b.load(); });
+  EXPECT_NE(error.find("test: sampler 0 'odd' wrapS: wrap mode 1234"), std::string::npos) << error;
+}
+
+TEST(GltfMaterial, AnUndecodableImageIsAnError) {
+  const GltfBuilder b = texturedScene({"data:image/png;base64,AAAA"}, json::array(), json::array({{{"source", 0}}}));
+  const std::string error = errorOf([&] { b.load(); });
+  EXPECT_NE(error.find("test: "), std::string::npos) << error;
+  EXPECT_NE(error.find("image"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace raylab::test
