@@ -93,7 +93,6 @@ struct Viewer {
   bool automation = false;
   std::uint32_t frameIndex = 0;       // frames submitted
   std::int64_t eventsAppliedFor = -1;  // the frame whose script events were applied
-  std::uint32_t lastResetFrame = 0;   // automation: full passes from this frame on
   std::uint32_t lastScriptFrame = 0;
   int uiFramesLeft = kUiSettleFrames;
   Stopwatch clock;
@@ -288,6 +287,7 @@ void installKernel(Viewer& v) {
                 v.build->warmedUp ? " (compiled off-queue)" : "", describe(v.build->kernel).c_str());
   swapRenderPipeline(v.device, v.renderer, pipeline, v.build->kernel);
   v.status.message = message;
+  if (!v.options.quiet) std::printf("raylab view: %s\n", message);
   v.build.reset();
   v.freshKernel = true;
   v.changed = true;
@@ -540,12 +540,10 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
   }
   v.scheduler.settings.targetFrameSeconds = v.settings.targetMs / 1000.0;
 
-  // Automation: from the last change on, one full pass per frame, so that N frames are N spp.
-  FrameKind kind = FrameKind::kInteractive;
-  if (v.automation && v.frameIndex >= v.lastResetFrame) {
-    kind = FrameKind::kFullPass;
-    if (v.frameIndex == v.lastResetFrame) v.changed = true;
-  }
+  // Automation is deterministic: a frame with a change draws the preview, every other frame (the first
+  // included) adds exactly one full-resolution pass, so that N still frames hold N samples per pixel.
+  const bool fullPass = v.automation && (v.frameIndex == 0 || !v.changed);
+  const FrameKind kind = fullPass ? FrameKind::kFullPass : FrameKind::kInteractive;
   FramePlan plan;
   const bool paused = !covers(v.renderer.kernel, v.needed);  // waiting for a kernel with the scene's models
   if (!paused) {
@@ -578,10 +576,7 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
 
 void run(Viewer& v) {
   v.automation = v.options.frames.has_value();
-  for (const ScriptEvent& event : v.options.script) {
-    v.lastScriptFrame = std::max(v.lastScriptFrame, event.frame);
-    if (resetsAccumulation(event)) v.lastResetFrame = std::max(v.lastResetFrame, event.frame);
-  }
+  for (const ScriptEvent& event : v.options.script) v.lastScriptFrame = std::max(v.lastScriptFrame, event.frame);
   v.clock.restart();
   while (!windowShouldClose(v.window)) {
     if (v.automation && v.frameIndex >= *v.options.frames) break;
@@ -598,17 +593,17 @@ void run(Viewer& v) {
       continue;
     }
     glfwPollEvents();
+    if (v.build && v.build->finished.load()) {
+      installKernel(v);
+      ensureKernel(v);  // the scene may have moved on while it was building
+    }
+    applyScriptEvents(v);
 
     const VkExtent2D window = framebufferExtent(v.window);
     if (window.width == 0 || window.height == 0) {
       glfwWaitEvents();  // minimised: nothing to draw into, and no reason to spin
       continue;
     }
-    if (v.build && v.build->finished.load()) {
-      installKernel(v);
-      ensureKernel(v);  // the scene may have moved on while it was building
-    }
-    applyScriptEvents(v);
     if (v.swapchainStale || window.width != v.swapchain.extent.width || window.height != v.swapchain.extent.height) {
       recreateSwapchain(v);
     }

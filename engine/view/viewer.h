@@ -27,8 +27,9 @@ struct ViewerOptions {
   ToneMap toneMap = ToneMap::kClamp;
   bool panel = true;
 
-  // Automation. With `frames`, the viewer runs that many frames and exits; from the frame of the script's
-  // last change on, every frame is one full-resolution pass, so the image is deterministic.
+  // Automation. With `frames`, the viewer runs that many frames and exits, deterministically: a frame with a
+  // change (a script event) draws the preview, every other frame, the first included, adds exactly one
+  // full-resolution pass, so N frames without changes hold what `raylab render --spp N` computes.
   std::optional<std::uint32_t> frames;
   std::vector<ScriptEvent> script;
   std::string screenshot;     // FILE.exr of the last frame's accumulation; a PNG beside it

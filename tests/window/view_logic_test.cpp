@@ -1,0 +1,271 @@
+// The viewer's logic that needs no window: the frame scheduler (tiles, budgets, the preview size, the
+// deterministic passes that make the viewer's image equal `raylab render`'s), the script parser and the camera
+// operations.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "scene/scene.h"
+#include "util/error.h"
+#include "view/camera_controller.h"
+#include "view/scheduler.h"
+#include "view/script.h"
+
+namespace raylab::test {
+namespace {
+
+// Per pixel, the sample indices it received, in order.
+using SampleLog = std::vector<std::vector<std::uint32_t>>;
+
+void logPlan(const FramePlan& plan, glm::uvec2 extent, SampleLog& log) {
+  if (plan.reset) log.assign(std::size_t(extent.x) * extent.y, {});
+  for (const TracePass& pass : plan.passes) {
+    for (std::uint32_t y = pass.tile.origin.y; y < pass.tile.origin.y + pass.tile.size.y; ++y) {
+      for (std::uint32_t x = pass.tile.origin.x; x < pass.tile.origin.x + pass.tile.size.x; ++x) {
+        ASSERT_LT(x, extent.x);
+        ASSERT_LT(y, extent.y);
+        log[std::size_t(y) * extent.x + x].push_back(pass.sampleIndex);
+      }
+    }
+  }
+}
+
+// Every pixel got samples 0, 1, ..., n-1 in this order: what `raylab render --spp n` adds.
+void expectRenderOrder(const SampleLog& log, std::uint32_t n) {
+  for (std::size_t i = 0; i < log.size(); ++i) {
+    ASSERT_EQ(log[i].size(), n) << "pixel " << i;
+    for (std::uint32_t k = 0; k < n; ++k) ASSERT_EQ(log[i][k], k) << "pixel " << i;
+  }
+}
+
+Scheduler makeScheduler(glm::uvec2 full, double secondsPerPixelSample) {
+  Scheduler scheduler;
+  setFullExtent(scheduler, full);
+  scheduler.cost.secondsPerPixelSample = secondsPerPixelSample;
+  scheduler.cost.traceMeasurements = secondsPerPixelSample > 0.0 ? 1 : 0;
+  return scheduler;
+}
+
+TEST(SchedulerTest, TilesCoverTheImageOnceOnWorkgroupBoundaries) {
+  const glm::uvec2 extent(203, 77);
+  std::vector<int> covered(std::size_t(extent.x) * extent.y, 0);
+  for (const Tile& tile : makeTiles(extent, 64)) {
+    EXPECT_EQ(tile.origin.x % 8, 0u);
+    EXPECT_EQ(tile.origin.y % 8, 0u);
+    for (std::uint32_t y = tile.origin.y; y < tile.origin.y + tile.size.y; ++y) {
+      for (std::uint32_t x = tile.origin.x; x < tile.origin.x + tile.size.x; ++x) ++covered[y * extent.x + x];
+    }
+  }
+  for (int count : covered) ASSERT_EQ(count, 1);
+}
+
+TEST(SchedulerTest, FullPassFramesAddOneSampleOfEveryPixelInRenderOrder) {
+  Scheduler scheduler = makeScheduler({100, 60}, 1e-6);
+  SampleLog log;
+  for (int frame = 0; frame < 5; ++frame) {
+    const FramePlan plan = planFrame(scheduler, 0.01 * frame, frame == 0, FrameKind::kFullPass);
+    EXPECT_EQ(plan.reset, frame == 0);
+    EXPECT_FALSE(plan.preview);
+    EXPECT_EQ(plan.traceExtent, glm::uvec2(100, 60));
+    logPlan(plan, plan.traceExtent, log);
+  }
+  expectRenderOrder(log, 5);
+  EXPECT_EQ(scheduler.sampleIndex, 5u);
+}
+
+TEST(SchedulerTest, StillFramesStayWithinTheBudgetAndStillAddSamplesInRenderOrder) {
+  const double perPixelSample = 2e-7;
+  Scheduler scheduler = makeScheduler({300, 200}, perPixelSample);
+  scheduler.settings.targetFrameSeconds = 0.05;
+  scheduler.cost.overheadSeconds = 0.01;
+  SampleLog log;
+  double now = 10.0;  // long after any change: still
+  std::uint64_t total = 0;
+  while (scheduler.sampleIndex < 3) {
+    const FramePlan plan = planFrame(scheduler, now, false, FrameKind::kInteractive);
+    ASSERT_FALSE(plan.preview);
+    ASSERT_FALSE(plan.passes.empty());
+    EXPECT_LE(double(plan.pixelSamples) * perPixelSample, 0.04 + 1e-9) << "over the trace budget";
+    logPlan(plan, plan.traceExtent, log);
+    total += plan.pixelSamples;
+    now += 0.05;
+  }
+  // Finish the pass in progress, then check the order of everything traced.
+  while (scheduler.nextTile != 0) logPlan(planFrame(scheduler, now, false, FrameKind::kInteractive), {300, 200}, log);
+  expectRenderOrder(log, scheduler.sampleIndex);
+  EXPECT_GE(total, 3u * 300 * 200);
+}
+
+TEST(SchedulerTest, MovingTracesAReducedResolutionSizedToTheBudgetThenRefines) {
+  Scheduler scheduler = makeScheduler({1280, 720}, 4e-7);
+  scheduler.settings.targetFrameSeconds = 0.05;
+  scheduler.cost.overheadSeconds = 0.01;
+  const FramePlan moving = planFrame(scheduler, 1.0, true, FrameKind::kInteractive);
+  EXPECT_TRUE(moving.reset);
+  EXPECT_TRUE(moving.preview);
+  // 40 ms at 0.4 us per pixel-sample: 100k pixels, about 421x237 at 16:9.
+  EXPECT_NEAR(double(moving.traceExtent.x) * moving.traceExtent.y, 0.04 / 4e-7, 0.03 * 0.04 / 4e-7);
+  EXPECT_NEAR(double(moving.traceExtent.x) / moving.traceExtent.y, 1280.0 / 720.0, 0.02);
+  EXPECT_EQ(moving.pixelSamples, std::uint64_t(moving.traceExtent.x) * moving.traceExtent.y) << "one whole pass";
+
+  // A slower scene gets a smaller preview.
+  const glm::uvec2 slower = previewExtent({1280, 720}, 0.04, 16e-7, 1.0f / 16.0f);
+  EXPECT_NEAR(double(slower.x), moving.traceExtent.x / 2.0, 2.0);
+
+  // Still within the settle time: the preview keeps accumulating.
+  const FramePlan settling = planFrame(scheduler, 1.1, false, FrameKind::kInteractive);
+  EXPECT_TRUE(settling.preview);
+  EXPECT_FALSE(settling.reset);
+  EXPECT_EQ(settling.passes.front().sampleIndex, 1u);
+
+  // Settled: full resolution from sample 0.
+  const FramePlan still = planFrame(scheduler, 1.0 + scheduler.settings.settleSeconds + 0.01, false,
+                                    FrameKind::kInteractive);
+  EXPECT_TRUE(still.reset);
+  EXPECT_FALSE(still.preview);
+  EXPECT_EQ(still.traceExtent, glm::uvec2(1280, 720));
+  EXPECT_EQ(still.passes.front().sampleIndex, 0u);
+}
+
+TEST(SchedulerTest, StopsAtTheSppLimit) {
+  Scheduler scheduler = makeScheduler({64, 64}, 1e-7);
+  scheduler.settings.sppLimit = 2;
+  for (int frame = 0; frame < 4; ++frame) planFrame(scheduler, frame, frame == 0, FrameKind::kFullPass);
+  EXPECT_EQ(scheduler.sampleIndex, 2u);
+  EXPECT_TRUE(converged(scheduler));
+  EXPECT_TRUE(planFrame(scheduler, 10.0, false, FrameKind::kInteractive).passes.empty());
+  planFrame(scheduler, 11.0, true, FrameKind::kFullPass);
+  EXPECT_FALSE(converged(scheduler)) << "a change starts over";
+}
+
+TEST(SchedulerTest, AKernelCompilationMovesTheCostEstimateAtMostFourfold) {
+  CostModel cost;
+  addTraceMeasurement(cost, 1000, 1e-3);
+  EXPECT_DOUBLE_EQ(cost.secondsPerPixelSample, 1e-6);
+  addTraceMeasurement(cost, 1000, 2.0);  // the driver compiled for two seconds
+  EXPECT_LE(cost.secondsPerPixelSample, 4e-6 * 1.0000001);
+}
+
+TEST(ScriptTest, ParsesEveryActionSortedByFrame) {
+  const std::vector<ScriptEvent> events = parseScript(
+      "# comment\n"
+      "at 5 orbit 10 -5\n"
+      "\n"
+      "at 2 set material \"red plastic\" rho_d 0.1 0.6 0.1  # trailing comment\n"
+      "at 2 set light key intensity 1 2 3\n"
+      "at 3 model ground phong\n"
+      "at 4 resize 320 200\n"
+      "at 6 screenshot out/a.exr\n"
+      "at 1 zoom 0.5\n"
+      "at 1 pan 0.1 0\n"
+      "at 7 set exposure -1.5\n"
+      "at 7 set max-depth 3\n",
+      "s.txt");
+  ASSERT_EQ(events.size(), 10u);
+  EXPECT_EQ(events[0].action, ScriptAction::kZoom);
+  EXPECT_EQ(events[1].action, ScriptAction::kPan);
+  EXPECT_EQ(events[2].action, ScriptAction::kSetMaterial);
+  EXPECT_EQ(events[2].name, "red plastic");
+  EXPECT_EQ(events[2].param, "rho_d");
+  EXPECT_EQ(events[2].value, glm::vec3(0.1f, 0.6f, 0.1f));
+  EXPECT_EQ(events[2].where, "s.txt:4");
+  EXPECT_EQ(events[3].action, ScriptAction::kSetLightIntensity);
+  EXPECT_EQ(events[4].action, ScriptAction::kModel);
+  EXPECT_EQ(events[4].param, "phong");
+  EXPECT_EQ(events[5].action, ScriptAction::kResize);
+  EXPECT_EQ(events[5].value.x, 320.0f);
+  EXPECT_EQ(events[6].action, ScriptAction::kOrbit);
+  EXPECT_EQ(events[7].action, ScriptAction::kScreenshot);
+  EXPECT_FALSE(resetsAccumulation(events[7]));
+  EXPECT_EQ(events[8].action, ScriptAction::kSetExposure);
+  EXPECT_FALSE(resetsAccumulation(events[8]));
+  EXPECT_EQ(events[9].action, ScriptAction::kSetMaxDepth);
+  EXPECT_TRUE(resetsAccumulation(events[9]));
+}
+
+TEST(ScriptTest, ErrorsNameTheFileAndLine) {
+  const std::map<std::string, std::string> cases = {
+      {"at x orbit 1 2", "frame"},
+      {"at 1 spin 3", "unknown action 'spin'"},
+      {"at 1 orbit 1", "orbit"},
+      {"at 1 zoom abc", "number"},
+      {"at 1 zoom 0", "> 0"},
+      {"at 1 resize 4 4", "8..16384"},
+      {"at 1 set light key colour 1 1 1", "'colour'"},
+      {"at 1 set material \"unterminated rho_d 1", "unterminated"},
+      {"at 1 screenshot a.png", ".exr"},
+      {"orbit 1 2", "at <frame>"},
+  };
+  for (const auto& [line, mentions] : cases) {
+    try {
+      parseScript("# first line\n" + line + "\n", "script.txt");
+      ADD_FAILURE() << "accepted: " << line;
+    } catch (const Error& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find("script.txt:2"), std::string::npos) << message;
+      EXPECT_NE(message.find(mentions), std::string::npos) << message;
+    }
+  }
+}
+
+TEST(ScriptTest, CheckFollowsModelSwitchesAndNamesTheLine) {
+  Scene scene;
+  scene.materials = {{"ball", lambertMaterial(glm::vec3(0.5f))}};
+  scene.lights = {{"key", pointLight(glm::vec3(0.0f, 3.0f, 0.0f), glm::vec3(10.0f))}};
+  // s exists only after the switch to phong.
+  EXPECT_NO_THROW(checkScript(parseScript("at 1 model ball phong\nat 2 set material ball s 20\n", "a"), scene));
+  const auto expectError = [&](const std::string& text, const std::string& mentions) {
+    try {
+      checkScript(parseScript(text, "b"), scene);
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const Error& error) {
+      EXPECT_NE(std::string(error.what()).find(mentions), std::string::npos) << error.what();
+    }
+  };
+  expectError("at 2 set material ball s 20\n", "b:1");
+  expectError("at 1 set material ball rho_d 2\n", "outside");
+  expectError("at 1 model ball velvet\n", "unknown model 'velvet'");
+  expectError("at 1 set light sun intensity 1 1 1\n", "no light 'sun'");
+  expectError("at 1\nat 2 set material plate rho_d 0.5\n", "b:1");
+}
+
+TEST(CameraTest, OrbitKeepsTheTargetAndDistanceAndNeverReachesThePoles) {
+  Camera camera;
+  camera.position = {0.0f, 1.0f, 5.0f};
+  camera.target = {0.0f, 0.5f, 0.0f};
+  const float distance = glm::length(camera.position - camera.target);
+  for (int i = 0; i < 200; ++i) {
+    orbitCamera(camera, 0.05f, 0.1f);  // far more pitch than up to the pole
+    ASSERT_NEAR(glm::length(camera.position - camera.target), distance, 1e-3f * distance);
+    const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+    ASSERT_LT(std::abs(glm::dot(forward, camera.up)), std::cos(glm::radians(1.0f))) << "at step " << i;
+  }
+  EXPECT_GT(camera.position.y, camera.target.y) << "positive pitch raises the camera";
+  for (int i = 0; i < 200; ++i) orbitCamera(camera, 0.0f, -0.1f);
+  const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+  EXPECT_LT(std::abs(glm::dot(forward, camera.up)), std::cos(glm::radians(1.0f)));
+  EXPECT_LT(camera.position.y, camera.target.y);
+}
+
+TEST(CameraTest, PanZoomLookAndFly) {
+  Camera camera;
+  camera.position = {0.0f, 0.0f, 4.0f};
+  camera.target = {0.0f, 0.0f, 0.0f};
+  panCamera(camera, 0.5f, 0.0f);
+  EXPECT_GT(camera.target.x, 0.0f);
+  EXPECT_FLOAT_EQ(camera.position.x, camera.target.x) << "pan moves both together";
+  zoomCamera(camera, 0.5f, 1e-3f);
+  EXPECT_NEAR(glm::length(camera.position - camera.target), 2.0f, 1e-5f);
+  zoomCamera(camera, 1e-9f, 0.1f);
+  EXPECT_NEAR(glm::length(camera.position - camera.target), 0.1f, 1e-5f) << "never closer than the minimum";
+  const glm::vec3 position = camera.position;
+  lookCamera(camera, 0.3f, 0.2f);
+  EXPECT_EQ(camera.position, position) << "looking turns the view, not the camera";
+  EXPECT_GT(camera.target.y, camera.position.y) << "positive pitch looks up";
+  flyCamera(camera, {0.0f, 0.0f, 1.0f});
+  EXPECT_NEAR(glm::length(camera.position - position), 1.0f, 1e-5f);
+}
+
+}  // namespace
+}  // namespace raylab::test

@@ -1,0 +1,277 @@
+// `raylab view` as users and scripts run it, under Xvfb: the viewer's image after N still frames is the image
+// `raylab render` computes with N samples, a scripted parameter change shows where the material is and
+// nowhere else, a model the kernel lacks gets a rebuilt kernel, resizing keeps rendering, and nothing
+// produces a validation message (RAYLAB_VALIDATION=1 comes from ctest).
+#include <gtest/gtest.h>
+
+#include <stb_image.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "image/image.h"
+#include "render/renderer.h"
+#include "scene/load_scene.h"
+#include "support/run_command.h"
+
+namespace raylab::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kMinimalScene = std::string(RAYLAB_SOURCE_DIR) + "/assets/scenes/minimal.gltf";
+
+std::string scratchDir() {
+  const fs::path dir = fs::temp_directory_path() / "raylab_window_test";
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+// xvfb-run from PATH; empty when it is not installed.
+std::string findXvfbRun() {
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path != nullptr ? path : "/usr/bin:/bin");
+  for (std::string dir; std::getline(dirs, dir, ':');) {
+    const fs::path candidate = fs::path(dir) / "xvfb-run";
+    if (fs::exists(candidate)) return candidate.string();
+  }
+  return "";
+}
+
+// Runs `raylab view ARGS` on a private X server.
+CommandResult runView(const std::vector<std::string>& arguments) {
+  const std::string xvfbRun = findXvfbRun();
+  if (xvfbRun.empty()) {
+    ADD_FAILURE() << "xvfb-run is not installed: run tools/setup.sh test (it installs the packages xvfb and xauth)";
+    return {};
+  }
+  std::vector<std::string> command = {xvfbRun, "-a", "-s", "-screen 0 1024x768x24", RAYLAB_BINARY, "view"};
+  command.insert(command.end(), arguments.begin(), arguments.end());
+  return runCommand(command);
+}
+
+std::string writeScript(const std::string& name, const std::string& text) {
+  const std::string path = scratchDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+void expectCleanRun(const CommandResult& result) {
+  EXPECT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_EQ(result.output.find("[validation"), std::string::npos) << result.output;
+}
+
+// Images equal up to float rounding: the same samples summed in the same order give the same floats, but a
+// different kernel specialisation may contract a multiply-add differently.
+void expectSameImage(const Image& actual, const Image& expected, const std::string& what) {
+  ASSERT_EQ(actual.width, expected.width) << what;
+  ASSERT_EQ(actual.height, expected.height) << what;
+  std::size_t worst = 0;
+  double worstError = 0.0;
+  for (std::size_t i = 0; i < actual.rgba.size(); ++i) {
+    const double error = std::abs(double(actual.rgba[i]) - expected.rgba[i]) / (1e-3 + std::abs(double(expected.rgba[i])));
+    if (error > worstError) worstError = error, worst = i;
+  }
+  EXPECT_LT(worstError, 1e-5) << what << ": float " << worst << " is " << actual.rgba[worst] << ", expected "
+                              << expected.rgba[worst];
+}
+
+double meanLuminance(const Image& image) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) sum += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2];
+  return sum / (3.0 * image.width * image.height);
+}
+
+Image renderReference(const std::vector<std::string>& extra, const std::string& exrPath) {
+  std::vector<std::string> args = {"render", "--out", exrPath, "--png", exrPath + ".png"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const CommandResult result = runRaylab(args);
+  EXPECT_EQ(result.exitCode, 0) << result.output;
+  return readExr(exrPath);
+}
+
+// Which pixels see the sphere of material `materialName` through their centre (the camera of `scene` at
+// width x height): the host's own ray-sphere test, so the test does not trust the renderer to say where it is.
+// `radiusScale` shrinks or grows the sphere, to leave the silhouette's pixels out of both sides.
+std::vector<bool> sphereMask(const Scene& scene, const std::string& materialName, std::uint32_t width,
+                             std::uint32_t height, float radiusScale) {
+  std::uint32_t material = UINT32_MAX;
+  for (std::uint32_t i = 0; i < scene.materials.size(); ++i) {
+    if (scene.materials[i].name == materialName) material = i;
+  }
+  const Sphere* sphere = nullptr;
+  for (const Sphere& s : scene.spheres) {
+    if (s.material == material) sphere = &s;
+  }
+  if (sphere == nullptr) {
+    ADD_FAILURE() << "the scene has no sphere of material '" << materialName << "'";
+    return std::vector<bool>(std::size_t(width) * height, false);
+  }
+  gpu::FrameParams params{};
+  applyCamera(params, scene.camera, width, height);
+  const float radius = sphere->radius * radiusScale;
+  std::vector<bool> mask(std::size_t(width) * height);
+  for (std::uint32_t y = 0; y < height; ++y) {
+    for (std::uint32_t x = 0; x < width; ++x) {
+      const glm::vec2 ndc(2.0f * (x + 0.5f) / width - 1.0f, 1.0f - 2.0f * (y + 0.5f) / height);
+      const glm::vec3 d = glm::normalize(params.cameraForward + ndc.x * params.cameraRight + ndc.y * params.cameraUp);
+      const glm::vec3 oc = params.cameraOrigin - sphere->center;
+      const float b = glm::dot(oc, d);
+      const float c = glm::dot(oc, oc) - radius * radius;
+      mask[std::size_t(y) * width + x] = b * b - c >= 0.0f && -b > 0.0f;
+    }
+  }
+  return mask;
+}
+
+TEST(WindowTest, ScreenshotAfterStillFramesEqualsRenderWithAsManySamples) {
+  const std::string dir = scratchDir();
+  const std::string exr = dir + "/still.exr";
+  const std::string window = dir + "/still_window.png";
+  fs::remove(exr);
+  const CommandResult result = runView({"--width", "160", "--height", "96", "--seed", "7", "--frames", "6",
+                                        "--screenshot", exr, "--capture-window", window});
+  expectCleanRun(result);
+  EXPECT_NE(result.output.find("6 spp"), std::string::npos) << result.output;
+  const Image view = readExr(exr);
+  const Image reference =
+      renderReference({"--width", "160", "--height", "96", "--seed", "7", "--spp", "6"}, dir + "/still_render.exr");
+  expectSameImage(view, reference, "viewer screenshot against raylab render");
+  EXPECT_GT(meanLuminance(view), 0.01) << "the default scene rendered black";
+
+  // The window capture is the window: its size, and not black.
+  int w = 0, h = 0, channels = 0;
+  unsigned char* pixels = stbi_load(window.c_str(), &w, &h, &channels, 3);
+  ASSERT_NE(pixels, nullptr) << window;
+  EXPECT_EQ(w, 160);
+  EXPECT_EQ(h, 96);
+  long sum = 0;
+  for (int i = 0; i < w * h * 3; ++i) sum += pixels[i];
+  stbi_image_free(pixels);
+  EXPECT_GT(sum, 0) << "the captured window is black";
+}
+
+TEST(WindowTest, ScriptedMaterialChangeShowsWhereTheMaterialIsAndNowhereElse) {
+  const std::string dir = scratchDir();
+  const std::string before = dir + "/material_before.exr";
+  const std::string after = dir + "/material_after.exr";
+  const std::string script = writeScript("material.txt",
+                                         "# four still frames, then the ball turns green: frame 4 draws the\n"
+                                         "# preview, frames 5 to 8 four samples again\n"
+                                         "at 4 screenshot " + before + "\n"
+                                         "at 4 set material \"red plastic\" rho_d 0.1 0.6 0.1\n");
+  const CommandResult result = runView({kMinimalScene, "--width", "128", "--height", "80", "--no-aa", "--frames", "9",
+                                        "--script", script, "--screenshot", after});
+  expectCleanRun(result);
+  const Image a = readExr(before);
+  const Image b = readExr(after);
+  ASSERT_EQ(a.width, b.width);
+  ASSERT_EQ(a.height, b.height);
+
+  const Scene scene = loadScene({kMinimalScene, ""});
+  const std::vector<bool> inside = sphereMask(scene, "red plastic", a.width, a.height, 0.95f);
+  const std::vector<bool> nearby = sphereMask(scene, "red plastic", a.width, a.height, 1.05f);
+  std::size_t insideCount = 0, insideGreener = 0, outsideCount = 0, outsideChanged = 0;
+  for (std::uint32_t y = 0; y < a.height; ++y) {
+    for (std::uint32_t x = 0; x < a.width; ++x) {
+      const std::size_t i = std::size_t(y) * a.width + x;
+      const glm::vec4 pa = a.at(x, y), pb = b.at(x, y);
+      if (inside[i]) {
+        // Lit pixels of the ball (its shadowed side stays black): green rho_d up and red down make green gain
+        // on red.
+        if (pa.r + pa.g + pa.b < 1e-3f) continue;
+        ++insideCount;
+        if (pb.g - pb.r > pa.g - pa.r + 1e-4f) ++insideGreener;
+      } else if (!nearby[i]) {
+        ++outsideCount;
+        if (pa != pb) ++outsideChanged;
+      }
+    }
+  }
+  ASSERT_GT(insideCount, 200u) << "the lit ball covers too few pixels for the test to mean anything";
+  EXPECT_GT(double(insideGreener), 0.99 * double(insideCount)) << "the ball did not turn green";
+  EXPECT_EQ(outsideChanged, 0u) << "of " << outsideCount << " pixels away from the ball";
+}
+
+TEST(WindowTest, SwitchingToAModelTheKernelLacksRebuildsTheKernelAndRendersIt) {
+  const std::string dir = scratchDir();
+  const std::string before = dir + "/model_before.exr";
+  const std::string after = dir + "/model_after.exr";
+  const std::string script = writeScript("model.txt",
+                                         "at 2 screenshot " + before + "\n"
+                                         "at 2 model \"red plastic\" glass\n");
+  const CommandResult result = runView({kMinimalScene, "--width", "96", "--height", "64", "--no-aa", "--frames", "5",
+                                        "--script", script, "--screenshot", after});
+  expectCleanRun(result);
+  EXPECT_NE(result.output.find("kernel rebuilt"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("glass"), std::string::npos) << result.output;
+  const Image a = readExr(before);
+  const Image b = readExr(after);
+  const Scene scene = loadScene({kMinimalScene, ""});
+  const std::vector<bool> inside = sphereMask(scene, "red plastic", a.width, a.height, 0.95f);
+  // Glass needs the glass feature, which the minimal scene's kernel lacks: without the rebuilt kernel the ball
+  // would not refract. It shows the floor and the sky through it instead of red plastic.
+  std::size_t changed = 0, count = 0;
+  double glassSum = 0.0;
+  for (std::size_t i = 0; i < inside.size(); ++i) {
+    if (!inside[i]) continue;
+    const glm::vec4 pa = a.at(i % a.width, i / a.width), pb = b.at(i % b.width, i / b.width);
+    ++count;
+    if (glm::length(glm::vec3(pa - pb)) > 1e-3f * glm::length(glm::vec3(pa)) + 1e-6f) ++changed;
+    glassSum += pb.r + pb.g + pb.b;
+  }
+  ASSERT_GT(count, 100u);
+  EXPECT_GT(double(changed), 0.9 * double(count)) << "the glass ball looks like the plastic one";
+  EXPECT_GT(glassSum / count, 1e-3) << "the glass ball is black: its kernel does not refract";
+}
+
+TEST(WindowTest, ResizingMidRunKeepsRenderingAtTheNewSize) {
+  const std::string dir = scratchDir();
+  const std::string exr = dir + "/resized.exr";
+  const std::string script = writeScript("resize.txt", "at 2 resize 128 80\n");
+  const CommandResult result =
+      runView({"--width", "160", "--height", "96", "--frames", "6", "--script", script, "--screenshot", exr});
+  expectCleanRun(result);
+  // Frames 0 and 1 are passes at 160x96, frame 2 the preview after the resize, frames 3 to 5 three passes at
+  // the new size.
+  EXPECT_NE(result.output.find("3 spp  128x80"), std::string::npos) << result.output;
+  const Image view = readExr(exr);
+  EXPECT_GT(meanLuminance(view), 0.01) << "black after the resize";
+  const Image reference =
+      renderReference({"--width", "128", "--height", "80", "--spp", "3"}, dir + "/resized_render.exr");
+  expectSameImage(view, reference, "after the resize, against raylab render");
+}
+
+TEST(WindowTest, ScriptErrorsNameTheLineAndUsageErrorsTheOption) {
+  const std::string script = writeScript("typo.txt", "at 1 orbit 10 0\nat 2 set material nosuch rho_d 0.5\n");
+  const CommandResult typo = runView({"--frames", "2", "--script", script});
+  EXPECT_EQ(typo.exitCode, 1) << typo.output;
+  EXPECT_NE(typo.output.find("typo.txt:2"), std::string::npos) << typo.output;
+  EXPECT_NE(typo.output.find("nosuch"), std::string::npos) << typo.output;
+
+  const std::string bad = writeScript("bad.txt", "at 1 spin 10\n");
+  const CommandResult unknown = runView({"--frames", "2", "--script", bad});
+  EXPECT_EQ(unknown.exitCode, 1) << unknown.output;
+  EXPECT_NE(unknown.output.find("bad.txt:1"), std::string::npos) << unknown.output;
+
+  const CommandResult usage = runRaylab({"view", "--screenshot", "shot.png"});
+  EXPECT_EQ(usage.exitCode, 2) << usage.output;
+  EXPECT_NE(usage.output.find("--screenshot"), std::string::npos) << usage.output;
+}
+
+TEST(WindowTest, WithoutADisplayItSaysToUseXvfbAndWithoutADeviceItExitsThree) {
+  const CommandResult noDisplay = runCommand({RAYLAB_BINARY, "view", "--frames", "1"}, {"DISPLAY=", "WAYLAND_DISPLAY="});
+  EXPECT_EQ(noDisplay.exitCode, 1) << noDisplay.output;
+  EXPECT_NE(noDisplay.output.find("X11"), std::string::npos) << noDisplay.output;
+  EXPECT_NE(noDisplay.output.find("xvfb-run -a"), std::string::npos) << noDisplay.output;
+
+  const CommandResult noDevice = runCommand({RAYLAB_BINARY, "view", "--frames", "1"}, {"DISPLAY=", "VK_ICD_FILENAMES="});
+  EXPECT_EQ(noDevice.exitCode, 3) << noDevice.output;
+  EXPECT_NE(noDevice.output.find("tools/setup.sh"), std::string::npos) << noDevice.output;
+}
+
+}  // namespace
+}  // namespace raylab::test
