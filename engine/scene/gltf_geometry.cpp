@@ -226,21 +226,23 @@ std::vector<glm::vec3> toVec3(const std::vector<double>& values) {
 }
 
 // Triangle lists from lists, strips and fans (glTF 2.0 § 3.7.2.1), keeping strips' alternating winding
-// consistent; triangles with a repeated vertex (strip restarts) are dropped.
+// consistent. Strips and fans join their parts with degenerate triangles, which are dropped here; a list's
+// degenerate triangles are a defect, dropped (and reported) by dropZeroArea.
 std::vector<std::uint32_t> triangulate(const std::vector<std::uint32_t>& vertices, int mode, Document& document,
                                        const std::string& where) {
-  std::vector<std::uint32_t> triangles;
   const std::size_t n = vertices.size();
-  auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    if (a == b || b == c || a == c) return;
-    triangles.insert(triangles.end(), {a, b, c});
-  };
   if (mode == kModeTriangles) {
     if (n % 3 != 0) {
       document.fail(where + ": a triangle list of " + std::to_string(n) + " vertices (not a multiple of 3)");
     }
-    for (std::size_t i = 0; i + 2 < n; i += 3) add(vertices[i], vertices[i + 1], vertices[i + 2]);
-  } else if (mode == kModeStrip) {
+    return vertices;
+  }
+  std::vector<std::uint32_t> triangles;
+  auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    if (a == b || b == c || a == c) return;
+    triangles.insert(triangles.end(), {a, b, c});
+  };
+  if (mode == kModeStrip) {
     for (std::size_t i = 0; i + 2 < n; ++i) {
       if (i % 2 == 0) add(vertices[i], vertices[i + 1], vertices[i + 2]);
       else add(vertices[i + 1], vertices[i], vertices[i + 2]);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <map>
 
 #include "gltf_test_support.h"
@@ -94,6 +95,26 @@ TEST(GltfAssets, SweepMaterialsGoMonotonicallyAlongTheRow) {
     }
   }
   EXPECT_GE(sweeps, 10);
+}
+
+// docs/scenes.md prints minimal.gltf compactly; both must say the same (the generator aside).
+TEST(GltfAssets, TheDocumentedExampleIsTheCommittedMinimalScene) {
+  std::ifstream docs(std::filesystem::path(RAYLAB_SOURCE_DIR) / "docs" / "scenes.md");
+  ASSERT_TRUE(docs) << "docs/scenes.md is missing";
+  const std::string text((std::istreambuf_iterator<char>(docs)), std::istreambuf_iterator<char>());
+  const std::size_t section = text.find("## A minimal file");
+  ASSERT_NE(section, std::string::npos);
+  const std::size_t begin = text.find("```json\n", section);
+  ASSERT_NE(begin, std::string::npos);
+  const std::size_t end = text.find("```", begin + 8);
+  ASSERT_NE(end, std::string::npos);
+  nlohmann::json documented = nlohmann::json::parse(text.substr(begin + 8, end - begin - 8));
+  nlohmann::json committed = readJson(assetsDirectory() / "minimal.gltf");
+  documented["asset"].erase("generator");
+  committed["asset"].erase("generator");
+  EXPECT_EQ(documented, committed) << "regenerate the example in docs/scenes.md from assets/scenes/minimal.gltf";
+  const Scene scene = loadGltfText(text.substr(begin + 8, end - begin - 8), "", "docs example", {});
+  EXPECT_EQ(scene.spheres.size(), 1u);
 }
 
 }  // namespace

@@ -162,14 +162,14 @@ class Gltf:
         self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
         return len(self.doc["nodes"]) - 1
 
-    def material(self, name, raylab, preview=(0.8, 0.8, 0.8)):
+    def material(self, name, raylab, preview=None):
         """A material whose raylab model is `raylab`; `preview` is the base colour other viewers show."""
-        self.doc["materials"].append({
-            "name": name,
-            "pbrMetallicRoughness": {"baseColorFactor": rounded(list(preview)) + [1.0], "metallicFactor": 0.0,
-                                     "roughnessFactor": 0.5},
-            "extras": {"raylab": raylab},
-        })
+        material = {"name": name}
+        if preview is not None:
+            material["pbrMetallicRoughness"] = {"baseColorFactor": rounded(list(preview)) + [1.0],
+                                                "metallicFactor": 0.0, "roughnessFactor": 0.5}
+        material["extras"] = {"raylab": raylab}
+        self.doc["materials"].append(material)
         return len(self.doc["materials"]) - 1
 
     def sphere(self, name, center, radius, material):
@@ -186,8 +186,7 @@ class Gltf:
 
     def camera(self, name, position, target, yfov_degrees, up=(0.0, 1.0, 0.0)):
         self.doc["cameras"].append({"name": name, "type": "perspective",
-                                    "perspective": {"yfov": round(math.radians(yfov_degrees), 6),
-                                                    "znear": 0.05, "aspectRatio": 1.777778}})
+                                    "perspective": {"yfov": round(math.radians(yfov_degrees), 6), "znear": 0.05}})
         return self.node({"name": name + " node", "camera": len(self.doc["cameras"]) - 1,
                           "translation": rounded(position),
                           "rotation": rounded(look_rotation(sub(target, position), list(up)))})
@@ -212,9 +211,24 @@ class Gltf:
                 del doc[key]
         path = os.path.join(directory, self.name + ".gltf")
         with open(path, "w", encoding="ascii") as out:
-            json.dump(doc, out, indent=1)
-            out.write("\n")
+            out.write(to_json(doc) + "\n")
         return path
+
+
+def to_json(value, indent=""):
+    """JSON with one property per line but short arrays of numbers on one line, so that diffs and the
+    example in docs/scenes.md stay readable."""
+    inner = indent + "  "
+    if isinstance(value, dict):
+        if not value:
+            return "{}"
+        items = ",\n".join(inner + json.dumps(key) + ": " + to_json(item, inner) for key, item in value.items())
+        return "{\n" + items + "\n" + indent + "}"
+    if isinstance(value, list):
+        if all(not isinstance(item, (dict, list)) for item in value):
+            return "[" + ", ".join(json.dumps(item) for item in value) + "]"
+        return "[\n" + ",\n".join(inner + to_json(item, inner) for item in value) + "\n" + indent + "]"
+    return json.dumps(value)
 
 
 # ------------------------------------------------------------------------------------------------ geometry
@@ -504,9 +518,10 @@ def cornell_box():
 def minimal():
     """The example of docs/scenes.md: a ground square, one sphere, one light, one camera."""
     g = Gltf("minimal")
-    ground = g.material("ground", {"model": "lambert", "rho_d": [0.5, 0.5, 0.5]}, (0.5, 0.5, 0.5))
+    g.background((0.25, 0.3, 0.4))
+    ground = g.material("ground", {"model": "lambert", "rho_d": [0.5, 0.5, 0.5]})
     red = g.material("red plastic", {"model": "cooktorrance", "rho_d": [0.6, 0.1, 0.1], "rho_s": [1.0, 1.0, 1.0],
-                                     "m": 0.2, "eta": 1.5}, (0.6, 0.1, 0.1))
+                                     "m": 0.2, "eta": 1.5})
     positions, indices = quad([-3.0, 0.0, 3.0], [6.0, 0.0, 0.0], [0.0, 0.0, -6.0])
     g.node({"name": "ground", "mesh": g.mesh("ground", positions, indices, ground)})
     g.node({"name": "ball", "translation": [0.0, 1.0, 0.0],
