@@ -44,7 +44,7 @@ Chi2Result chi2Test(std::span<const glm::dvec3> directions, std::size_t attempts
 
 // The regularised upper incomplete gamma function Q(a, x) = Γ(a, x) / Γ(a), for a > 0, x >= 0: the p-value of a
 // χ² statistic x with k degrees of freedom is Q(k/2, x/2). Series for x < a + 1, continued fraction beyond
-// (Press et al., "Numerical Recipes", 3rd ed., 6.2), with relative accuracy near 1e-14 in both tails.
+// (Press et al., "Numerical Recipes", 3rd ed., 6.2), with a relative accuracy near 1e-13 in both tails.
 double upperIncompleteGammaQ(double a, double x);
 
 // Šidák's correction: the per-test significance that keeps the chance of any false alarm among `testCount`
