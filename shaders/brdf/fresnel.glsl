@@ -1,6 +1,6 @@
 // Fresnel reflectance of a smooth dielectric interface.
 //   F_Schlick:          Schlick, "An Inexpensive BRDF Model for Physically-based Rendering", Computer
-//                       Graphics Forum 13(3), 1994, eq. 15.
+//                       Graphics Forum 13(3), 1994.
 //   F_DielectricExact:  the unpolarised Fresnel equations (Born & Wolf, "Principles of Optics", §1.5.2),
 //                       F = (r_s^2 + r_p^2) / 2, rearranged below so that nothing cancels near eta = 1.
 #ifndef RAYLAB_BRDF_FRESNEL_GLSL

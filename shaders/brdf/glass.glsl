@@ -29,7 +29,8 @@ GlassEvent glassEvent(float eta, vec3 wi, vec3 n) {
   const float etaT = outside ? eta : 1.0;
   const vec3 nn = outside ? n : -n;
   const float cosI = abs(cosN);
-  // sin^2 theta_i from the cross product: 1 - cos^2 cancels near normal incidence.
+  // sin^2 theta_i from the cross product: 1 - cos^2 cancels near normal incidence. Rounding can lift it a
+  // few ulps above 1 at grazing incidence, hence the min.
   const vec3 c = cross(wi, n);
   const float sin2I = min(1.0, dot(c, c));
   const float ratio = etaI / etaT;

@@ -1,10 +1,10 @@
 // The half vector and the microfacet terms shared by the models, each from its components (../shared/BRDF_SPEC.md).
 //   D_Beckmann:        Beckmann & Spizzichino, "The Scattering of Electromagnetic Waves from Rough Surfaces",
 //                      1963, in the form of Cook & Torrance, "A Reflectance Model for Computer Graphics",
-//                      ACM TOG 1(1), 1982, eq. 3.
+//                      ACM TOG 1(1), 1982.
 //   G_TorranceSparrow: Torrance & Sparrow, "Theory for Off-Specular Reflection from Roughened Surfaces",
 //                      JOSA 57(9), 1967, as written by Blinn, "Models of Light Reflection for Computer
-//                      Synthesized Pictures", SIGGRAPH 1977, and Cook & Torrance 1982, eq. 2.
+//                      Synthesized Pictures", SIGGRAPH 1977, and Cook & Torrance 1982.
 #ifndef RAYLAB_BRDF_MICROFACET_GLSL
 #define RAYLAB_BRDF_MICROFACET_GLSL
 

@@ -24,7 +24,8 @@ BsdfSample acceptSample(vec3 wi, vec3 f, float pdf) {
   return BsdfSample(wi, f, pdf);
 }
 
-// Probability of sampling the specular lobe: its share of the summed RGB reflectances; 0.5 when both are 0.
+// Probability of sampling the specular lobe: its share of the summed RGB reflectances; 0.5 when both are 0
+// (f = 0 then, and the share would be 0/0).
 float specularProbability(vec3 diffuse, vec3 specular) {
   const float d = sum3(diffuse);
   const float s = sum3(specular);
@@ -35,7 +36,7 @@ float specularProbability(vec3 diffuse, vec3 specular) {
 // Returns (x, y) and the radius r.
 vec3 sampleConcentricDisk(vec2 u) {
   const vec2 a = 2.0 * u - 1.0;
-  if (a.x == 0.0 && a.y == 0.0) return vec3(0.0);
+  if (a.x == 0.0 && a.y == 0.0) return vec3(0.0);  // the centre, where both ratios below would be 0/0
   float r, phi;
   if (abs(a.x) > abs(a.y)) {
     r = a.x;
@@ -51,7 +52,7 @@ vec3 sampleConcentricDisk(vec2 u) {
 // z = sqrt((1 - r)(1 + r)) rather than sqrt(1 - x^2 - y^2), which cancels near the rim.
 vec3 sampleCosineHemisphere(vec2 u) {
   const vec3 disk = sampleConcentricDisk(u);
-  return vec3(disk.xy, sqrt(max(0.0, (1.0 - disk.z) * (1.0 + disk.z))));
+  return vec3(disk.xy, sqrt((1.0 - disk.z) * (1.0 + disk.z)));  // r = max(|a.x|, |a.y|) <= 1: never negative
 }
 
 float cosineHemispherePdf(vec3 wi) { return wi.z * kInvPi; }
@@ -62,6 +63,7 @@ float cosineHemispherePdf(vec3 wi) { return wi.z * kInvPi; }
 vec2 powerCosine(float v, float exponentPlusOne) {
   if (v <= 0.0) return vec2(0.0, 1.0);  // the limit v -> 0, where log(v) is -infinity
   const float L = log1pAccurate(v - 1.0) / exponentPlusOne;  // v - 1 is exact for v in [0.5, 1)
+  // L <= 0, so -expm1(2L) >= 0; the max only absorbs a rounding of -0.
   return vec2(exp(L), sqrt(max(0.0, -expm1Accurate(2.0 * L))));
 }
 

@@ -1,12 +1,12 @@
 // Ward (1992): an anisotropic Gaussian-like lobe of the half vector, plus Lambert.
-// | parameter | range      | default | meaning                     |
-// |-----------|------------|---------|-----------------------------|
-// | rho_d     | [0, 1]     | 0.5     | diffuse reflectance, RGB    |
-// | rho_s     | [0, 1]     | 0.5     | specular reflectance, RGB   |
-// | alpha_x   | [0.001, 1] | 0.2     | roughness along the tangent |
+// | parameter | range      | default | meaning                       |
+// |-----------|------------|---------|-------------------------------|
+// | rho_d     | [0, 1]     | 0.5     | diffuse reflectance, RGB      |
+// | rho_s     | [0, 1]     | 0.5     | specular reflectance, RGB     |
+// | alpha_x   | [0.001, 1] | 0.2     | roughness along the tangent   |
 // | alpha_y   | [0.001, 1] | 0.2     | roughness along the bitangent |
-// Ward, "Measuring and Modeling Anisotropic Reflection", SIGGRAPH 1992, eq. 5a; sampling of Walter 2005
-// (ward_lobe.glsl).
+// Ward, "Measuring and Modeling Anisotropic Reflection", SIGGRAPH 1992 (the anisotropic form); sampling of
+// Walter 2005 (ward_lobe.glsl).
 //   f = rho_d / pi + rho_s exp(-e) / (4 pi alpha_x alpha_y sqrt(cos_i cos_o)).
 // It loses energy and exceeds albedo 1 at grazing (docs/brdfs.md).
 #ifndef RAYLAB_BRDF_WARD_GLSL

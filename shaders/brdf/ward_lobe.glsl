@@ -14,7 +14,7 @@ float wardExponent(HalfVector hv, float alphaX, float alphaY) {
   return dot(slope, slope) / (hv.h.z * hv.h.z);
 }
 
-// Walter 2005, eqs. 6-7: phi_h = atan((alpha_y / alpha_x) tan(2 pi u_z)) in the quadrant of 2 pi u_z, i.e.
+// Walter 2005: phi_h = atan((alpha_y / alpha_x) tan(2 pi u_z)) in the quadrant of 2 pi u_z, i.e.
 // (cos phi_h, sin phi_h) along (alpha_x cos 2 pi u_z, alpha_y sin 2 pi u_z) = r (cos phi_h, sin phi_h); then
 // tan^2 theta_h = -ln(1 - u_y) / (cos^2 phi_h / alpha_x^2 + sin^2 phi_h / alpha_y^2) = -ln(1 - u_y) r^2.
 // So tan theta_h (cos phi_h, sin phi_h) = sqrt(-ln(1 - u_y)) (alpha_x cos 2 pi u_z, alpha_y sin 2 pi u_z).

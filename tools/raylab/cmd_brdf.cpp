@@ -25,7 +25,7 @@ int runBrdfEval(int argc, char** argv) {
   std::optional<std::uint32_t> deviceIndex;
   ArgParser args("raylab brdf eval", "--in CASES.csv --out VALUES.csv [options]",
                  "Evaluates the BRDF library on every row of CASES.csv and writes VALUES.csv\n"
-                 "(../shared/BRDF_SPEC.md). Input columns: id,model,params,wi,wo,n,t, with params as\n"
+                 "(docs/brdfs.md). Input columns: id,model,params,wi,wo,n,t, with params as\n"
                  "k=v;k=v (RGB as r/g/b; unnamed parameters take their defaults) and vectors as 'x y z';\n"
                  "glass may leave wo and t empty. Output columns: the same, then quantity,value: f for the\n"
                  "BRDF models, F_exact, F_schlick, F_schlick_naive, reflect, refract and tir for glass.\n"
