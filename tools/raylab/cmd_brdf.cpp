@@ -35,7 +35,7 @@ int runBrdfEval(int argc, char** argv) {
   args.option("--in", &inPath, "CASES.csv", "the cases to evaluate");
   args.option("--out", &outPath, "VALUES.csv", "where to write the values");
   args.choice("--backend", &backend, {"gpu", "cpu"}, "the shader library on the device, or the CPU reference (default gpu)");
-  args.option("--device", &deviceIndex, "Vulkan device index from `raylab devices` (default: best capable)");
+  args.option("--device", &deviceIndex, "gpu backend: Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(argc, argv)) return kExitOk;
   if (inPath.empty()) throw Error("raylab brdf eval: --in is required (see `raylab brdf eval --help`)", kExitUsage);
   if (outPath.empty()) throw Error("raylab brdf eval: --out is required (see `raylab brdf eval --help`)", kExitUsage);
@@ -51,8 +51,7 @@ int runBrdfEval(int argc, char** argv) {
     GpuSession session(deviceIndex);
     std::vector<gpu::BrdfEvalCase> inputs;
     for (const BrdfCase& c : file.cases) inputs.push_back(c.input);
-    for (const gpu::BrdfEvalValue& value : evaluateBrdfCasesOnce(session.device,
-                                                                 inputs, &evaluationSeconds)) {
+    for (const gpu::BrdfEvalValue& value : evaluateBrdfCasesOnce(session.device, inputs, &evaluationSeconds)) {
       results.push_back(fromDevice(value));
     }
   } else {
