@@ -1,6 +1,7 @@
 #include "scene/gltf_document.h"
 
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 #include "util/error.h"
@@ -42,7 +43,8 @@ std::string glbJson(const std::string& bytes, const std::string& label) {
   const std::uint32_t jsonType = readU32(bytes, kGlbHeaderSize + 4);
   if (jsonType != kGlbJsonChunk) throw Error(label + ": the first GLB chunk is not JSON");
   if (std::uint64_t(kGlbHeaderSize) + kGlbChunkHeaderSize + jsonLength > length) {
-    throw Error(label + ": the GLB JSON chunk (" + std::to_string(jsonLength) + " bytes) runs past the end of the file");
+    throw Error(label + ": the GLB JSON chunk (" + std::to_string(jsonLength) +
+                " bytes) runs past the end of the file");
   }
   return bytes.substr(kGlbHeaderSize + kGlbChunkHeaderSize, jsonLength);
 }
@@ -111,6 +113,28 @@ void Document::reportIgnored() const {
 std::string describe(std::string_view kind, int index, const std::string& name) {
   std::string text = std::string(kind) + " " + std::to_string(index);
   if (!name.empty()) text += " '" + name + "'";
+  return text;
+}
+
+const nlohmann::json* findPath(const nlohmann::json& object, std::initializer_list<const char*> path) {
+  const nlohmann::json* current = &object;
+  for (const char* key : path) {
+    if (!current->is_object()) return nullptr;
+    const auto it = current->find(key);
+    if (it == current->end()) return nullptr;
+    current = &*it;
+  }
+  return current;
+}
+
+std::string quote(const nlohmann::json& value) {
+  const std::string text = value.dump();
+  return text.size() > 40 ? text.substr(0, 37) + "..." : text;
+}
+
+std::string formatNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
   return text;
 }
 

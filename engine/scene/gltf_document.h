@@ -3,6 +3,7 @@
 // several files open knows which one is at fault.
 #pragma once
 
+#include <initializer_list>
 #include <set>
 #include <string>
 #include <string_view>
@@ -39,5 +40,14 @@ void checkSchema(const nlohmann::json& root, const std::string& label);
 
 // "node 3 'wheel'", "material 0", ...: how messages name an element of a top-level array.
 std::string describe(std::string_view kind, int index, const std::string& name);
+
+// The value at `path` of nested objects (extras, extensions), or null when any step is missing.
+const nlohmann::json* findPath(const nlohmann::json& object, std::initializer_list<const char*> path);
+
+// A JSON value as messages quote it, shortened to 40 characters.
+std::string quote(const nlohmann::json& value);
+
+// A number as messages print it (%g).
+std::string formatNumber(double value);
 
 }  // namespace raylab::gltf

@@ -13,6 +13,7 @@ constexpr int kModeStrip = TINYGLTF_MODE_TRIANGLE_STRIP;
 constexpr int kModeFan = TINYGLTF_MODE_TRIANGLE_FAN;
 // glTF requires unit normals; writers round, so only a larger error counts as a repair.
 constexpr float kUnitTolerance = 1e-3f;
+constexpr std::size_t kMaxZeroElements = std::size_t(1) << 24;
 
 std::string componentName(int componentType) {
   switch (componentType) {
@@ -102,13 +103,19 @@ class AccessorReader {
     const int components = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type));
     const int componentSize = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType));
     const std::size_t count = accessor.count;
-    std::vector<double> values(count * std::size_t(components), 0.0);
-
-    // Without a buffer view the elements are zeros, to be replaced by sparse values (glTF 2.0 § 3.6.2.3).
+    std::vector<double> values;
     if (accessor.bufferView >= 0) {
-      readElements(accessor.bufferView, accessor.byteOffset, count, accessor.componentType, components,
-                   componentSize, accessor.normalized, where, values.data());
-    } else if (!accessor.sparse.isSparse) {
+      values = readElements(accessor.bufferView, accessor.byteOffset, count, accessor.componentType, components,
+                            componentSize, accessor.normalized, where);
+    } else if (accessor.sparse.isSparse) {
+      // Without a buffer view the elements are zeros, to be replaced by sparse values (glTF 2.0 § 3.6.2.3);
+      // no buffer bounds the count then, so a sane limit does.
+      if (count > kMaxZeroElements) {
+        document_.fail(where + ": " + std::to_string(count) + " elements without a buffer view is more than " +
+                       std::to_string(kMaxZeroElements));
+      }
+      values.assign(count * std::size_t(components), 0.0);
+    } else {
       document_.fail(where + ": has neither a buffer view nor sparse values");
     }
     if (accessor.sparse.isSparse) applySparse(accessor, components, componentSize, where, values);
@@ -117,10 +124,10 @@ class AccessorReader {
 
  private:
   // Reads `count` elements starting `byteOffset` bytes into buffer view `viewIndex`, after checking that they
-  // lie inside the view and the view inside its buffer.
-  void readElements(int viewIndex, std::size_t byteOffset, std::size_t count, int componentType, int components,
-                    int componentSize, bool normalized, const std::string& where, double* out) {
-    if (count == 0) return;
+  // lie inside the view and the view inside its buffer (before allocating: the count comes from the file).
+  std::vector<double> readElements(int viewIndex, std::size_t byteOffset, std::size_t count, int componentType,
+                                   int components, int componentSize, bool normalized, const std::string& where) {
+    if (count == 0) return {};
     const tinygltf::BufferView& view = bufferView(viewIndex, where);
     const std::string viewName = describe("buffer view", viewIndex, view.name);
     const std::uint64_t elementSize = std::uint64_t(components) * std::uint64_t(componentSize);
@@ -137,6 +144,7 @@ class AccessorReader {
                      std::to_string(view.byteLength));
     }
     const unsigned char* base = viewData(view, viewIndex, where) + byteOffset;
+    std::vector<double> out(count * std::size_t(components));
     for (std::size_t e = 0; e < count; ++e) {
       const unsigned char* element = base + e * stride;
       for (int c = 0; c < components; ++c) {
@@ -144,6 +152,7 @@ class AccessorReader {
             readComponent(element + c * componentSize, componentType, normalized);
       }
     }
+    return out;
   }
 
   const tinygltf::BufferView& bufferView(int viewIndex, const std::string& where) {
@@ -185,13 +194,13 @@ class AccessorReader {
                      "; expected unsigned byte, unsigned short or unsigned int");
     }
     const std::size_t count = std::size_t(sparse.count);
-    std::vector<double> indices(count);
-    readElements(sparse.indices.bufferView, std::size_t(sparse.indices.byteOffset), count, indexType, 1,
-                 tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(indexType)), false,
-                 sparseWhere + " indices", indices.data());
-    std::vector<double> replacements(count * std::size_t(components));
-    readElements(sparse.values.bufferView, std::size_t(sparse.values.byteOffset), count, accessor.componentType,
-                 components, componentSize, accessor.normalized, sparseWhere + " values", replacements.data());
+    const std::vector<double> indices =
+        readElements(sparse.indices.bufferView, std::size_t(sparse.indices.byteOffset), count, indexType, 1,
+                     tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(indexType)), false,
+                     sparseWhere + " indices");
+    const std::vector<double> replacements =
+        readElements(sparse.values.bufferView, std::size_t(sparse.values.byteOffset), count, accessor.componentType,
+                     components, componentSize, accessor.normalized, sparseWhere + " values");
     for (std::size_t i = 0; i < count; ++i) {
       const double target = indices[i];
       if (target >= double(accessor.count)) {
@@ -258,9 +267,9 @@ std::size_t dropZeroArea(Mesh& mesh) {
   std::vector<std::uint32_t> kept;
   kept.reserve(mesh.indices.size());
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    const glm::vec3 p0 = mesh.positions[mesh.indices[t]];
-    const glm::vec3 cross = glm::cross(mesh.positions[mesh.indices[t + 1]] - p0, mesh.positions[mesh.indices[t + 2]] - p0);
-    if (glm::dot(cross, cross) > 0.0f) kept.insert(kept.end(), mesh.indices.begin() + long(t), mesh.indices.begin() + long(t) + 3);
+    const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+    const glm::vec3 cross = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+    if (glm::dot(cross, cross) > 0.0f) kept.insert(kept.end(), {a, b, c});
   }
   const std::size_t dropped = (mesh.indices.size() - kept.size()) / 3;
   mesh.indices = std::move(kept);

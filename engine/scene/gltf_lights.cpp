@@ -1,7 +1,6 @@
 #include "scene/gltf_lights.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "util/error.h"
 
@@ -10,12 +9,6 @@ namespace raylab::gltf {
 namespace {
 
 constexpr double kHalfPi = 1.57079632679489661923;
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 }  // namespace
 
@@ -29,12 +22,14 @@ Light convertLight(const Document& document, int lightIndex, const glm::mat4& wo
   const std::string where = describe("light", lightIndex, gltfLight.name) + " (at " + nodeWhere + ")";
 
   glm::vec3 color(1.0f);
-  if (!gltfLight.color.empty()) color = glm::vec3(float(gltfLight.color[0]), float(gltfLight.color[1]), float(gltfLight.color[2]));
+  if (!gltfLight.color.empty()) {
+    color = glm::vec3(float(gltfLight.color[0]), float(gltfLight.color[1]), float(gltfLight.color[2]));
+  }
   if (!(color.r >= 0.0f && color.g >= 0.0f && color.b >= 0.0f && std::isfinite(color.r + color.g + color.b))) {
     document.fail(where + ": color must be three finite numbers >= 0");
   }
   if (!(gltfLight.intensity >= 0.0) || !std::isfinite(gltfLight.intensity)) {
-    document.fail(where + ": intensity " + number(gltfLight.intensity) + " must be finite and >= 0");
+    document.fail(where + ": intensity " + formatNumber(gltfLight.intensity) + " must be finite and >= 0");
   }
 
   Light light;
@@ -61,7 +56,7 @@ Light convertLight(const Document& document, int lightIndex, const glm::mat4& wo
     const double outer = gltfLight.spot.outerConeAngle;
     // KHR_lights_punctual: 0 <= inner < outer <= pi/2; equal angles are accepted as a hard edge.
     if (!(inner >= 0.0 && inner <= outer && outer > 0.0 && outer <= kHalfPi)) {
-      document.fail(where + ": spot cone angles inner " + number(inner) + " and outer " + number(outer) +
+      document.fail(where + ": spot cone angles inner " + formatNumber(inner) + " and outer " + formatNumber(outer) +
                     " must satisfy 0 <= inner <= outer <= pi/2 and outer > 0");
     }
     record.cosInner = float(std::cos(inner));

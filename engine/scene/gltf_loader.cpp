@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -23,6 +24,7 @@ namespace raylab {
 namespace {
 
 using gltf::Document;
+using gltf::findPath;
 using nlohmann::json;
 
 constexpr float kUniformScaleTolerance = 1e-4f;  // relative, for the scale of a raylab sphere's node
@@ -33,17 +35,6 @@ constexpr float kFramingMargin = 1.05f;
 // The default light: irradiance at the scene's centre such that white Lambert facing it has radiance 0.8.
 constexpr float kDefaultLightRadiance = 0.8f;
 constexpr float kPi = 3.14159265358979323846f;
-
-const json* findPath(const json& object, std::initializer_list<const char*> path) {
-  const json* current = &object;
-  for (const char* key : path) {
-    if (!current->is_object()) return nullptr;
-    const auto it = current->find(key);
-    if (it == current->end()) return nullptr;
-    current = &*it;
-  }
-  return current;
-}
 
 bool isFinite(const glm::mat4& m) {
   for (int c = 0; c < 4; ++c) {
@@ -58,7 +49,8 @@ bool isFinite(const glm::mat4& m) {
 glm::vec3 readColor(const json& value, const std::string& where) {
   const bool ok = value.is_array() && value.size() == 3 && value[0].is_number() && value[1].is_number() &&
                   value[2].is_number();
-  glm::vec3 color = ok ? glm::vec3(value[0].get<float>(), value[1].get<float>(), value[2].get<float>()) : glm::vec3(-1.0f);
+  const glm::vec3 color =
+      ok ? glm::vec3(value[0].get<float>(), value[1].get<float>(), value[2].get<float>()) : glm::vec3(-1.0f);
   if (!ok || !(color.r >= 0.0f && color.g >= 0.0f && color.b >= 0.0f) || !std::isfinite(color.r + color.g + color.b)) {
     throw Error(where + ": expected [r, g, b] of finite numbers >= 0, found " + value.dump());
   }
@@ -78,7 +70,6 @@ struct Bounds {
     low = glm::min(low, p);
     high = glm::max(high, p);
   }
-  bool empty() const { return low.x > high.x; }
 };
 
 class SceneBuilder {
@@ -127,7 +118,7 @@ class SceneBuilder {
       document_.fail("the default scene " + std::to_string(sceneIndex) + " does not exist (the file has " +
                      std::to_string(model_.scenes.size()) + ")");
     }
-    readSceneExtras(document_.json["scenes"][std::size_t(sceneIndex)],
+    readSceneExtras(document_.json.at("scenes").at(std::size_t(sceneIndex)),
                     gltf::describe("scene", sceneIndex, model_.scenes[std::size_t(sceneIndex)].name));
     return model_.scenes[std::size_t(sceneIndex)].nodes;
   }
@@ -158,7 +149,8 @@ class SceneBuilder {
       if (node.scale.size() == 3) s = glm::vec3(node.scale[0], node.scale[1], node.scale[2]);
       if (node.rotation.size() == 4) {
         // glTF stores x, y, z, w; glm's constructor takes w first.
-        r = glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2]));
+        const std::vector<double>& q = node.rotation;
+        r = glm::quat(float(q[3]), float(q[0]), float(q[1]), float(q[2]));
         const float length = glm::length(r);
         if (!(length > 0.0f) || !std::isfinite(length)) document_.fail(where + ": rotation is not a unit quaternion");
         r /= length;
@@ -176,12 +168,14 @@ class SceneBuilder {
     }
     const tinygltf::Node& node = model_.nodes[std::size_t(nodeIndex)];
     const std::string where = gltf::describe("node", nodeIndex, node.name);
-    if (onPath_[std::size_t(nodeIndex)]) document_.fail(where + ": is its own ancestor (the node hierarchy has a cycle)");
+    if (onPath_[std::size_t(nodeIndex)]) {
+      document_.fail(where + ": is its own ancestor (the node hierarchy has a cycle)");
+    }
     onPath_[std::size_t(nodeIndex)] = true;
 
     const glm::mat4 world = parent * localTransform(node, where);
     if (!isFinite(world)) document_.fail(where + ": the world transform overflows");
-    const json& nodeJson = document_.json["nodes"][std::size_t(nodeIndex)];
+    const json& nodeJson = document_.json.at("nodes").at(std::size_t(nodeIndex));
     if (node.skin >= 0) document_.ignore("skins (meshes are shown in their bind pose)");
 
     const json* sphere = nodeRaylabSphere(nodeJson, where);
@@ -222,7 +216,9 @@ class SceneBuilder {
 
   void addSphere(const json& sphere, const tinygltf::Node& node, const glm::mat4& world, const std::string& where) {
     const std::string prefix = document_.label + ": " + where + ": extras.raylab.sphere";
-    if (!sphere.is_object()) throw Error(prefix + ": expected {\"radius\": r, \"material\": i}, found " + sphere.dump());
+    if (!sphere.is_object()) {
+      throw Error(prefix + ": expected {\"radius\": r, \"material\": i}, found " + sphere.dump());
+    }
     for (const auto& [key, value] : sphere.items()) {
       if (key != "radius" && key != "material") {
         throw Error(prefix + ": unknown key '" + key + "' (a sphere has radius and material)");
@@ -307,10 +303,10 @@ class SceneBuilder {
     if (!options_.camera.empty()) {
       std::string known;
       for (const CameraUse& use : cameras_) {
-        const std::string& cameraName = model_.cameras[std::size_t(use.camera)].name;
+        const std::string& ownName = model_.cameras[std::size_t(use.camera)].name;
         const std::string& nodeName = model_.nodes[std::size_t(use.node)].name;
-        if (chosen == nullptr && (cameraName == options_.camera || nodeName == options_.camera)) chosen = &use;
-        known += (known.empty() ? "'" : ", '") + this->cameraName(use) + "'";
+        if (chosen == nullptr && (ownName == options_.camera || nodeName == options_.camera)) chosen = &use;
+        known += (known.empty() ? "'" : ", '") + cameraName(use) + "'";
       }
       if (chosen == nullptr) {
         document_.fail("has no camera named '" + options_.camera + "' (" +
@@ -429,7 +425,8 @@ Scene loadGltfFile(const std::string& path, const GltfOptions& options) {
   if (std::filesystem::is_directory(status)) throw Error(path + ": is a directory, not a glTF file");
   const std::filesystem::path file(path);
   std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   const std::string bytes = readTextFile(path);
   Document document = gltf::parseDocument(bytes, file.parent_path().string(), path, extension == ".glb");
   return loadDocument(document, file.stem().string(), options);

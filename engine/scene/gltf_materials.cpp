@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <map>
 
@@ -29,23 +28,13 @@ float etaFromF0(float f0) {
   return (1.0f + s) / (1.0f - s);
 }
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
 // A glTF factor must lie in [low, high]; the error names the material and the property.
 float checkedFactor(double value, double low, double high, const std::string& where, const std::string& property) {
   if (!(value >= low && value <= high)) {
-    throw Error(where + ": " + property + " = " + number(value) + " is outside [" + number(low) + ", " + number(high) + "]");
+    throw Error(where + ": " + property + " = " + formatNumber(value) + " is outside [" + formatNumber(low) + ", " +
+                formatNumber(high) + "]");
   }
   return static_cast<float>(value);
-}
-
-std::string found(const json& value) {
-  std::string text = value.dump();
-  return text.size() > 40 ? text.substr(0, 37) + "..." : text;
 }
 
 std::uint32_t wrapMode(int glMode, const std::string& where) {
@@ -54,7 +43,8 @@ std::uint32_t wrapMode(int glMode, const std::string& where) {
     case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return gpu::kWrapClamp;
     case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return gpu::kWrapMirror;
   }
-  throw Error(where + ": wrap mode " + std::to_string(glMode) + " is not 10497 (repeat), 33071 (clamp) or 33648 (mirror)");
+  throw Error(where + ": wrap mode " + std::to_string(glMode) +
+              " is not 10497 (repeat), 33071 (clamp) or 33648 (mirror)");
 }
 
 // Base-colour textures as RGBA8, each glTF texture converted once however many materials use it.
@@ -147,17 +137,6 @@ class TextureConverter {
   std::map<int, int> cache_;
 };
 
-const json* findPath(const json& object, std::initializer_list<const char*> path) {
-  const json* current = &object;
-  for (const char* key : path) {
-    if (!current->is_object()) return nullptr;
-    const auto it = current->find(key);
-    if (it == current->end()) return nullptr;
-    current = &*it;
-  }
-  return current;
-}
-
 bool hasRhoD(std::uint32_t model) {
   for (const ParamInfo& param : modelInfo(model).params) {
     if (param.name == "rho_d" || param.name == "Rd") return true;
@@ -194,13 +173,13 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
 
 void applyRaylabMaterial(gpu::MaterialRecord& record, const json& raylab, const std::string& where) {
   const std::string extras = where + ": extras.raylab";
-  if (!raylab.is_object()) throw Error(extras + ": expected an object, found " + found(raylab));
+  if (!raylab.is_object()) throw Error(extras + ": expected an object, found " + quote(raylab));
   if (const auto model = raylab.find("model"); model != raylab.end()) {
     const ModelInfo* info = model->is_string() ? findModel(model->get<std::string>()) : nullptr;
     if (info == nullptr) {
       std::string known;
       for (const ModelInfo& m : allModels()) known += (known.empty() ? "" : ", ") + std::string(m.name);
-      throw Error(extras + ".model: " + found(*model) + " is not a model (the models are " + known + ")");
+      throw Error(extras + ".model: " + quote(*model) + " is not a model (the models are " + known + ")");
     }
     record = defaultRecord(info->id);
   }
@@ -216,10 +195,10 @@ void applyRaylabMaterial(gpu::MaterialRecord& record, const json& raylab, const 
     if (param->rgb) {
       const bool rgb = value.is_array() && value.size() == 3 && value[0].is_number() && value[1].is_number() &&
                        value[2].is_number();
-      if (!rgb) throw Error(extras + "." + key + ": expected [r, g, b], found " + found(value));
+      if (!rgb) throw Error(extras + "." + key + ": expected [r, g, b], found " + quote(value));
       v = glm::vec3(value[0].get<float>(), value[1].get<float>(), value[2].get<float>());
     } else {
-      if (!value.is_number()) throw Error(extras + "." + key + ": expected a number, found " + found(value));
+      if (!value.is_number()) throw Error(extras + "." + key + ": expected a number, found " + quote(value));
       v = glm::vec3(value.get<float>());
     }
     setParam(record, key, v, extras);
@@ -231,7 +210,7 @@ void convertMaterials(Document& document, Scene& scene) {
   const json* materialsJson = findPath(document.json, {"materials"});
   for (std::size_t i = 0; i < document.model.materials.size(); ++i) {
     const tinygltf::Material& material = document.model.materials[i];
-    const json& materialJson = (*materialsJson)[i];
+    const json& materialJson = materialsJson->at(i);
     const std::string where = document.label + ": " + describe("material", int(i), material.name);
     const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
 
@@ -264,7 +243,8 @@ void convertMaterials(Document& document, Scene& scene) {
       if (pbr.baseColorTexture.texCoord != 0) {
         document.ignore("base-colour textures on TEXCOORD_1 and above");
       } else if (hasRhoD(record.model)) {
-        record.baseColorTexture = textures.convert(pbr.baseColorTexture.index, describe("material", int(i), material.name));
+        record.baseColorTexture =
+            textures.convert(pbr.baseColorTexture.index, describe("material", int(i), material.name));
       }
     }
     if (pbr.metallicRoughnessTexture.index >= 0 || material.normalTexture.index >= 0 ||

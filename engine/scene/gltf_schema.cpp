@@ -60,9 +60,10 @@ const Shape kPbr{{numbers("baseColorFactor", 4), object("baseColorTexture", kTex
                   number("roughnessFactor"), object("metallicRoughnessTexture", kTextureInfo)}};
 const Shape kIor{{number("ior")}};
 const Shape kTransmission{{number("transmissionFactor"), object("transmissionTexture", kTextureInfo)}};
-const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr), object("normalTexture", kNormalTextureInfo),
-                       object("occlusionTexture", kOcclusionTextureInfo), object("emissiveTexture", kTextureInfo),
-                       numbers("emissiveFactor", 3), string("alphaMode"), number("alphaCutoff"), boolean("doubleSided")},
+const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
+                       object("normalTexture", kNormalTextureInfo), object("occlusionTexture", kOcclusionTextureInfo),
+                       object("emissiveTexture", kTextureInfo), numbers("emissiveFactor", 3), string("alphaMode"),
+                       number("alphaCutoff"), boolean("doubleSided")},
                       {object("KHR_materials_ior", kIor), object("KHR_materials_transmission", kTransmission)}};
 const Shape kPrimitive{{required(indexMap("attributes")), index("indices"), index("material"), index("mode"),
                         indexMaps("targets")}};
@@ -77,9 +78,9 @@ const Shape kSparseIndices{{required(index("bufferView")), index("byteOffset"), 
 const Shape kSparseValues{{required(index("bufferView")), index("byteOffset")}};
 const Shape kSparse{{required(index("count")), required(object("indices", kSparseIndices)),
                      required(object("values", kSparseValues))}};
-const Shape kAccessor{{index("bufferView"), index("byteOffset"), required(index("componentType")), boolean("normalized"),
-                       required(index("count")), required(string("type")), numbers("max"), numbers("min"),
-                       object("sparse", kSparse), string("name")}};
+const Shape kAccessor{{index("bufferView"), index("byteOffset"), required(index("componentType")),
+                       boolean("normalized"), required(index("count")), required(string("type")), numbers("max"),
+                       numbers("min"), object("sparse", kSparse), string("name")}};
 const Shape kBufferView{{required(index("buffer")), index("byteOffset"), required(index("byteLength")),
                          index("byteStride"), index("target"), string("name")}};
 const Shape kBuffer{{string("uri"), required(index("byteLength")), string("name")}};
@@ -92,14 +93,15 @@ const Shape kOrthographic{{required(number("xmag")), required(number("ymag")), r
 const Shape kCamera{{required(string("type")), object("perspective", kPerspective),
                      object("orthographic", kOrthographic), string("name")}};
 const Shape kSpot{{number("innerConeAngle"), number("outerConeAngle")}};
-const Shape kLight{{string("name"), numbers("color", 3), number("intensity"), required(string("type")), number("range"),
-                    object("spot", kSpot)}};
+const Shape kLight{{string("name"), numbers("color", 3), number("intensity"), required(string("type")),
+                    number("range"), object("spot", kSpot)}};
 const Shape kLights{{required(objects("lights", kLight))}};
 const Shape kAsset{{required(string("version")), string("minVersion"), string("generator"), string("copyright")}};
-const Shape kRoot{{required(object("asset", kAsset)), index("scene"), objects("scenes", kScene), objects("nodes", kNode),
-                   objects("meshes", kMesh), objects("accessors", kAccessor), objects("bufferViews", kBufferView),
-                   objects("buffers", kBuffer), objects("materials", kMaterial), objects("textures", kTexture),
-                   objects("images", kImage), objects("samplers", kSampler), objects("cameras", kCamera),
+const Shape kRoot{{required(object("asset", kAsset)), index("scene"), objects("scenes", kScene),
+                   objects("nodes", kNode), objects("meshes", kMesh), objects("accessors", kAccessor),
+                   objects("bufferViews", kBufferView), objects("buffers", kBuffer), objects("materials", kMaterial),
+                   objects("textures", kTexture), objects("images", kImage), objects("samplers", kSampler),
+                   objects("cameras", kCamera),
                    objects("skins", kAnyObject), objects("animations", kAnyObject), strings("extensionsUsed"),
                    strings("extensionsRequired")},
                   {object("KHR_lights_punctual", kLights)}};
@@ -193,11 +195,15 @@ class Checker {
     const std::string what = property.length > 0 ? "an array of " + std::to_string(property.length) + " numbers"
                                                   : "an array";
     expect(value, Type::kArray, path, what);
-    if (property.length > 0 && value.size() != property.length) fail(path, "expected " + what + ", found " + found(value));
+    if (property.length > 0 && value.size() != property.length) {
+      fail(path, "expected " + what + ", found " + found(value));
+    }
     for (std::size_t i = 0; i < value.size(); ++i) {
       const std::string elementPath = path + "[" + std::to_string(i) + "]";
       expect(value[i], property.element, elementPath, expected(property.element));
-      if (property.element == Type::kObject && property.shape != nullptr) checkObject(value[i], *property.shape, elementPath);
+      if (property.element == Type::kObject && property.shape != nullptr) {
+        checkObject(value[i], *property.shape, elementPath);
+      }
     }
   }
 

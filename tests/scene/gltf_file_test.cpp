@@ -113,7 +113,8 @@ TEST(GltfFile, MalformedJsonNamesTheFileLineAndColumn) {
 TEST(GltfFile, WrongJsonTypesAreErrorsNamingTheirPath) {
   GltfBuilder b = quadScene();
   b.doc()["nodes"][0]["translation"] = {1, 2};
-  EXPECT_EQ(errorOf([&] { b.load(); }), "test: nodes[0].translation: expected an array of 3 numbers, found an array [1,2]");
+  EXPECT_EQ(errorOf([&] { b.load(); }),
+            "test: nodes[0].translation: expected an array of 3 numbers, found an array [1,2]");
   b.doc()["nodes"][0]["translation"] = {1, 2, "3"};
   EXPECT_EQ(errorOf([&] { b.load(); }), "test: nodes[0].translation[2]: expected a number, found the string \"3\"");
   b.doc()["nodes"][0].erase("translation");

@@ -70,8 +70,10 @@ TEST(GltfGeometry, IndicesOutOfRangeAreAnError) {
   GltfBuilder b;
   b.addNode({{"mesh", b.addMesh(kQuad, {0, 1, 9})}});
   const std::string error = loadError(b);
-  EXPECT_NE(error.find("accessor 1 (indices of mesh 0 primitive 0): index 9 at position 2 is out of range (4 vertices)"),
-            std::string::npos) << error;
+  EXPECT_NE(
+      error.find("accessor 1 (indices of mesh 0 primitive 0): index 9 at position 2 is out of range (4 vertices)"),
+      std::string::npos)
+      << error;
 }
 
 TEST(GltfGeometry, AccessorTypesAreCheckedPerAttribute) {
@@ -80,8 +82,10 @@ TEST(GltfGeometry, AccessorTypesAreCheckedPerAttribute) {
   b.addNode({{"mesh", mesh}});
   b.doc()["accessors"][0]["componentType"] = 5123;  // POSITION as unsigned short
   std::string error = loadError(b);
-  EXPECT_NE(error.find("accessor 0 (POSITION of mesh 0 primitive 0): is VEC3 of unsigned short; expected VEC3 of float"),
-            std::string::npos) << error;
+  EXPECT_NE(
+      error.find("accessor 0 (POSITION of mesh 0 primitive 0): is VEC3 of unsigned short; expected VEC3 of float"),
+      std::string::npos)
+      << error;
 
   GltfBuilder uv;
   const int quad = uv.addQuad();
@@ -137,7 +141,8 @@ TEST(GltfGeometry, InterleavedAttributesAreReadWithTheirStride) {
   b.doc()["accessors"].push_back(
       {{"bufferView", view}, {"byteOffset", 12}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}});
   const int indices = b.addIndices(kQuadIndices);
-  b.doc()["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", indices}}}}});
+  const json primitive = {{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", indices}};
+  b.doc()["meshes"].push_back({{"primitives", {primitive}}});
   b.addNode({{"mesh", 0}});
   const Scene scene = b.load();
   EXPECT_EQ(scene.meshes[0].positions, kQuad);

@@ -16,13 +16,16 @@ using nlohmann::json;
 
 // 2x2 RGB: red, green / blue, white.
 constexpr const char* kPngRgb =
-    "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAEklEQVR42mP4z8DAAMIM/4EAAB/uBfvxq7p3AAAAAElFTkSuQmCC";
+    "data:image/png;base64,"
+    "iVBORw0KGgoAAAANSUhEUgAAAAIAAAACCAIAAAD91JpzAAAAEklEQVR42mP4z8DAAMIM/4EAAB/uBfvxq7p3AAAAAElFTkSuQmCC";
 // 3x1 grey, 16 bits: 0x0000, 0x8080, 0xffff.
 constexpr const char* kPngGrey16 =
-    "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAMAAAABEAAAAABuG5crAAAAD0lEQVR42mNgYGho+P8fAAaEAv//G2LxAAAAAElFTkSuQmCC";
+    "data:image/png;base64,"
+    "iVBORw0KGgoAAAANSUhEUgAAAAMAAAABEAAAAABuG5crAAAAD0lEQVR42mNgYGho+P8fAAaEAv//G2LxAAAAAElFTkSuQmCC";
 // 2x1 grey and alpha: (10, 20), (200, 250).
 constexpr const char* kPngGreyAlpha =
-    "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAIAAAABCAQAAABeK7cBAAAADUlEQVR42mPgEjnxCwAC8wHhibjEdAAAAABJRU5ErkJggg==";
+    "data:image/png;base64,"
+    "iVBORw0KGgoAAAANSUhEUgAAAAIAAAABCAQAAABeK7cBAAAADUlEQVR42mPgEjnxCwAC8wHhibjEdAAAAABJRU5ErkJggg==";
 
 void expectNear(glm::vec3 actual, glm::vec3 expected, const std::string& what, float tolerance = 1e-5f) {
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(actual[i], expected[i], tolerance) << what << " component " << i;

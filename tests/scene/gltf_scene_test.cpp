@@ -87,7 +87,8 @@ TEST(GltfScene, CameraLooksDownItsNodesMinusZWithYUp) {
   b.addNode({{"mesh", b.addQuad()}});
   b.doc()["cameras"] = {perspective("cam", 0.5)};
   // Turned 90 degrees about +y: -Z becomes -X; raised to y = 2.
-  b.addNode({{"name", "camera node"}, {"camera", 0}, {"translation", {5, 2, 0}}, {"rotation", rotation(90, {0, 1, 0})}});
+  b.addNode({{"name", "camera node"}, {"camera", 0}, {"translation", {5, 2, 0}},
+             {"rotation", rotation(90, {0, 1, 0})}});
   const Scene scene = b.load();
   EXPECT_EQ(scene.camera.name, "cam");
   expectNear(scene.camera.position, {5, 2, 0}, "position");
@@ -249,8 +250,8 @@ TEST(GltfScene, RaylabSpheresAreExactSpheresInWorldSpace) {
 TEST(GltfScene, ARaylabSphereUnderNonUniformScaleIsAnErrorNamingTheNode) {
   GltfBuilder b;
   b.addMaterial(json::object());
-  const int ball = b.addNode({{"name", "egg"}, {"extras", {{"raylab", {{"sphere", {{"radius", 1}, {"material", 0}}}}}}}},
-                             false);
+  const json sphere = {{"radius", 1}, {"material", 0}};
+  const int ball = b.addNode({{"name", "egg"}, {"extras", {{"raylab", {{"sphere", sphere}}}}}}, false);
   b.addNode({{"name", "squash"}, {"scale", {1, 1.5, 1}}, {"children", {ball}}});
   const std::string error = errorOf([&] { b.load(); });
   EXPECT_NE(error.find("test: node 0 'egg': a raylab sphere needs a uniform scale"), std::string::npos) << error;

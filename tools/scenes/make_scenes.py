@@ -361,7 +361,8 @@ def sweeps():
     scenes.append(sweep_scene(
         "sweep_phong_s", "phong", "s", sweep(1.0, 1000.0, ROW_COUNT, True), {"rho_d": [0.0] * 3, "rho_s": [1.0] * 3},
         "decreasing", "the light is 86 degrees from the view: the window's mirror directions are at least 56 "
-                      "degrees from the camera, where (s+2) cos^s falls with s (the highlight near the rim shrinks)", 86,
+                      "degrees from the camera, where (s+2) cos^s falls with s (the highlight near the rim "
+                      "shrinks)", 86,
         normalize(add(UP, RIGHT)), colour=(0.9, 0.9, 0.9)))
     scenes.append(sweep_scene(
         "sweep_blinnphong_s", "blinnphong", "s", sweep(1.0, 1000.0, ROW_COUNT, True),
