@@ -122,6 +122,13 @@ TEST(GltfGeometry, ByteRangesAreCheckedAgainstViewsAndBuffers) {
   error = loadError(view);
   EXPECT_NE(error.find("buffer view 0 (bytes 1000 to 1048) runs past the end of buffer 0"), std::string::npos) << error;
 
+  // The count comes from the file: a huge one is a range error, not an attempt to allocate it.
+  GltfBuilder huge;
+  huge.addNode({{"mesh", huge.addQuad()}});
+  huge.doc()["accessors"][0]["count"] = 2147483647;
+  error = loadError(huge);
+  EXPECT_NE(error.find("2147483647 elements of 12 bytes"), std::string::npos) << error;
+
   GltfBuilder stride;
   stride.addNode({{"mesh", stride.addQuad()}});
   stride.doc()["bufferViews"][0]["byteStride"] = 8;
