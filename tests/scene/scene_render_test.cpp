@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 
@@ -148,7 +149,9 @@ TEST_F(SceneRenderTest, SweepsShowTheirBrightnessOrderAlongTheRow) {
       const Window window = measureWindow(image, scene, sphere);
       ASSERT_GE(window.pixels, kMinWindowPixels) << "the window is too small to measure";
       means.push_back(window.mean);
-      row += " " + std::to_string(window.mean);
+      char shown[32];
+      std::snprintf(shown, sizeof shown, " %.4g", window.mean);
+      row += shown;
     }
     const float brightest = *std::max_element(means.begin(), means.end());
     ASSERT_GT(brightest, 0.0f) << "every window is black:" << row;
