@@ -7,6 +7,8 @@
 
 #include "shared/scene_records.h"
 
+#include "common/specialization.glsl"
+
 #include "brdf/ashikhmin_shirley.glsl"
 #include "brdf/blinnphong.glsl"
 #include "brdf/cooktorrance.glsl"
@@ -17,86 +19,76 @@
 #include "brdf/ward_duer.glsl"
 #include "brdf/ward_gmd.glsl"
 
-vec3 bsdfEval(MaterialRecord material, vec3 wi, vec3 wo) {
-  switch (material.model) {
-    case kModelLambert:
-      return lambertEval(material.rhoD, wi, wo);
-    case kModelPhong:
-      return phongEval(material.rhoD, material.rhoS, material.s, wi, wo);
-    case kModelBlinnPhong:
-      return blinnPhongEval(material.rhoD, material.rhoS, material.s, wi, wo);
-    case kModelCookTorrance:
-      return cookTorranceEval(material.rhoD, material.rhoS, material.m, material.eta, wi, wo);
-    case kModelWard:
-      return wardEval(material.rhoD, material.rhoS, material.alphaX, material.alphaY, wi, wo);
-    case kModelWardDuer:
-      return wardDuerEval(material.rhoD, material.rhoS, material.alphaX, material.alphaY, wi, wo);
-    case kModelWardGmd:
-      return wardGmdEval(material.rhoD, material.rhoS, material.alphaX, material.alphaY, wi, wo);
-    case kModelAshikhminShirley:
-      return ashikhminShirleyEval(material.rhoD, material.rhoS, material.nu, material.nv, wi, wo);
-    default:  // glass (delta) and unknown ids
-      return vec3(0.0);
+// Every branch is guarded by modelEnabled (common/specialization.glsl): a kernel specialised for a scene
+// keeps only the models the scene uses, and the driver removes the rest.
+
+vec3 bsdfEval(MaterialRecord m, vec3 wi, vec3 wo) {
+  const uint model = m.model;
+  if (modelEnabled(kModelLambert) && model == kModelLambert) return lambertEval(m.rhoD, wi, wo);
+  if (modelEnabled(kModelPhong) && model == kModelPhong) return phongEval(m.rhoD, m.rhoS, m.s, wi, wo);
+  if (modelEnabled(kModelBlinnPhong) && model == kModelBlinnPhong) return blinnPhongEval(m.rhoD, m.rhoS, m.s, wi, wo);
+  if (modelEnabled(kModelCookTorrance) && model == kModelCookTorrance) {
+    return cookTorranceEval(m.rhoD, m.rhoS, m.m, m.eta, wi, wo);
   }
+  if (modelEnabled(kModelWard) && model == kModelWard) return wardEval(m.rhoD, m.rhoS, m.alphaX, m.alphaY, wi, wo);
+  if (modelEnabled(kModelWardDuer) && model == kModelWardDuer) {
+    return wardDuerEval(m.rhoD, m.rhoS, m.alphaX, m.alphaY, wi, wo);
+  }
+  if (modelEnabled(kModelWardGmd) && model == kModelWardGmd) {
+    return wardGmdEval(m.rhoD, m.rhoS, m.alphaX, m.alphaY, wi, wo);
+  }
+  if (modelEnabled(kModelAshikhminShirley) && model == kModelAshikhminShirley) {
+    return ashikhminShirleyEval(m.rhoD, m.rhoS, m.nu, m.nv, wi, wo);
+  }
+  return vec3(0.0);  // glass (a delta BSDF), models compiled out, unknown ids
+}
+
+bool isWard(uint model) { return model == kModelWard || model == kModelWardDuer || model == kModelWardGmd; }
+bool anyWardEnabled() {
+  return modelEnabled(kModelWard) || modelEnabled(kModelWardDuer) || modelEnabled(kModelWardGmd);
 }
 
 // Density per unit solid angle of bsdfSample's direction: (1 - pSpec) cos_i / pi + pSpec pdfSpec.
-float bsdfPdf(MaterialRecord material, vec3 wi, vec3 wo) {
-  switch (material.model) {
-    case kModelLambert:
-      return lambertPdf(wi, wo);
-    case kModelPhong:
-      return phongPdf(material.rhoD, material.rhoS, material.s, wi, wo);
-    case kModelBlinnPhong:
-      return blinnPhongPdf(material.rhoD, material.rhoS, material.s, wi, wo);
-    case kModelCookTorrance:
-      return cookTorrancePdf(material.rhoD, material.rhoS, material.m, wi, wo);
-    case kModelWard:
-    case kModelWardDuer:
-    case kModelWardGmd:
-      return wardPdf(material.rhoD, material.rhoS, material.alphaX, material.alphaY, wi, wo);
-    case kModelAshikhminShirley:
-      return ashikhminShirleyPdf(material.rhoD, material.rhoS, material.nu, material.nv, wi, wo);
-    default:
-      return 0.0;
+float bsdfPdf(MaterialRecord m, vec3 wi, vec3 wo) {
+  const uint model = m.model;
+  if (modelEnabled(kModelLambert) && model == kModelLambert) return lambertPdf(wi, wo);
+  if (modelEnabled(kModelPhong) && model == kModelPhong) return phongPdf(m.rhoD, m.rhoS, m.s, wi, wo);
+  if (modelEnabled(kModelBlinnPhong) && model == kModelBlinnPhong) return blinnPhongPdf(m.rhoD, m.rhoS, m.s, wi, wo);
+  if (modelEnabled(kModelCookTorrance) && model == kModelCookTorrance) return cookTorrancePdf(m.rhoD, m.rhoS, m.m, wi, wo);
+  if (anyWardEnabled() && isWard(model)) return wardPdf(m.rhoD, m.rhoS, m.alphaX, m.alphaY, wi, wo);
+  if (modelEnabled(kModelAshikhminShirley) && model == kModelAshikhminShirley) {
+    return ashikhminShirleyPdf(m.rhoD, m.rhoS, m.nu, m.nv, wi, wo);
   }
+  return 0.0;
 }
 
 // u: three uniform numbers in [0, 1); u.x picks the lobe, (u.y, u.z) place the direction. A sample with
 // pdf 0 failed (wo or the sampled direction at or below the horizon); otherwise f = bsdfEval(wi, wo) and
 // pdf = bsdfPdf(wi, wo).
-BsdfSample bsdfSample(MaterialRecord material, vec3 wo, vec3 u) {
-  switch (material.model) {
-    case kModelLambert:
-      return lambertSample(material.rhoD, wo, u);
-    case kModelPhong:
-      return phongSample(material.rhoD, material.rhoS, material.s, wo, u);
-    case kModelBlinnPhong:
-      return blinnPhongSample(material.rhoD, material.rhoS, material.s, wo, u);
-    case kModelCookTorrance:
-      return cookTorranceSample(material.rhoD, material.rhoS, material.m, material.eta, wo, u);
-    case kModelWard:
-      return wardSample(material.rhoD, material.rhoS, material.alphaX, material.alphaY, wo, u);
-    case kModelWardDuer:
-      return wardDuerSample(material.rhoD, material.rhoS, material.alphaX, material.alphaY, wo, u);
-    case kModelWardGmd:
-      return wardGmdSample(material.rhoD, material.rhoS, material.alphaX, material.alphaY, wo, u);
-    case kModelAshikhminShirley:
-      return ashikhminShirleySample(material.rhoD, material.rhoS, material.nu, material.nv, wo, u);
-    default:
-      return noSample();
+BsdfSample bsdfSample(MaterialRecord m, vec3 wo, vec3 u) {
+  const uint model = m.model;
+  if (modelEnabled(kModelLambert) && model == kModelLambert) return lambertSample(m.rhoD, wo, u);
+  if (modelEnabled(kModelPhong) && model == kModelPhong) return phongSample(m.rhoD, m.rhoS, m.s, wo, u);
+  if (modelEnabled(kModelBlinnPhong) && model == kModelBlinnPhong) return blinnPhongSample(m.rhoD, m.rhoS, m.s, wo, u);
+  if (modelEnabled(kModelCookTorrance) && model == kModelCookTorrance) {
+    return cookTorranceSample(m.rhoD, m.rhoS, m.m, m.eta, wo, u);
   }
+  if (modelEnabled(kModelWard) && model == kModelWard) return wardSample(m.rhoD, m.rhoS, m.alphaX, m.alphaY, wo, u);
+  if (modelEnabled(kModelWardDuer) && model == kModelWardDuer) {
+    return wardDuerSample(m.rhoD, m.rhoS, m.alphaX, m.alphaY, wo, u);
+  }
+  if (modelEnabled(kModelWardGmd) && model == kModelWardGmd) {
+    return wardGmdSample(m.rhoD, m.rhoS, m.alphaX, m.alphaY, wo, u);
+  }
+  if (modelEnabled(kModelAshikhminShirley) && model == kModelAshikhminShirley) {
+    return ashikhminShirleySample(m.rhoD, m.rhoS, m.nu, m.nv, wo, u);
+  }
+  return noSample();
 }
 
 // Probability that bsdfSample picks the specular lobe: 0 for lambert and glass.
-float bsdfSpecularProbability(MaterialRecord material) {
-  switch (material.model) {
-    case kModelLambert:
-    case kModelGlass:
-      return 0.0;
-    default:
-      return specularProbability(material.rhoD, material.rhoS);
-  }
+float bsdfSpecularProbability(MaterialRecord m) {
+  return m.model == kModelLambert || m.model == kModelGlass ? 0.0 : specularProbability(m.rhoD, m.rhoS);
 }
 
 #endif
