@@ -30,7 +30,8 @@ struct Document {
 };
 
 // Reads a .glb or .gltf from memory: the GLB container, the JSON (with its line and column on a syntax
-// error), the schema check, then tinygltf (buffers, data URIs, image decoding). `label` starts messages.
+// error), the schema check, the required extensions, then tinygltf (buffers, data URIs, image decoding).
+// Extensions in extensionsUsed that raylab does not read go to `ignored`. `label` starts messages.
 Document parseDocument(const std::string& bytes, const std::string& baseDirectory, const std::string& label,
                        bool mustBeBinary);
 

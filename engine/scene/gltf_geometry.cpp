@@ -277,7 +277,8 @@ std::size_t dropZeroArea(Mesh& mesh) {
 }
 
 // Normalises normals and replaces zero or non-finite ones by the area-weighted mean of the normals of the
-// triangles around them; if that is zero too, the mesh falls back to geometric (flat) normals.
+// triangles around them. A vertex no triangle uses gets any unit normal (it is never interpolated); if the
+// faces around a used vertex cancel out, the mesh falls back to geometric (flat) normals.
 void repairNormals(Mesh& mesh, Document& document, const std::string& where) {
   std::vector<bool> bad(mesh.normals.size(), false);
   std::size_t badCount = 0;
@@ -298,26 +299,32 @@ void repairNormals(Mesh& mesh, Document& document, const std::string& where) {
   bool dropped = false;
   if (badCount > 0) {
     std::vector<glm::vec3> faceSum(mesh.normals.size(), glm::vec3(0.0f));
+    std::vector<bool> used(mesh.normals.size(), false);
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
       const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
       const glm::vec3 area = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
-      for (std::uint32_t v : {a, b, c}) faceSum[v] += area;
+      for (std::uint32_t v : {a, b, c}) {
+        faceSum[v] += area;
+        used[v] = true;
+      }
     }
     for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
       if (!bad[i]) continue;
       const float length = glm::length(faceSum[i]);
-      if (length > 0.0f && std::isfinite(length)) {
+      if (!used[i]) {
+        mesh.normals[i] = glm::vec3(0.0f, 0.0f, 1.0f);
+      } else if (length > 0.0f && std::isfinite(length)) {
         mesh.normals[i] = faceSum[i] / length;
       } else {
-        dropped = true;  // an unused or isolated vertex with a bad normal: no face to take one from
+        dropped = true;
       }
     }
     if (dropped) mesh.normals.clear();
   }
   std::string what;
   if (badCount > 0) {
-    what = std::to_string(badCount) + (dropped ? " zero or non-finite normals (no faces to repair them from: the "
-                                                 "mesh uses flat geometric normals)"
+    what = std::to_string(badCount) + (dropped ? " zero or non-finite normals (their faces cancel out: the mesh "
+                                                 "uses flat geometric normals)"
                                                : " zero or non-finite normals (replaced by their faces' mean normal)");
   }
   if (rescaled > 0) what += (what.empty() ? "" : " and ") + std::to_string(rescaled) + " non-unit normals (normalised)";

@@ -56,6 +56,16 @@ TEST(GltfGeometry, BrokenNormalsAreRepairedWithOneWarning) {
   }
   EXPECT_EQ(warnings.count("repaired 2 zero or non-finite normals"), 1);
   EXPECT_EQ(warnings.count("1 non-unit normals (normalised)"), 1);
+
+  // A vertex no triangle uses keeps the mesh's normals: its own is never interpolated.
+  GltfBuilder unused;
+  std::vector<glm::vec3> positions = kQuad;
+  positions.push_back({5, 5, 5});
+  unused.addNode({{"mesh", unused.addMesh(positions, kQuadIndices, -1,
+                                          {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {nan, nan, nan}})}});
+  const Scene kept = unused.load();
+  ASSERT_EQ(kept.meshes[0].normals.size(), 5u);
+  EXPECT_EQ(kept.meshes[0].normals[4], glm::vec3(0, 0, 1));
 }
 
 TEST(GltfGeometry, NonFinitePositionsAreAnErrorNamingTheAccessor) {
