@@ -65,7 +65,7 @@ Scene loadQuietly(const fs::path& path) {
 
 TEST_F(SceneRenderTest, EveryCommittedSceneRendersFinite) {
   const std::vector<fs::path> files = assetFiles();
-  ASSERT_FALSE(files.empty());
+  ASSERT_FALSE(files.empty()) << "no scenes in " << assetsDirectory() << ": run tools/scenes/make_scenes.py";
   for (const fs::path& file : files) {
     SCOPED_TRACE(file.string());
     const Image image = render(device(), loadQuietly(file), 64, 48, 2);
