@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include <gtest/gtest.h>
+
 #include "util/error.h"
 
 namespace raylab::test {
@@ -30,6 +32,17 @@ std::vector<std::uint8_t> bytesOf(const std::vector<T>& values) {
   std::memcpy(bytes.data(), values.data(), bytes.size());
   return bytes;
 }
+
+// Warnings that a test does not capture are expected side effects (the defaults for a test file without a
+// camera or lights); dropping them keeps the log to what failed. WarningCapture still sees everything.
+class QuietWarnings : public ::testing::Environment {
+ public:
+  void SetUp() override { setWarningSink([](const std::string&) {}); }
+  void TearDown() override { setWarningSink(nullptr); }
+};
+
+[[maybe_unused]] const ::testing::Environment* const kQuietWarnings =
+    ::testing::AddGlobalTestEnvironment(new QuietWarnings);
 
 }  // namespace
 
