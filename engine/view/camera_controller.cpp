@@ -31,7 +31,9 @@ float clampPitch(glm::vec3 direction, glm::vec3 up, float pitch) {
   return std::clamp(pitch, polar - glm::pi<float>() + kPoleMargin, polar - kPoleMargin);
 }
 
-glm::vec3 rightOf(const Camera& camera) { return glm::normalize(glm::cross(camera.target - camera.position, camera.up)); }
+glm::vec3 rightOf(const Camera& camera) {
+  return glm::normalize(glm::cross(camera.target - camera.position, camera.up));
+}
 
 }  // namespace
 

@@ -1,54 +1,76 @@
-// The display pass: display.comp turns the accumulation buffer into an 8-bit image of the full render size
-// (stretching the reduced-resolution image while the camera moves), which is then blitted to the swapchain
-// image. The display image persists between frames: texels whose pixels have no sample yet keep the last
-// picture, so a refinement pass in progress never flashes black.
+// The display pass and the images it feeds. display.comp turns the accumulation buffer into 8-bit texels in
+// a buffer, already in the byte order and encoding of the swapchain's format; transfer commands then move
+// them: copies where sizes match, blits where the picture is stretched. (On lavapipe a blit is a draw, about
+// as costly as the display pass itself at 1280x720, while a copy is a memcpy.) Two images of the full render
+// size, in the swapchain's format:
+//   - `preview` holds the reduced-resolution image traced while the view changes, in its top-left corner;
+//     the blit to the window stretches it.
+//   - `refined` holds the full-resolution image while refining. It keeps its texels between frames, so only
+//     the tiles traced in a frame go through the display pass and the copy; when refinement starts, the last
+//     preview is stretched into it, and stands in for the pixels the first pass has not reached yet.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
+#include <span>
+
 #include <glm/glm.hpp>
 
 #include "image/image.h"
+#include "view/scheduler.h"
 #include "vk/device.h"
 #include "vk/pipeline.h"
+#include "vk/resources.h"
 
 namespace raylab {
+
+// TRANSFER_SRC_OPTIMAL between frames; TRANSFER_DST_OPTIMAL while a copy or blit writes it.
+struct DisplayImage {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+};
 
 struct Display {
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
   VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  DescriptorSet descriptors;
-  VkImage image = VK_NULL_HANDLE;  // RGBA8; TRANSFER_SRC_OPTIMAL between frames, GENERAL while written
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  VkImageView view = VK_NULL_HANDLE;
-  glm::uvec2 extent{0};
-  bool linearBlit = false;  // the format supports linear filtering: a scaled blit is smooth
+  DescriptorSet descriptors;  // the accumulation buffer and `texels`
+  Buffer texels;              // one packed 8-bit texel per pixel of the full render size
+  DisplayImage preview;
+  DisplayImage refined;
+  VkFormat format = VK_FORMAT_UNDEFINED;  // the swapchain's
+  glm::uvec2 extent{0};                   // of both images: the full render size
+  bool linearBlit = false;                // the format filters linearly: stretched blits are smooth
 };
 
 struct DisplaySettings {
   float exposure = 0.0f;  // stops
   ToneMap toneMap = ToneMap::kClamp;
-  bool encodeSrgb = true;  // false when the swapchain format is sRGB (the blit encodes)
+
+  bool operator==(const DisplaySettings&) const = default;
 };
 
-// Throws Error when the device cannot store to or blit from an RGBA8 image.
-Display createDisplay(const Device& device, glm::uvec2 extent);
+// Images in `format` (the swapchain's: B8G8R8A8 or R8G8B8A8, UNORM or SRGB). Throws Error when the device
+// cannot copy and blit it.
+Display createDisplay(const Device& device, VkFormat format, glm::uvec2 extent);
 void destroyDisplay(const Device& device, Display& display);
 
-// A new image size (the device must be idle); the image starts black.
+// A new size (the device must be idle); both images start black.
 void resizeDisplay(const Device& device, Display& display, glm::uvec2 extent);
 // The accumulation buffer to read (after the renderer reallocated it; the device must be idle).
 void bindAccumulation(const Device& device, const Display& display, VkBuffer accumulation);
 
-// Clears the image to black (at creation, after a resize).
+// Clears both images to black (after creation and resizes).
 void recordClearDisplay(VkCommandBuffer cmd, const Display& display);
-// Records the display pass: `source` pixels of accumulation over the whole image. `keepEmpty`: texels whose
-// pixels have no sample yet are left as they are.
-void recordDisplayPass(VkCommandBuffer cmd, const Display& display, glm::uvec2 source, const DisplaySettings& settings,
-                       bool keepEmpty);
-// Blits the whole display image over the whole swapchain image (scaled when the sizes differ) and leaves the
-// swapchain image in TRANSFER_DST_OPTIMAL. The swapchain image's previous content is discarded.
-void recordBlitToSwapchain(VkCommandBuffer cmd, const Display& display, VkImage target, VkExtent2D targetExtent);
+// The display pass for the `regions` of an accumulation of `size` pixels, and their copy into `target`
+// (preview or refined) at the same places.
+void recordDisplayRegions(VkCommandBuffer cmd, const Display& display, const DisplayImage& target, glm::uvec2 size,
+                          const DisplaySettings& settings, std::span<const Tile> regions);
+// Stretches the preview's top-left `previewSize` texels over the whole refined image.
+void recordPreviewToRefined(VkCommandBuffer cmd, const Display& display, glm::uvec2 previewSize);
+// Puts the top-left `size` texels of `source` over the whole swapchain image (a copy at equal sizes, else a
+// stretching blit), leaving the swapchain image in TRANSFER_DST_OPTIMAL; its previous content is discarded.
+void recordToSwapchain(VkCommandBuffer cmd, const Display& display, const DisplayImage& source, glm::uvec2 size,
+                       VkImage target, VkExtent2D targetExtent);
 
 }  // namespace raylab

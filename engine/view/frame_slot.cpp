@@ -53,6 +53,8 @@ FrameTimes readFrameTimes(const Device& device, const FrameSlot& slot) {
   const double period = device.properties.limits.timestampPeriod * 1.0e-9;
   FrameTimes times;
   times.traceSeconds = double(ticks[kTraceEnd] - ticks[kFrameBegin]) * period;
+  times.displaySeconds = double(ticks[kDisplayEnd] - ticks[kTraceEnd]) * period;
+  times.blitSeconds = double(ticks[kBlitEnd] - ticks[kDisplayEnd]) * period;
   times.totalSeconds = double(ticks[kFrameEnd] - ticks[kFrameBegin]) * period;
   return times;
 }

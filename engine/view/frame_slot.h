@@ -18,8 +18,10 @@ namespace raylab {
 enum FrameTimestamp : std::uint32_t {
   kFrameBegin = 0,
   kTraceEnd = 1,
-  kFrameEnd = 2,
-  kFrameTimestampCount = 3,
+  kDisplayEnd = 2,
+  kBlitEnd = 3,
+  kFrameEnd = 4,
+  kFrameTimestampCount = 5,
 };
 
 struct FrameSlot {
@@ -46,8 +48,10 @@ FrameSlot createFrameSlot(const Device& device);
 void destroyFrameSlot(const Device& device, FrameSlot& slot);
 
 struct FrameTimes {
-  double traceSeconds = 0.0;  // trace passes on the device
-  double totalSeconds = 0.0;  // the whole command buffer on the device
+  double traceSeconds = 0.0;    // trace passes on the device
+  double displaySeconds = 0.0;  // the display pass
+  double blitSeconds = 0.0;     // the blit to the swapchain image
+  double totalSeconds = 0.0;    // the whole command buffer on the device (the UI is the rest)
 };
 FrameTimes readFrameTimes(const Device& device, const FrameSlot& slot);
 

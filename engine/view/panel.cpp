@@ -14,6 +14,16 @@ namespace raylab {
 
 namespace {
 
+constexpr std::size_t kListRows = 6;  // list boxes scroll beyond this many names
+
+float listHeight(float rows) {
+  return rows * ImGui::GetTextLineHeightWithSpacing() + 2.0f * ImGui::GetStyle().FramePadding.y;
+}
+
+std::string itemLabel(const std::string& name, const char* kind, std::size_t index) {
+  return name.empty() ? std::string(kind) + " " + std::to_string(index) : name;
+}
+
 // One slider (or colour editor) per parameter, over the contract's range; log-scale parameters get a
 // logarithmic slider. Returns true when the value changed.
 bool drawParam(gpu::MaterialRecord& record, const ParamInfo& param) {
@@ -30,7 +40,9 @@ bool drawParam(gpu::MaterialRecord& record, const ParamInfo& param) {
     changed = ImGui::SliderFloat(label.c_str(), &value.x, param.min, param.max, "%.4g", flags);
     value = glm::vec3(value.x);
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s [%g, %g]", std::string(param.meaning).c_str(), param.min, param.max);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s [%g, %g]", std::string(param.meaning).c_str(), param.min, param.max);
+  }
   if (changed) {
     value = glm::clamp(value, glm::vec3(param.min), glm::vec3(param.max));
     setParam(record, param.name, value, "panel");
@@ -42,8 +54,7 @@ bool drawMaterial(Material& material) {
   bool changed = false;
   gpu::MaterialRecord& record = material.record;
   const ModelInfo& current = modelInfo(record.model);
-  const std::string comboLabel = "model";
-  if (ImGui::BeginCombo(comboLabel.c_str(), std::string(current.name).c_str())) {
+  if (ImGui::BeginCombo("model", std::string(current.name).c_str())) {
     for (const ModelInfo& model : allModels()) {
       const bool selected = model.id == record.model;
       if (ImGui::Selectable(std::string(model.name).c_str(), selected) && !selected) {
@@ -70,7 +81,8 @@ bool drawLight(Light& light, float dragSpeed) {
   } else {
     changed |= ImGui::DragFloat3("position", &record.position.x, dragSpeed);
   }
-  const float intensitySpeed = 0.01f * std::max(1.0f, std::max({record.intensity.x, record.intensity.y, record.intensity.z}));
+  const float brightest = std::max({record.intensity.x, record.intensity.y, record.intensity.z});
+  const float intensitySpeed = 0.01f * std::max(1.0f, brightest);
   changed |= ImGui::DragFloat3("intensity", &record.intensity.x, intensitySpeed, 0.0f, FLT_MAX, "%.3g",
                                ImGuiSliderFlags_AlwaysClamp);
   return changed;
@@ -86,7 +98,8 @@ std::string statusLine(const PanelStatus& status) {
   return text;
 }
 
-PanelEdits drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, float sceneSize) {
+PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selection, const PanelStatus& status,
+                     float sceneSize) {
   PanelEdits edits;
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
@@ -115,31 +128,37 @@ PanelEdits drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& st
     if (ImGui::Button("screenshot (F12)")) edits.screenshot = true;
   }
 
-  if (ImGui::CollapsingHeader("Materials", ImGuiTreeNodeFlags_DefaultOpen)) {
-    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-      Material& material = scene.materials[i];
-      ImGui::PushID(static_cast<int>(i));
-      const std::string label = material.name.empty() ? "material " + std::to_string(i) : material.name;
-      if (ImGui::TreeNode(label.c_str())) {
-        edits.materials |= drawMaterial(material);
-        ImGui::TreePop();
+  if (ImGui::CollapsingHeader("Materials", ImGuiTreeNodeFlags_DefaultOpen) && !scene.materials.empty()) {
+    selection.material = std::min<std::size_t>(selection.material, scene.materials.size() - 1);
+    const float rows = float(std::min<std::size_t>(scene.materials.size(), kListRows));
+    if (ImGui::BeginListBox("##materials", ImVec2(-FLT_MIN, listHeight(rows)))) {
+      for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& material = scene.materials[i];
+        const std::string label = itemLabel(material.name, "material", i) + "  (" +
+                                  std::string(modelInfo(material.record.model).name) + ")";
+        if (ImGui::Selectable(label.c_str(), i == selection.material)) selection.material = i;
       }
-      ImGui::PopID();
+      ImGui::EndListBox();
     }
+    ImGui::PushID("material");
+    edits.materials |= drawMaterial(scene.materials[selection.material]);
+    ImGui::PopID();
   }
 
-  if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) {
-    const float dragSpeed = 0.002f * sceneSize;
-    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-      Light& light = scene.lights[i];
-      ImGui::PushID(1000 + static_cast<int>(i));
-      const std::string label = light.name.empty() ? "light " + std::to_string(i) : light.name;
-      if (ImGui::TreeNode(label.c_str())) {
-        edits.lights |= drawLight(light, dragSpeed);
-        ImGui::TreePop();
+  if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen) && !scene.lights.empty()) {
+    selection.light = std::min<std::size_t>(selection.light, scene.lights.size() - 1);
+    const float rows = float(std::min<std::size_t>(scene.lights.size(), kListRows));
+    if (ImGui::BeginListBox("##lights", ImVec2(-FLT_MIN, listHeight(rows)))) {
+      for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        if (ImGui::Selectable(itemLabel(scene.lights[i].name, "light", i).c_str(), i == selection.light)) {
+          selection.light = i;
+        }
       }
-      ImGui::PopID();
+      ImGui::EndListBox();
     }
+    ImGui::PushID("light");
+    edits.lights |= drawLight(scene.lights[selection.light], 0.002f * sceneSize);
+    ImGui::PopID();
   }
 
   if (ImGui::CollapsingHeader("Controls")) {

@@ -32,6 +32,12 @@ struct PanelStatus {
   std::string message;  // last screenshot, kernel error, ...
 };
 
+// Which material and light the panel's editors show.
+struct PanelSelection {
+  std::size_t material = 0;
+  std::size_t light = 0;
+};
+
 struct PanelEdits {
   bool materials = false;
   bool lights = false;
@@ -41,8 +47,10 @@ struct PanelEdits {
   bool screenshot = false;
 };
 
-// Builds the panel for this ImGui frame. `sceneSize` (the scene's diagonal) sets how fast lights drag.
-PanelEdits drawPanel(Scene& scene, ViewSettings& settings, const PanelStatus& status, float sceneSize);
+// Builds the panel for this ImGui frame: lists of the materials and lights, and editors for the selected
+// ones. `sceneSize` (the scene's diagonal) sets how fast lights drag.
+PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selection, const PanelStatus& status,
+                     float sceneSize);
 
 // "12 spp  640x360  48.2 ms/frame  3.1 Mrays/s" (also printed by automation runs).
 std::string statusLine(const PanelStatus& status);

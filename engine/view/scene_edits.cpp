@@ -26,7 +26,9 @@ void switchModel(gpu::MaterialRecord& record, std::uint32_t model) {
     const glm::vec3 value = getParam(record, param.name);
     const int channels = param.rgb ? 3 : 1;
     bool valid = true;
-    for (int c = 0; c < channels; ++c) valid &= std::isfinite(value[c]) && value[c] >= param.min && value[c] <= param.max;
+    for (int c = 0; c < channels; ++c) {
+      valid &= std::isfinite(value[c]) && value[c] >= param.min && value[c] <= param.max;
+    }
     if (!valid) setParam(record, param.name, glm::vec3(param.defaultValue), "switchModel");
   }
 }

@@ -7,8 +7,11 @@ namespace raylab {
 
 namespace {
 
-constexpr double kSmoothing = 0.3;       // weight of a new measurement in the running estimates
-constexpr float kHysteresis = 0.12f;     // preview sizes within 12% of the current one keep the current one
+// Weights of a new measurement in the running estimates: a slowdown (the view turned to costlier content)
+// must shrink the preview within a frame or two, a speedup may take its time.
+constexpr double kSmoothingUp = 0.6;
+constexpr double kSmoothingDown = 0.25;
+constexpr float kHysteresis = 0.12f;  // a preview may grow only by more than 12%, so its size does not flicker
 constexpr double kMinTraceShare = 0.25;  // tracing gets at least this share of the frame, whatever the overhead
 
 double traceBudget(const Scheduler& s) {
@@ -72,14 +75,17 @@ void addTraceMeasurement(CostModel& cost, std::uint64_t pixelSamples, double sec
   } else {
     const double current = cost.secondsPerPixelSample;
     sample = std::clamp(sample, 0.25 * current, 4.0 * current);
-    cost.secondsPerPixelSample = (1.0 - kSmoothing) * current + kSmoothing * sample;
+    const double weight = sample > current ? kSmoothingUp : kSmoothingDown;
+    cost.secondsPerPixelSample = (1.0 - weight) * current + weight * sample;
   }
   ++cost.traceMeasurements;
 }
 
 void addOverheadMeasurement(CostModel& cost, double seconds) {
   if (!(seconds >= 0.0)) return;
-  cost.overheadSeconds = cost.overheadSeconds == 0.0 ? seconds : (1.0 - kSmoothing) * cost.overheadSeconds + kSmoothing * seconds;
+  const double weight = seconds > cost.overheadSeconds ? kSmoothingUp : kSmoothingDown;
+  cost.overheadSeconds =
+      cost.overheadSeconds == 0.0 ? seconds : (1.0 - weight) * cost.overheadSeconds + weight * seconds;
 }
 
 glm::uvec2 previewExtent(glm::uvec2 full, double budgetSeconds, double secondsPerPixelSample, float minScale) {
@@ -94,7 +100,14 @@ void setFullExtent(Scheduler& scheduler, glm::uvec2 extent) {
   scheduler.needsReset = true;
 }
 
-bool converged(const Scheduler& s) { return !s.preview && !s.needsReset && s.traceExtent == s.fullExtent && limitReached(s); }
+std::vector<Tile> tilesWithSamples(const Scheduler& s) {
+  if (s.sampleIndex > 0) return s.tiles;
+  return std::vector<Tile>(s.tiles.begin(), s.tiles.begin() + std::ptrdiff_t(s.nextTile));
+}
+
+bool converged(const Scheduler& s) {
+  return !s.preview && !s.needsReset && s.traceExtent == s.fullExtent && limitReached(s);
+}
 
 FramePlan planFrame(Scheduler& s, double now, bool changed, FrameKind kind) {
   FramePlan plan;
@@ -113,8 +126,8 @@ FramePlan planFrame(Scheduler& s, double now, bool changed, FrameKind kind) {
         extent = glm::max(glm::uvec2(glm::vec2(s.fullExtent) * s.settings.firstPreviewScale), glm::uvec2(8));
         extent = glm::min(extent, s.fullExtent);
       }
-      // Small swings of the estimate should not make the preview's size flicker.
-      if (s.preview && s.traceExtent.x > 0 && std::abs(float(extent.x) / float(s.traceExtent.x) - 1.0f) < kHysteresis) {
+      // Small swings of the estimate should not make the preview's size flicker; shrinking is never delayed.
+      if (s.preview && extent.x >= s.traceExtent.x && float(extent.x) < (1.0f + kHysteresis) * float(s.traceExtent.x)) {
         extent = s.traceExtent;
       }
       restart(s, extent, true, plan);

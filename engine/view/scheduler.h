@@ -81,6 +81,9 @@ FramePlan planFrame(Scheduler& scheduler, double now, bool changed, FrameKind ki
 // True when a still, full-resolution accumulation has reached the spp limit: there is nothing left to trace.
 bool converged(const Scheduler& scheduler);
 
+// The tiles of the accumulation that hold at least one sample (all of them once a pass is complete).
+std::vector<Tile> tilesWithSamples(const Scheduler& scheduler);
+
 // Changes the full resolution (window resize, resolution scale); the next plan resets.
 void setFullExtent(Scheduler& scheduler, glm::uvec2 extent);
 

@@ -11,8 +11,8 @@ namespace raylab {
 
 namespace {
 
-// Formats the blit from the display image (RGBA8) can write; UNORM first, so the display pass controls the
-// sRGB encoding exactly as the PNG writer does.
+// The 8-bit formats the display pass can pack texels for (it writes sRGB-encoded bytes, which both the UNORM
+// and the SRGB variants show as intended). UNORM first: copies and blits then move bytes untouched.
 constexpr VkFormat kPreferredFormats[] = {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM,
                                           VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB};
 
@@ -26,12 +26,15 @@ VkSurfaceFormatKHR chooseFormat(const Device& device, VkSurfaceKHR surface) {
       if (format.format != wanted || format.colorSpace != VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) continue;
       VkFormatProperties properties;
       vkGetPhysicalDeviceFormatProperties(device.physical, format.format, &properties);
-      if (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT) return format;
+      constexpr VkFormatFeatureFlags kNeeded = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
+      if ((properties.optimalTilingFeatures & kNeeded) == kNeeded) return format;
     }
   }
   std::string offered;
-  for (const VkSurfaceFormatKHR& format : formats) offered += (offered.empty() ? "" : ", ") + std::to_string(format.format);
-  throw Error("the window surface offers no 8-bit RGBA/BGRA format that can be a blit destination (VkFormat ids: " +
+  for (const VkSurfaceFormatKHR& format : formats) {
+    offered += (offered.empty() ? "" : ", ") + std::to_string(format.format);
+  }
+  throw Error("the window surface offers no 8-bit RGBA/BGRA format that can be blitted (VkFormat ids: " +
               offered + ")");
 }
 
@@ -60,7 +63,6 @@ Swapchain createSwapchain(const Device& device, VkSurfaceKHR surface, VkExtent2D
   Swapchain swapchain;
   const VkSurfaceFormatKHR format = chooseFormat(device, surface);
   swapchain.format = format.format;
-  swapchain.srgbFormat = format.format == VK_FORMAT_B8G8R8A8_SRGB || format.format == VK_FORMAT_R8G8B8A8_SRGB;
   swapchain.usage = kRequired | (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
   if (capabilities.currentExtent.width != UINT32_MAX) {
     swapchain.extent = capabilities.currentExtent;
@@ -72,7 +74,9 @@ Swapchain createSwapchain(const Device& device, VkSurfaceKHR surface, VkExtent2D
   }
   // One image more than the minimum, so that acquiring never waits for the presentation engine to let go.
   swapchain.minImageCount = capabilities.minImageCount + 1;
-  if (capabilities.maxImageCount > 0) swapchain.minImageCount = std::min(swapchain.minImageCount, capabilities.maxImageCount);
+  if (capabilities.maxImageCount > 0) {
+    swapchain.minImageCount = std::min(swapchain.minImageCount, capabilities.maxImageCount);
+  }
   const VkCompositeAlphaFlagBitsKHR alpha =
       (capabilities.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
           ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR

@@ -13,7 +13,6 @@ namespace raylab {
 struct Swapchain {
   VkSwapchainKHR handle = VK_NULL_HANDLE;
   VkFormat format = VK_FORMAT_UNDEFINED;
-  bool srgbFormat = false;  // the presentation engine encodes sRGB itself: write linear values
   VkExtent2D extent{};
   VkImageUsageFlags usage = 0;  // TRANSFER_DST and COLOR_ATTACHMENT always; TRANSFER_SRC when offered
   std::uint32_t minImageCount = 0;

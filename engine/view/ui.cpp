@@ -4,6 +4,9 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
 #include <string>
 
 #include "util/error.h"
@@ -141,12 +144,49 @@ void beginUiFrame() {
 
 void recordUi(VkCommandBuffer cmd, const Ui& ui, const Swapchain& swapchain, std::uint32_t imageIndex) {
   ImGui::Render();
+  // The render area is only what the UI covers: lavapipe loads and stores every tile of the render area,
+  // which for a whole 1280x720 window costs more than drawing the panel.
+  const ImDrawData* data = ImGui::GetDrawData();
+  VkRect2D area{};
+  if (ui.visible && data != nullptr) {
+    ImVec2 lo(FLT_MAX, FLT_MAX), hi(-FLT_MAX, -FLT_MAX);
+    for (int list = 0; list < data->CmdListsCount; ++list) {
+      for (const ImDrawCmd& command : data->CmdLists[list]->CmdBuffer) {
+        lo = ImVec2(std::min(lo.x, command.ClipRect.x), std::min(lo.y, command.ClipRect.y));
+        hi = ImVec2(std::max(hi.x, command.ClipRect.z), std::max(hi.y, command.ClipRect.w));
+      }
+    }
+    const auto clampTo = [](float value, std::uint32_t size) {
+      return static_cast<std::int32_t>(std::clamp(value, 0.0f, float(size)));
+    };
+    area.offset = {clampTo(std::floor(lo.x), swapchain.extent.width),
+                   clampTo(std::floor(lo.y), swapchain.extent.height)};
+    const std::int32_t right = clampTo(std::ceil(hi.x), swapchain.extent.width);
+    const std::int32_t bottom = clampTo(std::ceil(hi.y), swapchain.extent.height);
+    area.extent = {static_cast<std::uint32_t>(std::max(right - area.offset.x, 0)),
+                   static_cast<std::uint32_t>(std::max(bottom - area.offset.y, 0))};
+  }
+  if (area.extent.width == 0 || area.extent.height == 0) {
+    // Nothing to draw: only the layout transition the render pass would have made.
+    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = 0;
+    barrier.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    barrier.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = swapchain.images[imageIndex];
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0, nullptr, 0,
+                         nullptr, 1, &barrier);
+    return;
+  }
   VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   info.renderPass = ui.renderPass;
   info.framebuffer = ui.framebuffers[imageIndex];
-  info.renderArea.extent = swapchain.extent;
+  info.renderArea = area;
   vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
-  if (ui.visible) ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
+  ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
   vkCmdEndRenderPass(cmd);
 }
 

@@ -84,12 +84,17 @@ struct Viewer {
   Camera camera;
   ViewSettings settings;
   PanelStatus status;
+  PanelSelection selection;
   std::unique_ptr<KernelBuild> build;
   KernelFeatures needed;      // what the scene's materials and lights need compiled in
   bool freshKernel = true;    // the pipeline's next dispatch is its first: the driver compiles, do not time it
   bool changed = true;        // the accumulation is stale: the next plan resets it
   bool swapchainStale = false;
   bool extentStale = false;   // the resolution scale changed
+  bool displayStale = true;   // the display images were cleared: the next display pass covers everything
+  DisplaySettings lastDisplay;
+  bool showingPreview = false;  // the window shows the preview image (else the refined one)
+  glm::uvec2 previewSize{0};
   bool automation = false;
   std::uint32_t frameIndex = 0;       // frames submitted
   std::int64_t eventsAppliedFor = -1;  // the frame whose script events were applied
@@ -152,7 +157,7 @@ void setUp(Viewer& v) {
   v.renderer = createRenderer(v.device, v.gpuScene, v.scene, renderSettings);
   v.needed = featuresOf(v.scene);
 
-  v.display = createDisplay(v.device, full);
+  v.display = createDisplay(v.device, v.swapchain.format, full);
   bindAccumulation(v.device, v.display, v.renderer.accumulation.handle);
   submitAndWait(v.device, [&](VkCommandBuffer cmd) { recordClearDisplay(cmd, v.display); });
   v.ui = createUi(v.instance, v.device, v.window, v.swapchain);
@@ -230,6 +235,8 @@ void completeFrame(Viewer& v, FrameSlot& slot) {
   record.completeSeconds = now;
   record.traceSeconds = times.traceSeconds;
   record.deviceSeconds = times.totalSeconds;
+  record.displaySeconds = times.displaySeconds;
+  record.blitSeconds = times.blitSeconds;
   record.traceExtent = slot.traceExtent;
   record.preview = slot.preview;
   record.spp = slot.spp;
@@ -371,6 +378,8 @@ void updateFullExtent(Viewer& v) {
   setFullExtent(v.scheduler, full);
   v.report.fullExtent = full;
   v.changed = true;
+  v.displayStale = true;
+  v.showingPreview = false;
 }
 
 void recreateSwapchain(Viewer& v) {
@@ -426,8 +435,8 @@ void recordCapture(VkCommandBuffer cmd, Viewer& v, FrameSlot& slot, VkImage imag
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image;
   barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr,
-                       0, nullptr, 1, &barrier);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
+                       nullptr, 0, nullptr, 1, &barrier);
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {extent.width, extent.height, 1};
@@ -467,17 +476,48 @@ void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, slot.timestamps, kTraceEnd);
   recordCopyRayStats(cmd, v.renderer, slot.rayStats.handle);
 
-  const glm::uvec2 source = v.scheduler.traceExtent;
-  if (source.x > 0 && source.y > 0) {
-    DisplaySettings display;
-    display.exposure = v.settings.exposure;
-    display.toneMap = v.settings.toneMap;
-    display.encodeSrgb = !v.swapchain.srgbFormat;
-    // While refining, pixels of the pass in progress keep the preview's picture until they have a sample.
-    recordDisplayPass(cmd, v.display, source, display, !v.scheduler.preview);
+  // The display pass: the whole preview while moving; while refining only the tiles traced this frame (the
+  // refined image keeps its texels), which saves most of the pass at large sizes.
+  const glm::uvec2 traced = v.scheduler.traceExtent;
+  const DisplaySettings display{v.settings.exposure, v.settings.toneMap};
+  const bool settingsChanged = !(display == v.lastDisplay) || v.displayStale;
+  const bool traceDone = plan != nullptr && !plan->passes.empty();
+  if (traced.x > 0 && traced.y > 0 && v.scheduler.preview) {
+    if (traceDone || settingsChanged || !v.showingPreview) {
+      const Tile whole{glm::uvec2(0), traced};
+      recordDisplayRegions(cmd, v.display, v.display.preview, traced, display, {&whole, 1});
+    }
+    v.showingPreview = true;
+    v.previewSize = traced;
+  } else if (traced.x > 0 && traced.y > 0) {
+    if (v.showingPreview) {
+      // Refinement starts: the last preview, stretched, stands in for the pixels not traced yet.
+      recordPreviewToRefined(cmd, v.display, v.previewSize);
+      v.showingPreview = false;
+    }
+    std::vector<Tile> regions;
+    if (settingsChanged) {
+      regions = tilesWithSamples(v.scheduler);
+    } else if (traceDone) {
+      for (const TracePass& pass : plan->passes) {
+        // A small image may take several passes in a frame: each tile once.
+        const bool seen = std::any_of(regions.begin(), regions.end(),
+                                      [&](const Tile& tile) { return tile.origin == pass.tile.origin; });
+        if (!seen) regions.push_back(pass.tile);
+      }
+    }
+    recordDisplayRegions(cmd, v.display, v.display.refined, traced, display, regions);
   }
+  v.lastDisplay = display;
+  v.displayStale = false;
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, slot.timestamps, kDisplayEnd);
   const VkImage image = v.swapchain.images[imageIndex];
-  recordBlitToSwapchain(cmd, v.display, image, v.swapchain.extent);
+  if (v.showingPreview) {
+    recordToSwapchain(cmd, v.display, v.display.preview, v.previewSize, image, v.swapchain.extent);
+  } else {
+    recordToSwapchain(cmd, v.display, v.display.refined, v.display.extent, image, v.swapchain.extent);
+  }
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, slot.timestamps, kBlitEnd);
   recordUi(cmd, v.ui, v.swapchain, imageIndex);
   if (capture) recordCapture(cmd, v, slot, image);
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps, kFrameEnd);
@@ -519,7 +559,7 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
   PanelEdits edits;
   if (v.ui.visible) {
     updateStatus(v);
-    edits = drawPanel(v.scene, v.settings, v.status, v.controller.sceneSize);
+    edits = drawPanel(v.scene, v.settings, v.selection, v.status, v.controller.sceneSize);
   }
   if (updateCamera(v.controller, v.camera, v.window, input, !uiWantsMouse(), !uiWantsKeyboard(),
                    now - v.lastCameraUpdate)) {

@@ -44,7 +44,9 @@ struct FrameRecord {
   double submitSeconds = 0.0;    // since the viewer started its loop
   double completeSeconds = 0.0;  // when the main thread saw its fence
   double traceSeconds = 0.0;     // device time of its trace passes
-  double deviceSeconds = 0.0;    // device time of the whole frame
+  double displaySeconds = 0.0;   // device time of the display pass
+  double blitSeconds = 0.0;      // device time of the blit to the window
+  double deviceSeconds = 0.0;    // device time of the whole frame (the UI pass is what the others leave)
   glm::uvec2 traceExtent{0};
   bool preview = false;
   std::uint32_t spp = 0;         // complete passes at traceExtent after this frame

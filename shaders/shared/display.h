@@ -1,5 +1,6 @@
 // The display pass (display.comp): the accumulation buffer, divided by its sample counts, through exposure,
-// a tone curve and the sRGB transfer function into the 8-bit image that is blitted to the window.
+// a tone curve and the sRGB transfer function into 8-bit texels laid out like the window's images, which
+// transfer commands then copy and blit there.
 #ifndef RAYLAB_SHARED_DISPLAY_H
 #define RAYLAB_SHARED_DISPLAY_H
 
@@ -8,8 +9,8 @@
 RL_NAMESPACE_BEGIN
 
 // Bindings of display.comp (its own set 0).
-RL_CONST uint kBindingDisplayAccumulation = 0;  // vec4[] radiance sum and sample count, sourceSize pixels
-RL_CONST uint kBindingDisplayImage = 1;         // rgba8 storage image, targetSize pixels
+RL_CONST uint kBindingDisplayAccumulation = 0;  // vec4[] radiance sum and sample count, `size` pixels
+RL_CONST uint kBindingDisplayTexels = 1;        // uint[] one 8-bit RGBA or BGRA texel per pixel, `size` pixels
 
 // DisplayParams.toneMap: the curves of engine/image (ToneMap), in the same order.
 RL_CONST uint kDisplayToneClamp = 0;
@@ -17,14 +18,13 @@ RL_CONST uint kDisplayToneReinhard = 1;
 RL_CONST uint kDisplayToneAces = 2;
 
 // DisplayParams.flags
-RL_CONST uint kDisplayEncodeSrgb = 1;  // write sRGB-encoded values (the window's format is UNORM)
-RL_CONST uint kDisplayKeepEmpty = 2;   // leave texels whose source pixels have no sample yet untouched
+RL_CONST uint kDisplayBgra = 1;  // bytes in B, G, R, A order (the swapchain's format is B8G8R8A8)
 
-// The source (the accumulation at the traced resolution) is stretched over the target with bilinear
-// filtering; at equal sizes every target texel reads exactly its own pixel.
+// Pixel (x, y) of the accumulation becomes texel (x, y), both with rows of size.x. A dispatch covers the
+// pixels [regionOrigin, regionOrigin + dispatch size).
 struct DisplayParams {
-  uvec2 sourceSize;
-  uvec2 targetSize;
+  uvec2 size;
+  uvec2 regionOrigin;
   float exposureScale;  // 2^exposure
   uint toneMap;
   uint flags;

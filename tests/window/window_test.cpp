@@ -72,8 +72,12 @@ void expectSameImage(const Image& actual, const Image& expected, const std::stri
   std::size_t worst = 0;
   double worstError = 0.0;
   for (std::size_t i = 0; i < actual.rgba.size(); ++i) {
-    const double error = std::abs(double(actual.rgba[i]) - expected.rgba[i]) / (1e-3 + std::abs(double(expected.rgba[i])));
-    if (error > worstError) worstError = error, worst = i;
+    const double expectedValue = expected.rgba[i];
+    const double error = std::abs(actual.rgba[i] - expectedValue) / (1e-3 + std::abs(expectedValue));
+    if (error > worstError) {
+      worstError = error;
+      worst = i;
+    }
   }
   EXPECT_LT(worstError, 1e-5) << what << ": float " << worst << " is " << actual.rgba[worst] << ", expected "
                               << expected.rgba[worst];
@@ -263,12 +267,14 @@ TEST(WindowTest, ScriptErrorsNameTheLineAndUsageErrorsTheOption) {
 }
 
 TEST(WindowTest, WithoutADisplayItSaysToUseXvfbAndWithoutADeviceItExitsThree) {
-  const CommandResult noDisplay = runCommand({RAYLAB_BINARY, "view", "--frames", "1"}, {"DISPLAY=", "WAYLAND_DISPLAY="});
+  const CommandResult noDisplay =
+      runCommand({RAYLAB_BINARY, "view", "--frames", "1"}, {"DISPLAY=", "WAYLAND_DISPLAY="});
   EXPECT_EQ(noDisplay.exitCode, 1) << noDisplay.output;
   EXPECT_NE(noDisplay.output.find("X11"), std::string::npos) << noDisplay.output;
   EXPECT_NE(noDisplay.output.find("xvfb-run -a"), std::string::npos) << noDisplay.output;
 
-  const CommandResult noDevice = runCommand({RAYLAB_BINARY, "view", "--frames", "1"}, {"DISPLAY=", "VK_ICD_FILENAMES="});
+  const CommandResult noDevice =
+      runCommand({RAYLAB_BINARY, "view", "--frames", "1"}, {"DISPLAY=", "VK_ICD_FILENAMES="});
   EXPECT_EQ(noDevice.exitCode, 3) << noDevice.output;
   EXPECT_NE(noDevice.output.find("tools/setup.sh"), std::string::npos) << noDevice.output;
 }

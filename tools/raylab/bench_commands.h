@@ -5,5 +5,6 @@ namespace raylab {
 
 int benchKernels(int argc, char** argv);
 int benchRays(int argc, char** argv);
+int benchView(int argc, char** argv);
 
 }  // namespace raylab

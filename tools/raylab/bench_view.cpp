@@ -1,0 +1,217 @@
+// `raylab bench view`: how fluid the viewer is. For each window size it opens the viewer on the default scene,
+// lets the kernel compile, orbits the camera one step per frame (the frame times a user dragging the mouse
+// sees, and the preview resolution that holds them), then keeps still and times how long the window takes to
+// show 16 samples per pixel at full resolution. Needs an X11 display: `xvfb-run -a raylab bench view`.
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "args.h"
+#include "bench_commands.h"
+#include "scene/load_scene.h"
+#include "util/error.h"
+#include "view/viewer.h"
+
+namespace raylab {
+
+namespace {
+
+struct Size {
+  std::uint32_t width;
+  std::uint32_t height;
+};
+
+struct ViewTiming {
+  Size size;
+  double firstFrameSeconds = 0.0;  // the kernel's compilation included (cold or warm shader cache)
+  std::vector<double> orbitFrameSeconds;  // intervals between frames while orbiting
+  double meanPreviewPixels = 0.0;
+  std::uint32_t minPreviewWidth = 0, maxPreviewWidth = 0;
+  double stillTo16Seconds = 0.0;   // from the first unchanged frame to the frame that completed 16 spp
+  double secondsPerPixelSample = 0.0;  // still frames: device trace time per pixel-sample
+  double overheadSeconds = 0.0;        // still frames, median: device time besides tracing (display, blit, UI)
+  double stillFrameSeconds = 0.0;      // still frames, median interval
+  double displaySeconds = 0.0, blitSeconds = 0.0, uiSeconds = 0.0;  // still frames, medians
+};
+
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t index = std::min(values.size() - 1, static_cast<std::size_t>(p * double(values.size() - 1) + 0.5));
+  return values[index];
+}
+
+std::string loadAverage() {
+  std::ifstream file("/proc/loadavg");
+  std::string one, five;
+  file >> one >> five;
+  return one.empty() ? "unknown" : one + " (1 min), " + five + " (5 min)";
+}
+
+void writeFramesCsv(const std::string& path, Size size, const std::vector<FrameRecord>& frames,
+                    std::uint32_t stillFrame) {
+  std::ofstream file(path, std::ios::app);
+  if (!file) throw Error(path + ": cannot write");
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const FrameRecord& f = frames[i];
+    file << size.width << 'x' << size.height << ',' << i << ',' << (i < stillFrame ? "moving" : "still") << ','
+         << f.submitSeconds << ',' << f.completeSeconds << ',' << f.traceExtent.x << 'x' << f.traceExtent.y << ','
+         << f.preview << ',' << f.spp << ',' << f.pixelSamples << ',' << f.traceSeconds << ',' << f.displaySeconds
+         << ',' << f.blitSeconds << ',' << f.deviceSeconds << '\n';
+  }
+}
+
+ViewTiming timeViewer(const Scene& scene, Size size, std::uint32_t warmupFrames, std::uint32_t orbitFrames,
+                      float degreesPerFrame, double targetMs, std::uint32_t spp, const std::string& csvPath) {
+  ViewerOptions options;
+  options.width = size.width;
+  options.height = size.height;
+  options.targetMs = targetMs;
+  options.sppLimit = spp;
+  options.exitWhenConverged = true;
+  options.quiet = true;
+  for (std::uint32_t i = 0; i < orbitFrames; ++i) {
+    ScriptEvent event;
+    event.frame = warmupFrames + i;
+    event.action = ScriptAction::kOrbit;
+    event.where = "bench";
+    event.value = glm::vec3(degreesPerFrame, 0.0f, 0.0f);
+    event.valueCount = 2;
+    options.script.push_back(event);
+  }
+  const ViewerReport report = runViewer(scene, options);
+  const std::vector<FrameRecord>& frames = report.frames;
+  const std::uint32_t stillFrame = warmupFrames + orbitFrames;
+  if (!csvPath.empty()) writeFramesCsv(csvPath, size, frames, stillFrame);
+  if (frames.size() <= stillFrame) {
+    throw Error("raylab bench view: the viewer stopped after " + std::to_string(frames.size()) + " frames");
+  }
+
+  ViewTiming timing;
+  timing.size = size;
+  timing.firstFrameSeconds = frames[0].completeSeconds - frames[0].submitSeconds;
+  double previewPixels = 0.0;
+  timing.minPreviewWidth = UINT32_MAX;
+  // The first orbit frame's interval includes the still frames before it; measure from the second.
+  for (std::uint32_t i = warmupFrames + 1; i < stillFrame; ++i) {
+    timing.orbitFrameSeconds.push_back(frames[i].submitSeconds - frames[i - 1].submitSeconds);
+    previewPixels += double(frames[i].traceExtent.x) * frames[i].traceExtent.y;
+    timing.minPreviewWidth = std::min(timing.minPreviewWidth, frames[i].traceExtent.x);
+    timing.maxPreviewWidth = std::max(timing.maxPreviewWidth, frames[i].traceExtent.x);
+  }
+  timing.meanPreviewPixels = previewPixels / std::max<std::size_t>(1, timing.orbitFrameSeconds.size());
+
+  const double stillStart = frames[stillFrame].submitSeconds;
+  double traceSeconds = 0.0;
+  double pixelSamples = 0.0;
+  std::vector<double> overheads, intervals, displays, blits, uis;
+  for (std::size_t i = stillFrame; i < frames.size(); ++i) {
+    const FrameRecord& frame = frames[i];
+    if (!frame.preview) {
+      traceSeconds += frame.traceSeconds;
+      pixelSamples += double(frame.pixelSamples);
+      overheads.push_back(frame.deviceSeconds - frame.traceSeconds);
+      displays.push_back(frame.displaySeconds);
+      blits.push_back(frame.blitSeconds);
+      uis.push_back(frame.deviceSeconds - frame.traceSeconds - frame.displaySeconds - frame.blitSeconds);
+      intervals.push_back(frame.submitSeconds - frames[i - 1].submitSeconds);
+    }
+    if (!frame.preview && frame.traceExtent == report.fullExtent && frame.spp >= spp) {
+      timing.stillTo16Seconds = frame.completeSeconds - stillStart;
+      break;
+    }
+  }
+  timing.secondsPerPixelSample = pixelSamples > 0.0 ? traceSeconds / pixelSamples : 0.0;
+  timing.overheadSeconds = percentile(overheads, 0.5);
+  timing.stillFrameSeconds = percentile(intervals, 0.5);
+  timing.displaySeconds = percentile(displays, 0.5);
+  timing.blitSeconds = percentile(blits, 0.5);
+  timing.uiSeconds = percentile(uis, 0.5);
+  return timing;
+}
+
+}  // namespace
+
+int benchView(int argc, char** argv) {
+  std::uint32_t warmupFrames = 8, orbitFrames = 60, spp = 16;
+  float targetMs = 50.0f;
+  float degrees = 0.0f;
+  bool json = false;
+  std::string scenePath;
+  std::string csvPath;
+  ArgParser args("raylab bench view", "[options]",
+                 "Times the viewer on the default scene at 640x360 and 1280x720: frame times while the camera\n"
+                 "orbits one step per frame, and the time from the last change until the window shows --spp\n"
+                 "samples per pixel at full resolution. Needs an X11 display (headless: xvfb-run -a). The first\n"
+                 "frames (the driver compiling the kernels) are not timed.");
+  args.option("--warmup", &warmupFrames, "frames before the orbit starts", 1, 1000);
+  args.option("--orbit-frames", &orbitFrames, "frames of orbiting", 2, 100000);
+  args.option("--degrees", &degrees, "orbit step per frame (default: a full turn, back to the scene's view)", 0.0f,
+              90.0f);
+  args.option("--target-ms", &targetMs, "the viewer's frame-time target", 5.0f, 1000.0f);
+  args.option("--spp", &spp, "samples per pixel to reach when still", 1, 4096);
+  args.option("--scene", &scenePath, "FILE", "a glTF scene instead of the built-in one");
+  args.flag("--json", &json, "print one JSON object instead of the table");
+  args.option("--frames-csv", &csvPath, "FILE",
+              "also write every frame (size, index, phase, submit and completion time, traced size, preview, spp, "
+              "pixel-samples, device seconds of tracing, display, blit and the whole frame) to FILE");
+  if (!args.parse(argc, argv)) return kExitOk;
+  if (degrees == 0.0f) degrees = 360.0f / float(orbitFrames);
+
+  const Scene scene = loadScene({scenePath, ""});
+  if (!csvPath.empty()) std::ofstream(csvPath, std::ios::trunc);
+  const std::string loadBefore = loadAverage();
+  std::vector<ViewTiming> timings;
+  for (const Size size : {Size{640, 360}, Size{1280, 720}}) {
+    timings.push_back(timeViewer(scene, size, warmupFrames, orbitFrames, degrees, targetMs, spp, csvPath));
+  }
+  const std::string loadAfter = loadAverage();
+  const unsigned cores = std::thread::hardware_concurrency();
+
+  if (json) {
+    std::printf("{\"benchmark\": \"view\", \"scene\": \"%s\", \"cores\": %u, \"target_ms\": %.1f, \"spp\": %u, "
+                "\"load_before\": \"%s\", \"load_after\": \"%s\", \"sizes\": [",
+                scene.name.c_str(), cores, targetMs, spp, loadBefore.c_str(), loadAfter.c_str());
+    for (std::size_t i = 0; i < timings.size(); ++i) {
+      const ViewTiming& t = timings[i];
+      std::printf("%s{\"width\": %u, \"height\": %u, \"first_frame_s\": %.4f, \"orbit_median_ms\": %.2f, "
+                  "\"orbit_p90_ms\": %.2f, \"orbit_max_ms\": %.2f, \"preview_mean_pixels\": %.0f, "
+                  "\"still_to_spp_s\": %.3f, \"still_frame_ms\": %.2f, \"overhead_ms\": %.2f, "
+                  "\"ns_per_pixel_sample\": %.1f}",
+                  i == 0 ? "" : ", ", t.size.width, t.size.height, t.firstFrameSeconds,
+                  1e3 * percentile(t.orbitFrameSeconds, 0.5), 1e3 * percentile(t.orbitFrameSeconds, 0.9),
+                  1e3 * percentile(t.orbitFrameSeconds, 1.0), t.meanPreviewPixels, t.stillTo16Seconds,
+                  1e3 * t.stillFrameSeconds, 1e3 * t.overheadSeconds, 1e9 * t.secondsPerPixelSample);
+    }
+    std::printf("]}\n");
+    return kExitOk;
+  }
+  std::printf("scene: %s; %u cores; target %.0f ms/frame; load average %s before, %s after\n", scene.name.c_str(),
+              cores, targetMs, loadBefore.c_str(), loadAfter.c_str());
+  std::printf("%-10s %12s %24s %22s %16s %22s %13s\n", "window", "first frame", "orbit ms/frame p50/p90/max",
+              "preview (mean, widths)", "still to spp", "still ms/frame (other)", "ns/pixel-spp");
+  for (const ViewTiming& t : timings) {
+    char size[32], orbit[48], preview[48], still[32];
+    std::snprintf(size, sizeof size, "%ux%u", t.size.width, t.size.height);
+    std::snprintf(orbit, sizeof orbit, "%.1f / %.1f / %.1f", 1e3 * percentile(t.orbitFrameSeconds, 0.5),
+                  1e3 * percentile(t.orbitFrameSeconds, 0.9), 1e3 * percentile(t.orbitFrameSeconds, 1.0));
+    std::snprintf(preview, sizeof preview, "%.0f px, %u-%u", t.meanPreviewPixels, t.minPreviewWidth, t.maxPreviewWidth);
+    std::snprintf(still, sizeof still, "%u spp in %.2f s", spp, t.stillTo16Seconds);
+    char stillFrame[32];
+    std::snprintf(stillFrame, sizeof stillFrame, "%.1f (%.1f)", 1e3 * t.stillFrameSeconds, 1e3 * t.overheadSeconds);
+    std::printf("%-10s %10.2f s %24s %22s %16s %22s %13.0f\n", size, t.firstFrameSeconds, orbit, preview, still,
+                stillFrame, 1e9 * t.secondsPerPixelSample);
+  }
+  for (const ViewTiming& t : timings) {
+    std::printf("%ux%u still frames, device ms: display pass %.1f, blit %.1f, UI %.1f\n", t.size.width,
+                t.size.height, 1e3 * t.displaySeconds, 1e3 * t.blitSeconds, 1e3 * t.uiSeconds);
+  }
+  std::printf("still ms/frame (other): interval between still frames, and the device time per frame that is not\n"
+              "tracing (display pass, blit, UI). First frame > 0.5 s: the shader cache was cold.\n");
+  return kExitOk;
+}
+
+}  // namespace raylab
