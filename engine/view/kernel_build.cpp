@@ -66,12 +66,17 @@ std::unique_ptr<KernelBuild> startKernelBuild(const Instance& instance, const De
     const Stopwatch clock;
     try {
       b->pipeline = createRenderPipeline(device, rendererHandles, kernel);
-      if (warm) {
-        warmUp(instance, device.report, kernel);
-        b->warmedUp = true;
-      }
     } catch (const std::exception& error) {
       b->error = error.what();
+    }
+    // The warm-up only saves time: if it fails, the first dispatch on the viewer's queue compiles instead.
+    if (warm && b->error.empty()) {
+      try {
+        warmUp(instance, device.report, kernel);
+        b->warmedUp = true;
+      } catch (const std::exception&) {
+        b->warmedUp = false;
+      }
     }
     b->seconds = clock.seconds();
     b->finished.store(true);

@@ -40,6 +40,8 @@ constexpr std::uint64_t kPollNanoseconds = 2'000'000;  // a fence wait never kee
 constexpr int kUiSettleFrames = 3;     // frames drawn after an input event while idle (ImGui hover states)
 constexpr double kResizeTimeout = 5.0;  // seconds a scripted resize may take
 constexpr double kRaysWindow = 1.0;     // rays/s over this many seconds of frames
+constexpr double kIdleWaitSeconds = 0.5;    // idle: the status line still refreshes this often
+constexpr double kBuildPollSeconds = 0.05;  // a kernel build's end is noticed within this
 
 bool covers(const KernelFeatures& kernel, const KernelFeatures& needed) {
   return (needed.models & ~kernel.models) == 0 && (needed.features & ~kernel.features) == 0;
@@ -649,10 +651,13 @@ void run(Viewer& v) {
     }
     if (v.extentStale) updateFullExtent(v);
 
-    const bool traceWork = v.changed || (covers(v.renderer.kernel, v.needed) && !converged(v.scheduler));
+    // Nothing to trace (refined to the limit, or waiting for a kernel) and no input: sleep until an event, but
+    // wake up now and then while a kernel builds, to take it as soon as it is ready.
+    const bool paused = !covers(v.renderer.kernel, v.needed);
+    const bool traceWork = !paused && (v.changed || !converged(v.scheduler));
     if (!v.automation && !traceWork && !v.window.input->activity && v.uiFramesLeft <= 0) {
       if (anyInFlight(v)) continue;  // the fence wait above paces the loop
-      glfwWaitEventsTimeout(v.build ? 0.05 : 0.5);
+      glfwWaitEventsTimeout(v.build ? kBuildPollSeconds : kIdleWaitSeconds);
       continue;
     }
 

@@ -4,6 +4,8 @@
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+
 #include "util/error.h"
 #include "util/timer.h"
 #include "vk/vk_check.h"

@@ -58,8 +58,7 @@ int runView(int argc, char** argv) {
   args.option("--exposure", &o.exposure, "display exposure in stops", -20.0f, 20.0f);
   args.choice("--tonemap", &toneMap, {"clamp", "reinhard", "aces"}, "display tone curve (default clamp)");
   args.flag("--no-panel", &noPanel, "start with the panel hidden (F1 shows it)");
-  args.option("--frames", &frames, "run N frames and exit, deterministically: a frame with a scripted change "
-                                    "draws the preview, every other frame adds one full-resolution pass");
+  args.option("--frames", &frames, "run N frames and exit; each frame without a change adds one full pass");
   args.option("--script", &scriptPath, "FILE", "replay camera and parameter changes (format in docs/viewer.md)");
   args.option("--screenshot", &o.screenshot, "FILE.exr", "save the last frame's image (and a PNG beside it)");
   args.option("--png", &o.screenshotPng, "FILE.png", "where --screenshot writes its PNG");
