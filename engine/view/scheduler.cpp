@@ -13,6 +13,8 @@ constexpr double kSmoothingUp = 0.6;
 constexpr double kSmoothingDown = 0.25;
 constexpr float kHysteresis = 0.12f;  // a preview may grow only by more than 12%, so its size does not flicker
 constexpr double kMinTraceShare = 0.25;  // tracing gets at least this share of the frame, whatever the overhead
+// A fast device on a small window could fit thousands of passes in a budget: more per frame gain nothing.
+constexpr std::uint32_t kMaxPassesPerFrame = 16;
 
 double traceBudget(const Scheduler& s) {
   const double target = s.settings.targetFrameSeconds;
@@ -40,7 +42,8 @@ bool limitReached(const Scheduler& s) { return s.settings.sppLimit > 0 && s.samp
 // Takes tiles of the pass in progress (and the next passes) until `budget` is used; at least one tile.
 void addTiles(Scheduler& s, FramePlan& plan, double budget) {
   double spent = 0.0;
-  while (!limitReached(s)) {
+  const std::uint32_t lastSample = s.sampleIndex + kMaxPassesPerFrame;
+  while (!limitReached(s) && s.sampleIndex < lastSample) {
     const Tile& tile = s.tiles[s.nextTile];
     const double cost = double(tile.size.x) * tile.size.y * s.cost.secondsPerPixelSample;
     if (!plan.passes.empty() && spent + cost > budget) break;
@@ -98,6 +101,12 @@ glm::uvec2 previewExtent(glm::uvec2 full, double budgetSeconds, double secondsPe
 void setFullExtent(Scheduler& scheduler, glm::uvec2 extent) {
   scheduler.fullExtent = extent;
   scheduler.needsReset = true;
+  // Nothing of the old size survives: the accumulation was reallocated, and an old preview size might not fit.
+  scheduler.traceExtent = glm::uvec2(0);
+  scheduler.preview = false;
+  scheduler.tiles.clear();
+  scheduler.nextTile = 0;
+  scheduler.sampleIndex = 0;
 }
 
 std::vector<Tile> tilesWithSamples(const Scheduler& s) {
@@ -127,9 +136,9 @@ FramePlan planFrame(Scheduler& s, double now, bool changed, FrameKind kind) {
         extent = glm::min(extent, s.fullExtent);
       }
       // Small swings of the estimate should not make the preview's size flicker; shrinking is never delayed.
-      if (s.preview && extent.x >= s.traceExtent.x && float(extent.x) < (1.0f + kHysteresis) * float(s.traceExtent.x)) {
-        extent = s.traceExtent;
-      }
+      const bool slightlyLarger =
+          extent.x >= s.traceExtent.x && float(extent.x) < (1.0f + kHysteresis) * float(s.traceExtent.x);
+      if (s.preview && slightlyLarger) extent = s.traceExtent;
       restart(s, extent, true, plan);
     }
     // The preview is sized so that one whole pass fits the budget: the window always shows a complete image.

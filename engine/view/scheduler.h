@@ -84,7 +84,8 @@ bool converged(const Scheduler& scheduler);
 // The tiles of the accumulation that hold at least one sample (all of them once a pass is complete).
 std::vector<Tile> tilesWithSamples(const Scheduler& scheduler);
 
-// Changes the full resolution (window resize, resolution scale); the next plan resets.
+// Changes the full resolution (window resize, resolution scale): the accumulation is empty, the next plan
+// starts over.
 void setFullExtent(Scheduler& scheduler, glm::uvec2 extent);
 
 // The reduced resolution that traces in `budgetSeconds` at `secondsPerPixelSample`, with the full image's

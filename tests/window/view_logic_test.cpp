@@ -128,6 +128,19 @@ TEST(SchedulerTest, MovingTracesAReducedResolutionSizedToTheBudgetThenRefines) {
   EXPECT_EQ(still.passes.front().sampleIndex, 0u);
 }
 
+TEST(SchedulerTest, AResizeWhileMovingNeverKeepsAPreviewLargerThanTheNewImage) {
+  // A budget of about 620x349 pixels at 1280x720; then the window becomes 640x200, where the whole image fits
+  // the budget and is barely wider than the old preview (the preview's size hysteresis must not keep it).
+  Scheduler scheduler = makeScheduler({1280, 720}, 0.05 / (620.0 * 349.0));
+  scheduler.settings.targetFrameSeconds = 0.05;
+  const FramePlan before = planFrame(scheduler, 1.0, true, FrameKind::kInteractive);
+  EXPECT_NEAR(double(before.traceExtent.x), 620.0, 2.0);
+  setFullExtent(scheduler, {640, 200});
+  const FramePlan plan = planFrame(scheduler, 1.01, true, FrameKind::kInteractive);
+  EXPECT_TRUE(plan.reset);
+  EXPECT_EQ(plan.traceExtent, glm::uvec2(640, 200));
+}
+
 TEST(SchedulerTest, StopsAtTheSppLimit) {
   Scheduler scheduler = makeScheduler({64, 64}, 1e-7);
   scheduler.settings.sppLimit = 2;
