@@ -144,8 +144,8 @@ void beginUiFrame() {
 
 void recordUi(VkCommandBuffer cmd, const Ui& ui, const Swapchain& swapchain, std::uint32_t imageIndex) {
   ImGui::Render();
-  // The render area is only what the UI covers: lavapipe loads and stores every tile of the render area,
-  // which for a whole 1280x720 window costs more than drawing the panel.
+  // The render area is the union of the draw commands' clip rectangles (every fragment is scissored to one),
+  // so the rest of the window needs no load or store; without any, there is no render pass at all.
   const ImDrawData* data = ImGui::GetDrawData();
   VkRect2D area{};
   if (ui.visible && data != nullptr) {
