@@ -49,10 +49,10 @@ VariantTiming timeVariant(const Device& device, const Scene& scene, RenderSettin
   return timing;
 }
 
-// The default scene with every material made plain Lambert: the case specialization helps most.
+// The default scene (the showcase) with every material plain Lambert: where specialization helps most.
 Scene lambertOnlyScene() {
   Scene scene = makeDefaultScene();
-  scene.name = "default, Lambert only";
+  scene.name = "showcase, every material Lambert";
   for (Material& material : scene.materials) material.record = lambertMaterial(material.record.rhoD);
   return scene;
 }
