@@ -7,16 +7,13 @@
 
 #include "shared/brdf_eval.h"
 #include "vk/device.h"
-#include "vk/pipeline.h"
+#include "vk/compute_kernel.h"
 #include "vk/resources.h"
 
 namespace raylab {
 
 struct BrdfEvaluator {
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  DescriptorSet descriptors;
+  ComputeKernel kernel;
   Buffer cases;
   Buffer values;
   std::uint32_t capacity = 0;  // cases the buffers hold
@@ -36,10 +33,7 @@ std::vector<gpu::BrdfEvalValue> evaluateBrdfCasesOnce(const Device& device, std:
                                                       double* dispatchSeconds = nullptr);
 
 struct BrdfSampler {
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  DescriptorSet descriptors;
+  ComputeKernel kernel;
   Buffer uniforms;
   Buffer samples;
   std::uint32_t capacity = 0;  // samples the buffers hold

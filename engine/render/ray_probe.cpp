@@ -7,7 +7,6 @@
 #include "util/error.h"
 #include "util/timer.h"
 #include "vk/commands.h"
-#include "vk/vk_check.h"
 
 namespace raylab {
 
@@ -17,11 +16,7 @@ constexpr std::uint32_t kWorkgroupSize = 64;  // trace_rays.comp: local_size_x
 
 void recordTrace(VkCommandBuffer cmd, const RayProbe& probe, std::uint32_t rayCount, std::uint32_t mode) {
   const gpu::ProbeParams params{rayCount, mode};
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, probe.pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, probe.pipelineLayout, 0, 1, &probe.descriptors.set, 0,
-                          nullptr);
-  vkCmdPushConstants(cmd, probe.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params, &params);
-  vkCmdDispatch(cmd, (rayCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
+  recordDispatch(cmd, probe.kernel, &params, (rayCount + kWorkgroupSize - 1) / kWorkgroupSize);
   computeBarrier(cmd);
 }
 
@@ -33,29 +28,23 @@ RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uin
   std::vector<DescriptorBinding> bindings = sceneBindings();
   bindings.push_back({gpu::kBindingProbeRays, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   bindings.push_back({gpu::kBindingProbeHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-  probe.setLayout = createDescriptorSetLayout(device, bindings, "probe set layout");
-  probe.pipelineLayout = createPipelineLayout(device, probe.setLayout, sizeof(gpu::ProbeParams), "probe pipeline layout");
-  probe.pipeline = createComputePipeline(device, probe.pipelineLayout, "trace_rays.comp");
+  probe.kernel = createComputeKernel(device, "trace_rays.comp", bindings, sizeof(gpu::ProbeParams));
   probe.rays = createBuffer(device, VkDeviceSize(capacity) * sizeof(gpu::ProbeRay),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kDevice,
                             "probe rays");
   probe.hits = createBuffer(device, VkDeviceSize(capacity) * sizeof(gpu::ProbeHit),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::kDevice,
                             "probe hits");
-  probe.descriptors = allocateDescriptorSet(device, probe.setLayout, bindings, "probe set");
-  writeSceneDescriptors(device, probe.descriptors.set, gpuScene);
-  writeStorageBuffer(device, probe.descriptors.set, gpu::kBindingProbeRays, probe.rays.handle);
-  writeStorageBuffer(device, probe.descriptors.set, gpu::kBindingProbeHits, probe.hits.handle);
+  writeSceneDescriptors(device, probe.kernel.descriptors.set, gpuScene);
+  writeStorageBuffer(device, probe.kernel.descriptors.set, gpu::kBindingProbeRays, probe.rays.handle);
+  writeStorageBuffer(device, probe.kernel.descriptors.set, gpu::kBindingProbeHits, probe.hits.handle);
   return probe;
 }
 
 void destroyRayProbe(const Device& device, RayProbe& probe) {
   destroyBuffer(device, probe.hits);
   destroyBuffer(device, probe.rays);
-  destroyDescriptorSet(device, probe.descriptors);
-  if (probe.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, probe.pipeline, nullptr);
-  if (probe.pipelineLayout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device.handle, probe.pipelineLayout, nullptr);
-  if (probe.setLayout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device.handle, probe.setLayout, nullptr);
+  destroyComputeKernel(device, probe.kernel);
   probe = {};
 }
 

@@ -8,15 +8,12 @@
 #include "scene/gpu_scene.h"
 #include "shared/frame.h"
 #include "vk/device.h"
-#include "vk/pipeline.h"
+#include "vk/compute_kernel.h"
 
 namespace raylab {
 
 struct RayProbe {
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  DescriptorSet descriptors;
+  ComputeKernel kernel;
   Buffer rays;
   Buffer hits;
   std::uint32_t capacity = 0;  // rays the buffers hold

@@ -25,6 +25,12 @@ void checkImageSize(std::uint32_t width, std::uint32_t height) {
   }
 }
 
+SpecializationConstants specializationFor(const KernelFeatures& kernel) {
+  SpecializationConstants constants;
+  constants.set(gpu::kSpecEnabledModels, kernel.models).set(gpu::kSpecFeatures, kernel.features);
+  return constants;
+}
+
 std::vector<DescriptorBinding> rendererBindings() {
   std::vector<DescriptorBinding> bindings = sceneBindings();
   bindings.push_back({gpu::kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
@@ -70,34 +76,30 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   params.throughputCutoff = settings.throughputCutoff;
   applyCamera(params, scene.camera, settings.width, settings.height);
 
-  const std::vector<DescriptorBinding> bindings = rendererBindings();
-  renderer.setLayout = createDescriptorSetLayout(device, bindings, "render set layout");
-  renderer.pipelineLayout =
-      createPipelineLayout(device, renderer.setLayout, sizeof(gpu::FrameParams), "render pipeline layout");
   renderer.kernel = settings.kernel.value_or(featuresOf(scene));
-  renderer.pipeline = createRenderPipeline(device, renderer, renderer.kernel);
+  SpecializationConstants constants = specializationFor(renderer.kernel);
+  renderer.compute =
+      createComputeKernel(device, "render.comp", rendererBindings(), sizeof(gpu::FrameParams), &constants);
 
   renderer.stats = createBuffer(device, sizeof(gpu::RayStats),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                                     VK_BUFFER_USAGE_TRANSFER_SRC_BIT,  // recordCopyRayStats
                                 MemoryUse::kHost, "ray stats");
 
-  renderer.descriptors = allocateDescriptorSet(device, renderer.setLayout, bindings, "render set");
-  writeSceneDescriptors(device, renderer.descriptors.set, gpuScene);
-  writeStorageBuffer(device, renderer.descriptors.set, gpu::kBindingRayStats, renderer.stats.handle);
+  writeSceneDescriptors(device, renderer.compute.descriptors.set, gpuScene);
+  writeStorageBuffer(device, renderer.compute.descriptors.set, gpu::kBindingRayStats, renderer.stats.handle);
   resizeRenderer(device, renderer, settings.width, settings.height);
   return renderer;
 }
 
 VkPipeline createRenderPipeline(const Device& device, const Renderer& renderer, const KernelFeatures& kernel) {
-  SpecializationConstants constants;
-  constants.set(gpu::kSpecEnabledModels, kernel.models).set(gpu::kSpecFeatures, kernel.features);
-  return createComputePipeline(device, renderer.pipelineLayout, "render.comp", &constants);
+  SpecializationConstants constants = specializationFor(kernel);
+  return createComputePipeline(device, renderer.compute.pipelineLayout, "render.comp", &constants);
 }
 
 void swapRenderPipeline(const Device& device, Renderer& renderer, VkPipeline pipeline, const KernelFeatures& kernel) {
-  vkDestroyPipeline(device.handle, renderer.pipeline, nullptr);
-  renderer.pipeline = pipeline;
+  vkDestroyPipeline(device.handle, renderer.compute.pipeline, nullptr);
+  renderer.compute.pipeline = pipeline;
   renderer.kernel = kernel;
 }
 
@@ -112,7 +114,7 @@ void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t widt
                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                        MemoryUse::kDevice, "accumulation");
-  writeStorageBuffer(device, renderer.descriptors.set, gpu::kBindingAccumulation, renderer.accumulation.handle);
+  writeStorageBuffer(device, renderer.compute.descriptors.set, gpu::kBindingAccumulation, renderer.accumulation.handle);
   // The camera's aspect ratio follows the image.
   const float oldAspect = float(renderer.params.width) / float(renderer.params.height);
   const float newAspect = float(width) / float(height);
@@ -125,12 +127,7 @@ void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t widt
 void destroyRenderer(const Device& device, Renderer& renderer) {
   destroyBuffer(device, renderer.stats);
   destroyBuffer(device, renderer.accumulation);
-  destroyDescriptorSet(device, renderer.descriptors);
-  if (renderer.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, renderer.pipeline, nullptr);
-  if (renderer.pipelineLayout != VK_NULL_HANDLE) {
-    vkDestroyPipelineLayout(device.handle, renderer.pipelineLayout, nullptr);
-  }
-  if (renderer.setLayout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device.handle, renderer.setLayout, nullptr);
+  destroyComputeKernel(device, renderer.compute);
   renderer = {};
 }
 
@@ -179,12 +176,8 @@ void recordSamplePass(VkCommandBuffer cmd, const Renderer& renderer, std::uint32
   gpu::FrameParams params = renderer.params;
   params.sampleIndex = sampleIndex;
   params.tileOrigin = tileOrigin;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, renderer.pipelineLayout, 0, 1,
-                          &renderer.descriptors.set, 0, nullptr);
-  vkCmdPushConstants(cmd, renderer.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params, &params);
-  vkCmdDispatch(cmd, (tileSize.x + kWorkgroupSize - 1) / kWorkgroupSize, (tileSize.y + kWorkgroupSize - 1) / kWorkgroupSize,
-                1);
+  recordDispatch(cmd, renderer.compute, &params, (tileSize.x + kWorkgroupSize - 1) / kWorkgroupSize,
+                 (tileSize.y + kWorkgroupSize - 1) / kWorkgroupSize);
   computeBarrier(cmd);  // the next pass reads and adds to the same sums
 }
 

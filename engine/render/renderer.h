@@ -11,7 +11,7 @@
 #include "scene/scene.h"
 #include "shared/frame.h"
 #include "vk/device.h"
-#include "vk/pipeline.h"
+#include "vk/compute_kernel.h"
 #include "vk/resources.h"
 
 namespace raylab {
@@ -34,10 +34,7 @@ struct RayCounts {
 };
 
 struct Renderer {
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  DescriptorSet descriptors;
+  ComputeKernel compute;  // render.comp, specialised for `kernel`
   Buffer accumulation;  // vec4 per pixel: radiance sum and sample count
   Buffer stats;         // RayStats per submission, host-visible
   KernelFeatures kernel;  // what the pipeline was specialised for

@@ -84,7 +84,7 @@ void createSized(const Device& device, Display& display, glm::uvec2 extent) {
   display.texels = createBuffer(device, VkDeviceSize(extent.x) * extent.y * 4,
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                 MemoryUse::kDevice, "display texels");
-  writeStorageBuffer(device, display.descriptors.set, gpu::kBindingDisplayTexels, display.texels.handle);
+  writeStorageBuffer(device, display.kernel.descriptors.set, gpu::kBindingDisplayTexels, display.texels.handle);
   display.preview = createDisplayImage(device, display.format, extent, "display preview");
   display.refined = createDisplayImage(device, display.format, extent, "display refined");
 }
@@ -129,21 +129,14 @@ Display createDisplay(const Device& device, VkFormat format, glm::uvec2 extent) 
   Display display;
   display.format = format;
   display.linearBlit = (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
-  display.setLayout = createDescriptorSetLayout(device, kBindings, "display set layout");
-  display.pipelineLayout =
-      createPipelineLayout(device, display.setLayout, sizeof(gpu::DisplayParams), "display pipeline layout");
-  display.pipeline = createComputePipeline(device, display.pipelineLayout, "display.comp");
-  display.descriptors = allocateDescriptorSet(device, display.setLayout, kBindings, "display set");
+  display.kernel = createComputeKernel(device, "display.comp", kBindings, sizeof(gpu::DisplayParams));
   createSized(device, display, extent);
   return display;
 }
 
 void destroyDisplay(const Device& device, Display& display) {
   destroySized(device, display);
-  destroyDescriptorSet(device, display.descriptors);
-  if (display.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, display.pipeline, nullptr);
-  if (display.pipelineLayout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device.handle, display.pipelineLayout, nullptr);
-  if (display.setLayout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device.handle, display.setLayout, nullptr);
+  destroyComputeKernel(device, display.kernel);
   display = {};
 }
 
@@ -153,7 +146,7 @@ void resizeDisplay(const Device& device, Display& display, glm::uvec2 extent) {
 }
 
 void bindAccumulation(const Device& device, const Display& display, VkBuffer accumulation) {
-  writeStorageBuffer(device, display.descriptors.set, gpu::kBindingDisplayAccumulation, accumulation);
+  writeStorageBuffer(device, display.kernel.descriptors.set, gpu::kBindingDisplayAccumulation, accumulation);
 }
 
 void recordClearDisplay(VkCommandBuffer cmd, const Display& display) {
@@ -183,15 +176,11 @@ void recordDisplayRegions(VkCommandBuffer cmd, const Display& display, const Dis
   before.dstAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &before, 0,
                        nullptr, 0, nullptr);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, display.pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, display.pipelineLayout, 0, 1, &display.descriptors.set,
-                          0, nullptr);
   std::vector<VkBufferImageCopy> copies;
   for (const Tile& region : regions) {
     params.regionOrigin = region.origin;
-    vkCmdPushConstants(cmd, display.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params, &params);
-    vkCmdDispatch(cmd, (region.size.x + kWorkgroupSize - 1) / kWorkgroupSize,
-                  (region.size.y + kWorkgroupSize - 1) / kWorkgroupSize, 1);
+    recordDispatch(cmd, display.kernel, &params, (region.size.x + kWorkgroupSize - 1) / kWorkgroupSize,
+                   (region.size.y + kWorkgroupSize - 1) / kWorkgroupSize);
     VkBufferImageCopy copy{};
     copy.bufferOffset = (VkDeviceSize(region.origin.y) * size.x + region.origin.x) * 4;
     copy.bufferRowLength = size.x;

@@ -19,7 +19,7 @@
 #include "image/image.h"
 #include "view/scheduler.h"
 #include "vk/device.h"
-#include "vk/pipeline.h"
+#include "vk/compute_kernel.h"
 #include "vk/resources.h"
 
 namespace raylab {
@@ -31,10 +31,7 @@ struct DisplayImage {
 };
 
 struct Display {
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  DescriptorSet descriptors;  // the accumulation buffer and `texels`
+  ComputeKernel kernel;       // display.comp; its set binds the accumulation buffer and `texels`
   Buffer texels;              // one packed 8-bit texel per pixel of the full render size
   DisplayImage preview;
   DisplayImage refined;

@@ -1,0 +1,40 @@
+#include "vk/compute_kernel.h"
+
+#include <string>
+
+namespace raylab {
+
+ComputeKernel createComputeKernel(const Device& device, std::string_view kernelName,
+                                  std::span<const DescriptorBinding> bindings, std::uint32_t pushConstantBytes,
+                                  SpecializationConstants* constants) {
+  const std::string name(kernelName);
+  ComputeKernel kernel;
+  kernel.pushConstantBytes = pushConstantBytes;
+  kernel.setLayout = createDescriptorSetLayout(device, bindings, (name + " set layout").c_str());
+  kernel.pipelineLayout =
+      createPipelineLayout(device, kernel.setLayout, pushConstantBytes, (name + " pipeline layout").c_str());
+  kernel.pipeline = createComputePipeline(device, kernel.pipelineLayout, kernelName, constants);
+  kernel.descriptors = allocateDescriptorSet(device, kernel.setLayout, bindings, (name + " set").c_str());
+  return kernel;
+}
+
+void destroyComputeKernel(const Device& device, ComputeKernel& kernel) {
+  destroyDescriptorSet(device, kernel.descriptors);
+  if (kernel.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, kernel.pipeline, nullptr);
+  if (kernel.pipelineLayout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device.handle, kernel.pipelineLayout, nullptr);
+  if (kernel.setLayout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device.handle, kernel.setLayout, nullptr);
+  kernel = {};
+}
+
+void recordDispatch(VkCommandBuffer cmd, const ComputeKernel& kernel, const void* push, std::uint32_t groupsX,
+                    std::uint32_t groupsY) {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernel.pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernel.pipelineLayout, 0, 1, &kernel.descriptors.set,
+                          0, nullptr);
+  if (kernel.pushConstantBytes > 0) {
+    vkCmdPushConstants(cmd, kernel.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, kernel.pushConstantBytes, push);
+  }
+  vkCmdDispatch(cmd, groupsX, groupsY, 1);
+}
+
+}  // namespace raylab
