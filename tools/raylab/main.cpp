@@ -18,10 +18,10 @@ struct Command {
 
 constexpr Command kCommands[] = {
     {"render", raylab::runRender, "render a scene offscreen to OpenEXR and PNG"},
-    {"devices", raylab::runDevices, "list Vulkan devices and whether raylab can use them"},
-    {"bench", raylab::runBench, "benchmarks: kernel variants, ray throughput"},
     {"view", raylab::runView, "open an interactive window on a scene (X11; headless: xvfb-run -a)"},
     {"brdf", raylab::runBrdf, "the BRDF library outside the renderer (brdf eval)"},
+    {"bench", raylab::runBench, "benchmarks: kernel variants, ray throughput against Embree, the viewer"},
+    {"devices", raylab::runDevices, "list Vulkan devices and whether raylab can use them"},
 };
 
 void printUsage(std::FILE* stream) {
