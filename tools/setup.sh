@@ -85,12 +85,24 @@ install_packages() {
   mesa_ok || { say "mesa-vulkan-drivers is still older than $mesa_minimum"; exit 1; }
 }
 
+# The Python tools (plots, reports) live in .venv, from PyPI, pinned in tools/requirements.txt. Debian's own
+# python3 builds the venv so that the result does not depend on whichever python3 comes first in PATH.
+python_tools() {
+  local stamp=.venv/requirements.installed
+  if [[ -x .venv/bin/python && -f $stamp ]] && cmp -s tools/requirements.txt "$stamp"; then return; fi
+  say "installing the Python tools of tools/requirements.txt into .venv"
+  /usr/bin/python3 -m venv .venv
+  .venv/bin/pip install -q --disable-pip-version-check -r tools/requirements.txt
+  cp tools/requirements.txt "$stamp"
+}
+
 build() {
   if [[ ! -f build/release/build.ninja ]]; then cmake --preset release >/dev/null; fi
   cmake --build --preset release
 }
 
 install_packages
+python_tools
 build
 case "$mode" in
   render)
