@@ -46,7 +46,8 @@ std::string describe(const KernelFeatures& features) {
     if (features.features & named.bit) list += (list.empty() ? "" : ", ") + std::string(named.name);
   }
   return "models: " + (models.empty() ? std::string("none") : models) +
-         "; features: " + (list.empty() ? std::string("none") : list);
+         "; features: " + (list.empty() ? std::string("none") : list) +
+         ((features.features & gpu::kFeatureGlass) && features.schlickFresnel ? "; glass Fresnel: Schlick" : "");
 }
 
 }  // namespace raylab

@@ -11,6 +11,7 @@ namespace raylab {
 struct KernelFeatures {
   std::uint32_t models = 0;    // bit (1 << gpu::kModel...) per model compiled in
   std::uint32_t features = 0;  // gpu::kFeature... bits
+  bool schlickFresnel = false; // glass uses Schlick's approximation instead of the exact Fresnel term
 
   bool operator==(const KernelFeatures&) const = default;
 };

@@ -28,6 +28,7 @@ void checkImageSize(std::uint32_t width, std::uint32_t height) {
 SpecializationConstants specializationFor(const KernelFeatures& kernel) {
   SpecializationConstants constants;
   constants.set(gpu::kSpecEnabledModels, kernel.models).set(gpu::kSpecFeatures, kernel.features);
+  constants.set(gpu::kSpecGlassFresnel, kernel.schlickFresnel ? gpu::kFresnelSchlick : gpu::kFresnelExact);
   return constants;
 }
 

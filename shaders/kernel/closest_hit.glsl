@@ -42,15 +42,18 @@ bool continuePath(inout Payload p, vec3 origin, vec3 direction, vec3 throughput)
   return true;
 }
 
-// Glass: delta L_i(w_r) + (1 - delta) [F L_i(w_r) + (1 - F) tint L_i(w_t)], both continuations kept.
+// Glass: delta L_i(w_r) + (1 - delta) [F L_i(w_r) + (1 - F) tint L_i(w_t)], both continuations kept. F is
+// the exact unpolarised Fresnel term, or Schlick's in the kernel variant that trades accuracy for speed.
 void glassHit(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
   const GlassEvent event = glassEvent(material.eta, wo, s.shadingNormal);
+  // The kernel variant picks the Fresnel term; the other one's arithmetic is dead code and compiles away.
+  const float fresnel = kGlassFresnel == kFresnelSchlick ? event.fresnelSchlick : event.fresnelExact;
   const float delta = material.delta;
   const bool entering = dot(wo, s.geometricNormal) > 0.0;
-  const vec3 weightReflect = p.throughput * (delta + (1.0 - delta) * event.fresnelExact);
+  const vec3 weightReflect = p.throughput * (delta + (1.0 - delta) * fresnel);
   // The tint colours light once, as it enters: a closed object then tints what is seen through it once.
   const vec3 weightRefract =
-      event.tir ? vec3(0.0) : p.throughput * (1.0 - delta) * (1.0 - event.fresnelExact) * (entering ? material.tint : vec3(1.0));
+      event.tir ? vec3(0.0) : p.throughput * (1.0 - delta) * (1.0 - fresnel) * (entering ? material.tint : vec3(1.0));
 
   // Each continuation leaves from the side of the geometric surface it travels into.
   const vec3 ngOutside = s.geometricNormal;

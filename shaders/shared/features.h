@@ -10,6 +10,7 @@ RL_NAMESPACE_BEGIN
 // Specialization constant ids.
 RL_CONST uint kSpecEnabledModels = 0;  // bit (1 << kModel...) per model compiled in
 RL_CONST uint kSpecFeatures = 1;       // kFeature... bits
+RL_CONST uint kSpecGlassFresnel = 2;   // kFresnel...: which Fresnel term glass uses
 
 // kSpecFeatures bits.
 RL_CONST uint kFeatureGlass = 1;             // glass materials: reflection and refraction
@@ -18,6 +19,10 @@ RL_CONST uint kFeaturePointLights = 4;
 RL_CONST uint kFeatureSpotLights = 8;
 RL_CONST uint kFeatureDirectionalLights = 16;
 RL_CONST uint kFeatureTextures = 32;         // base-colour textures
+
+// kSpecGlassFresnel values. Exact is the contract's; Schlick trades accuracy for speed (docs/performance.md).
+RL_CONST uint kFresnelExact = 0;
+RL_CONST uint kFresnelSchlick = 1;
 
 RL_CONST uint kAllModels = 0xFFFFFFFFu;
 RL_CONST uint kAllFeatures = 0xFFFFFFFFu;

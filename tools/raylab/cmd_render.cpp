@@ -32,6 +32,7 @@ struct RenderOptions {
   bool noAntialiasing = false;
   bool stats = false;
   bool allFeatures = false;
+  std::string fresnel = "exact";
   std::optional<std::uint32_t> device;
 };
 
@@ -69,15 +70,19 @@ int runRender(int argc, char** argv) {
   args.choice("--tonemap", &o.toneMap, {"clamp", "reinhard", "aces"}, "tone curve of the PNG (default clamp)");
   args.flag("--stats", &o.stats, "print which BRDF models and features the kernel was compiled with");
   args.flag("--all-features", &o.allFeatures, "compile every model and feature in, not only what the scene uses");
+  args.choice("--fresnel", &o.fresnel, {"exact", "schlick"},
+              "Fresnel term of glass: exact (default) or Schlick's approximation (faster, less accurate)");
   args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(argc, argv)) return kExitOk;
   o.settings.jitter = !o.noAntialiasing;
-  if (o.allFeatures) o.settings.kernel = allFeatures();
 
   if (!o.exrPath.empty()) requireExtension("--out", o.exrPath, ".exr");
   if (!o.pngPath.empty()) requireExtension("--png", o.pngPath, ".png");
 
   Scene scene = loadScene({o.scene, o.camera});
+  KernelFeatures kernel = o.allFeatures ? allFeatures() : featuresOf(scene);
+  kernel.schlickFresnel = o.fresnel == "schlick";
+  o.settings.kernel = kernel;
   if (o.exrPath.empty() && o.pngPath.empty()) {
     o.exrPath = "out/" + scene.name + ".exr";
     o.pngPath = "out/" + scene.name + ".png";
