@@ -1,4 +1,5 @@
-// `raylab brdf`: the BRDF library from the command line, one subcommand per job (eval; plot comes later).
+// `raylab brdf`: the BRDF library from the command line, one subcommand per job: eval (values of f and of
+// glass) and albedo (brdf_albedo.cpp), the data of tools/brdf_plot.py.
 #include <cstdio>
 #include <fstream>
 #include <optional>
@@ -8,6 +9,7 @@
 #include "brdf/brdf_cases.h"
 #include "brdf/cpu_evaluator.h"
 #include "brdf/device_evaluator.h"
+#include "brdf_commands.h"
 #include "commands.h"
 #include "gpu_session.h"
 #include "util/error.h"
@@ -80,6 +82,7 @@ struct Subcommand {
 
 constexpr Subcommand kSubcommands[] = {
     {"eval", runBrdfEval, "evaluate the BRDF library on the cases of a CSV file (gpu or cpu backend)"},
+    {"albedo", runBrdfAlbedo, "directional albedo of one material against the outgoing angle, as CSV"},
 };
 
 void printUsage(std::FILE* stream) {

@@ -1,0 +1,198 @@
+// `raylab brdf albedo`: the directional albedo a(wo) = integral of f(wi, wo) cos_i dwi of one material at a list
+// of angles, as CSV for plots (tools/brdf_plot.py). The cpu backend is the reference's adaptive cubature
+// (engine/reference/albedo.h); the gpu backend is a Monte Carlo estimate from the device's own sampler
+// (bsdfSample in brdf_sample.comp), an independent cross-check of the shaders' sampling and evaluation.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "args.h"
+#include "brdf/brdf_cases.h"
+#include "brdf/device_evaluator.h"
+#include "brdf_commands.h"
+#include "gpu_session.h"
+#include "reference/albedo.h"
+#include "util/error.h"
+#include "util/files.h"
+#include "util/timer.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+constexpr const char* kCommand = "raylab brdf albedo";
+
+struct AlbedoRow {
+  double thetaDeg = 0.0;
+  glm::dvec3 value{0.0};
+  double error = 0.0;          // cpu: the cubature's estimate; gpu: one standard error of the mean
+  long long evaluations = 0;   // cpu: calls of the model; gpu: samples drawn
+};
+
+// "0,10,45,89.9": angles in degrees from the normal, each in [0, 90).
+std::vector<double> parseAngles(const std::string& text) {
+  std::vector<double> angles;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::string entry = text.substr(start, end - start);
+    double angle = 0.0;
+    const auto [last, error] = std::from_chars(entry.data(), entry.data() + entry.size(), angle);
+    if (entry.empty() || error != std::errc() || last != entry.data() + entry.size() || !(angle >= 0.0 && angle < 90.0)) {
+      throw Error(std::string(kCommand) + ": --angles: expected angles in degrees in [0, 90) separated by commas, got '" +
+                      entry + "'",
+                  kExitUsage);
+    }
+    angles.push_back(angle);
+    start = end + 1;
+  }
+  return angles;
+}
+
+AlbedoRow albedoOnCpu(const reference::Material& material, double thetaDeg, double phiDeg, double tolerance) {
+  reference::AlbedoOptions options;
+  options.relTolerance = tolerance;
+  const reference::Albedo albedo =
+      reference::directionalAlbedo(material, reference::directionFromAngles(thetaDeg * kDegree, phiDeg * kDegree), options);
+  if (!albedo.converged) {
+    std::fprintf(stderr, "%s: warning: the cubature did not reach its tolerance at theta_o = %g (error estimate %.3g)\n",
+                 kCommand, thetaDeg, albedo.errorEstimate);
+  }
+  return {thetaDeg, albedo.value, albedo.errorEstimate, albedo.evaluations};
+}
+
+// Uniform floats in [0, 1) with 24 random bits, exactly representable in the float32 the device reads.
+std::vector<glm::vec3> uniforms(std::uint64_t seed, std::size_t count) {
+  std::mt19937_64 rng(seed);
+  const auto next = [&] { return static_cast<float>(rng() >> 40) * 0x1p-24f; };
+  std::vector<glm::vec3> u(count);
+  for (glm::vec3& v : u) v = glm::vec3(next(), next(), next());
+  return u;
+}
+
+// The mean of f cos_i / pdf over the device's samples; a failed sample (pdf 0) contributes 0, which keeps the
+// estimator unbiased because the mixture pdf covers every direction where f cos_i > 0.
+AlbedoRow albedoOnGpu(const Device& device, BrdfSampler& sampler, const gpu::MaterialRecord& material, double thetaDeg,
+                      double phiDeg, std::uint32_t samples, std::uint64_t seed) {
+  const glm::vec3 wo(reference::directionFromAngles(thetaDeg * kDegree, phiDeg * kDegree));
+  const std::vector<gpu::BrdfSampleValue> draws = drawBrdfSamples(device, sampler, material, wo, uniforms(seed, samples));
+  glm::dvec3 sum(0.0), sumSquares(0.0);
+  for (const gpu::BrdfSampleValue& draw : draws) {
+    if (!(draw.pdf > 0.0f)) continue;
+    const glm::dvec3 weight = glm::dvec3(draw.f) * (double(draw.wi.z) / double(draw.pdf));
+    sum += weight;
+    sumSquares += weight * weight;
+  }
+  const double n = double(samples);
+  const glm::dvec3 mean = sum / n;
+  const glm::dvec3 variance = glm::max(sumSquares / n - mean * mean, glm::dvec3(0.0)) * (n / std::max(n - 1.0, 1.0));
+  const double error = std::sqrt(std::max({variance.x, variance.y, variance.z}) / n);
+  return {thetaDeg, mean, error, static_cast<long long>(samples)};
+}
+
+std::string formatCsv(const std::string& model, const std::string& params, const std::string& backend, double phiDeg,
+                      const std::vector<AlbedoRow>& rows) {
+  std::ostringstream out;
+  out << "model,params,backend,theta_o,phi_o,albedo_r,albedo_g,albedo_b,error,evaluations\n";
+  char line[512];
+  for (const AlbedoRow& row : rows) {
+    std::snprintf(line, sizeof line, "%s,%s,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%lld\n", model.c_str(), params.c_str(),
+                  backend.c_str(), row.thetaDeg, phiDeg, row.value.x, row.value.y, row.value.z, row.error,
+                  row.evaluations);
+    out << line;
+  }
+  return out.str();
+}
+
+}  // namespace
+
+int runBrdfAlbedo(int argc, char** argv) {
+  std::string model;
+  std::string params;
+  std::string anglesText = "0,10,20,30,40,50,60,70,80,85,88,89,89.9";
+  float phiDeg = 0.0f;
+  std::string backend = "cpu";
+  std::uint32_t samples = 1u << 18;
+  std::uint32_t seed = 1;
+  float tolerance = 1e-6f;
+  std::string outPath;
+  std::optional<std::uint32_t> deviceIndex;
+  ArgParser args(kCommand, "--model MODEL [--params 'k=v;k=v'] [options]",
+                 "Prints the directional albedo a(wo), the integral of f(wi, wo) cos_i over the hemisphere of wi,\n"
+                 "of one material at the outgoing angles theta_o of --angles (azimuth --phi from the tangent), as\n"
+                 "CSV: model,params,backend,theta_o,phi_o,albedo_r,albedo_g,albedo_b,error,evaluations. The\n"
+                 "models are reciprocal, so a(wo) is also the fraction of light arriving from wo that is\n"
+                 "reflected. The cpu backend integrates the double-precision reference by adaptive cubature\n"
+                 "(error: its estimate, largest channel); the gpu backend averages f cos_i / pdf over samples of\n"
+                 "the device's bsdfSample (error: one standard error, largest channel). delta, the mirror weight\n"
+                 "of the integrator, is not part of f and does not change the albedo. Glass is a delta BSDF:\n"
+                 "its reflectance is F_exact of `raylab brdf eval`.");
+  args.option("--model", &model, "MODEL", "lambert, phong, blinnphong, cooktorrance, ward, ward_duer, ward_gmd, ashikhmin_shirley");
+  args.option("--params", &params, "'k=v;k=v'", "parameters as in `raylab brdf eval` (RGB as r/g/b); others take defaults");
+  args.option("--angles", &anglesText, "LIST", "theta_o in degrees, in [0, 90), comma-separated (default 0,10,...,80,85,88,89,89.9)");
+  args.option("--phi", &phiDeg, "azimuth of wo from the tangent, degrees", 0.0f, 360.0f);
+  args.choice("--backend", &backend, {"cpu", "gpu"}, "reference cubature (default) or device Monte Carlo");
+  args.option("--samples", &samples, "gpu backend: samples per angle", 1, 1u << 22);
+  args.option("--seed", &seed, "gpu backend: seed of the uniform numbers", 0, UINT32_MAX);
+  args.option("--tolerance", &tolerance, "cpu backend: relative tolerance of the cubature", 1e-12f, 1e-2f);
+  args.option("--out", &outPath, "FILE.csv", "write the CSV here instead of standard output");
+  args.option("--device", &deviceIndex, "gpu backend: Vulkan device index from `raylab devices` (default: best capable)");
+  if (!args.parse(argc, argv)) return kExitOk;
+  if (model.empty()) throw Error(std::string(kCommand) + ": --model is required (see `raylab brdf albedo --help`)", kExitUsage);
+
+  gpu::MaterialRecord record;
+  try {
+    record = parseMaterial(model, params, kCommand);
+  } catch (const Error& error) {
+    throw Error(error.what(), kExitUsage);
+  }
+  if (record.model == gpu::kModelGlass) {
+    throw Error(std::string(kCommand) + ": glass is a delta BSDF and has no albedo integral; its reflectance is F_exact "
+                                        "of `raylab brdf eval`",
+                kExitUsage);
+  }
+  const std::vector<double> angles = parseAngles(anglesText);
+
+  const Stopwatch clock;
+  std::vector<AlbedoRow> rows;
+  if (backend == "cpu") {
+    const reference::Material material = reference::fromRecord(record);
+    for (double theta : angles) rows.push_back(albedoOnCpu(material, theta, phiDeg, tolerance));
+  } else {
+    GpuSession session(deviceIndex, true);
+    BrdfSampler sampler = createBrdfSampler(session.device, samples);
+    try {
+      for (std::size_t i = 0; i < angles.size(); ++i) {
+        rows.push_back(albedoOnGpu(session.device, sampler, record, angles[i], phiDeg, samples, std::uint64_t(seed) * 1000 + i));
+      }
+    } catch (...) {
+      destroyBrdfSampler(session.device, sampler);
+      throw;
+    }
+    destroyBrdfSampler(session.device, sampler);
+  }
+
+  const std::string csv = formatCsv(model, params, backend, phiDeg, rows);
+  if (outPath.empty()) {
+    std::fputs(csv.c_str(), stdout);
+  } else {
+    createParentDirectories(outPath);
+    std::ofstream out(outPath, std::ios::binary);
+    out << csv;
+    out.close();
+    if (!out) throw Error(outPath + ": cannot write file");
+  }
+  std::fprintf(stderr, "%s: %s, %zu angles on the %s backend in %.2f s\n", kCommand, model.c_str(), angles.size(),
+               backend.c_str(), clock.seconds());
+  return kExitOk;
+}
+
+}  // namespace raylab
