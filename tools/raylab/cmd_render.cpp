@@ -2,8 +2,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "args.h"
 #include "commands.h"
@@ -13,6 +16,7 @@
 #include "scene/load_scene.h"
 #include "scene/gpu_scene.h"
 #include "util/error.h"
+#include "util/files.h"
 #include "util/progress.h"
 #include "util/timer.h"
 
@@ -27,6 +31,7 @@ struct RenderOptions {
   std::uint32_t spp = 16;
   std::string exrPath;
   std::string pngPath;
+  std::string reportPath;
   float exposure = 0.0f;
   std::string toneMap = "clamp";
   bool noAntialiasing = false;
@@ -40,6 +45,53 @@ ToneMap parseToneMap(const std::string& name) {
   if (name == "aces") return ToneMap::kAces;
   if (name == "reinhard") return ToneMap::kReinhard;
   return ToneMap::kClamp;
+}
+
+// The figures the command prints, for scripts (tools/speed_vs_error.py): seconds, counts and what was rendered.
+struct RenderReport {
+  double accelerationSeconds = 0.0;
+  double firstSampleSeconds = 0.0;  // kernel compilation included
+  double steadySeconds = 0.0;       // samples 2..spp
+  double perSampleSeconds = 0.0;
+  double raysPerSecond = 0.0;
+};
+
+void writeReport(const std::string& path, const RenderOptions& o, const Scene& scene, const GpuScene& gpuScene,
+                 const Device& device, const Renderer& renderer, const RenderReport& r) {
+  const nlohmann::ordered_json report = {
+      {"scene", scene.name},
+      {"scene_file", o.scene},
+      {"width", o.settings.width},
+      {"height", o.settings.height},
+      {"spp", o.spp},
+      {"seed", o.settings.seed},
+      {"max_depth", o.settings.maxDepth},
+      {"fresnel", o.fresnel},
+      {"all_features", o.allFeatures},
+      {"kernel", describe(renderer.kernel)},
+      {"device", device.report.name},
+      {"driver", device.report.driver},
+      {"triangles", gpuScene.triangleCount},
+      {"spheres", gpuScene.sphereCount},
+      {"lights", gpuScene.lightCount},
+      {"acceleration_build_s", r.accelerationSeconds},
+      {"first_sample_s", r.firstSampleSeconds},
+      {"steady_samples", o.spp - 1},
+      {"steady_s", r.steadySeconds},
+      {"per_sample_s", r.perSampleSeconds},
+      {"rays", {{"total", renderer.rays.total()},
+                {"primary", renderer.rays.primary},
+                {"shadow", renderer.rays.shadow},
+                {"secondary", renderer.rays.secondary}}},
+      {"rays_per_s", r.raysPerSecond},
+      {"exr", o.exrPath},
+      {"png", o.pngPath},
+  };
+  createParentDirectories(path);
+  std::ofstream out(path, std::ios::binary);
+  out << report.dump(2) << "\n";
+  out.close();
+  if (!out) throw Error(path + ": cannot write file");
 }
 
 void requireExtension(const std::string& option, const std::string& path, const std::string& extension) {
@@ -66,6 +118,8 @@ int runRender(int argc, char** argv) {
   args.flag("--no-aa", &o.noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
   args.option("--out", &o.exrPath, "FILE.exr", "write the linear image here (OpenEXR, float32 RGBA)");
   args.option("--png", &o.pngPath, "FILE.png", "write the tone-mapped image here (sRGB, 8-bit)");
+  args.option("--report", &o.reportPath, "FILE.json",
+              "also write the printed figures (times, rays, kernel, device) here as JSON, for scripts");
   args.option("--exposure", &o.exposure, "exposure of the PNG in stops", -20.0f, 20.0f);
   args.choice("--tonemap", &o.toneMap, {"clamp", "reinhard", "aces"}, "tone curve of the PNG (default clamp)");
   args.flag("--stats", &o.stats, "print which BRDF models and features the kernel was compiled with");
@@ -78,6 +132,7 @@ int runRender(int argc, char** argv) {
 
   if (!o.exrPath.empty()) requireExtension("--out", o.exrPath, ".exr");
   if (!o.pngPath.empty()) requireExtension("--png", o.pngPath, ".png");
+  if (!o.reportPath.empty()) requireExtension("--report", o.reportPath, ".json");
 
   Scene scene = loadScene({o.scene, o.camera});
   KernelFeatures kernel = o.allFeatures ? allFeatures() : featuresOf(scene);
@@ -138,6 +193,11 @@ int runRender(int argc, char** argv) {
                 formatCount(double(renderer.rays.secondary), "").c_str(), formatCount(raysPerSecond, "rays/s").c_str());
     if (!o.exrPath.empty()) std::printf("wrote %s\n", o.exrPath.c_str());
     if (!o.pngPath.empty()) std::printf("wrote %s\n", o.pngPath.c_str());
+    if (!o.reportPath.empty()) {
+      writeReport(o.reportPath, o, scene, gpuScene, gpu.device, renderer,
+                  {gpuScene.accelerationBuildSeconds, firstSampleSeconds, steadySeconds, perSample, raysPerSecond});
+      std::printf("wrote %s\n", o.reportPath.c_str());
+    }
   } catch (...) {
     destroyRenderer(gpu.device, renderer);
     destroyGpuScene(gpu.device, gpuScene);
