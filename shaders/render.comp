@@ -1,7 +1,7 @@
 #version 460
-// raygen of raylab's renderer: one invocation per pixel adds one sample to the pixel's running sum. Sub-pixel
-// jitter comes from the counter-based RNG and every dispatch adds exactly one sample, so the image depends
-// only on the scene, the parameters and the seed, not on how dispatches were batched.
+// raygen of raylab's renderer: one invocation per pixel adds `sampleCount` samples to the pixel's running sum.
+// Sub-pixel jitter comes from the counter-based RNG keyed by the sample index, and samples are summed in
+// order, so the image depends only on the scene, the parameters and the seed, not on how samples were batched.
 #extension GL_EXT_ray_query : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_GOOGLE_include_directive : require
@@ -57,46 +57,57 @@ void keepSplit(inout Payload p, inout Pending pending[kMaxPending], inout uint p
   }
 }
 
+// One sample of `pixel`: the radiance along its camera path, every glass branch included. Adds the rays it
+// traced to `rays` (primary, shadow, secondary).
+vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
+  Payload p;
+  p.rng = rngCreate(pixel, sampleIndex, params.seed);
+  const vec2 offset = (params.flags & kFrameJitter) != 0u ? rngNext2(p.rng) : vec2(0.5);
+  p.origin = params.cameraOrigin;
+  p.direction = primaryDirection(pixel, offset);
+  p.radiance = vec3(0.0);
+  p.throughput = vec3(1.0);
+  p.depth = 0u;
+  p.done = false;
+  p.split = false;
+  p.shadowRays = 0u;
+  Pending pending[kMaxPending];
+  uint pendingCount = 0u;
+  uint segments = 0u;
+
+  // closestHit bounds every path by maxDepth, and each split happens at a bounce: the loop ends.
+  while (true) {
+    Hit hit;
+    segments += 1u;
+    if (traceClosest(p.origin, p.direction, 0.0, kRayTMax, hit)) closestHit(hit, p);
+    else miss(p);
+    if (p.split) keepSplit(p, pending, pendingCount);
+    if (p.done) {
+      if (pendingCount == 0u) break;
+      pendingCount -= 1u;
+      p.origin = pending[pendingCount].origin;
+      p.direction = pending[pendingCount].direction;
+      p.throughput = pending[pendingCount].throughput;
+      p.depth = pending[pendingCount].depth;
+      p.done = false;
+    }
+  }
+  rays += uvec3(1u, p.shadowRays, segments - 1u);
+  return p.radiance;
+}
+
 void main() {
   const uvec2 pixel = params.tileOrigin + gl_GlobalInvocationID.xy;
   const bool inside = pixel.x < params.width && pixel.y < params.height;
-  uvec3 rays = uvec3(0u);  // primary, shadow, secondary
+  uvec3 rays = uvec3(0u);
 
   if (inside) {
-    Payload p;
-    p.rng = rngCreate(pixel, params.sampleIndex, params.seed);
-    const vec2 offset = (params.flags & kFrameJitter) != 0u ? rngNext2(p.rng) : vec2(0.5);
-    p.origin = params.cameraOrigin;
-    p.direction = primaryDirection(pixel, offset);
-    p.radiance = vec3(0.0);
-    p.throughput = vec3(1.0);
-    p.depth = 0u;
-    p.done = false;
-    p.split = false;
-    p.shadowRays = 0u;
-    Pending pending[kMaxPending];
-    uint pendingCount = 0u;
-    uint segments = 0u;
-
-    // closestHit bounds every path by maxDepth, and each split happens at a bounce: the loop ends.
-    while (true) {
-      Hit hit;
-      segments += 1u;
-      if (traceClosest(p.origin, p.direction, 0.0, kRayTMax, hit)) closestHit(hit, p);
-      else miss(p);
-      if (p.split) keepSplit(p, pending, pendingCount);
-      if (p.done) {
-        if (pendingCount == 0u) break;
-        pendingCount -= 1u;
-        p.origin = pending[pendingCount].origin;
-        p.direction = pending[pendingCount].direction;
-        p.throughput = pending[pendingCount].throughput;
-        p.depth = pending[pendingCount].depth;
-        p.done = false;
-      }
-    }
-    rays = uvec3(1u, p.shadowRays, segments - 1u);
-    accumulation[pixel.y * params.width + pixel.x] += vec4(p.radiance, 1.0);
+    // Samples are added one at a time, in order, exactly as separate dispatches would add them: the sum, and
+    // so the image, does not depend on how many samples a dispatch carries.
+    const uint index = pixel.y * params.width + pixel.x;
+    vec4 sum = accumulation[index];
+    for (uint i = 0u; i < params.sampleCount; ++i) sum += vec4(traceSample(pixel, params.sampleIndex + i, rays), 1.0);
+    accumulation[index] = sum;
   }
 
   // One atomic per subgroup rather than per invocation.

@@ -148,12 +148,20 @@ std::uint64_t maxRaysPerSample(const gpu::FrameParams& params) {
   return std::uint64_t(params.width) * params.height * perPath;
 }
 
+// Small images spread over too few workgroups to keep lavapipe's threads busy: a 64x64 image traced one
+// sample per dispatch costs 2.5x more per pixel than a 512x512 one. Several samples per dispatch up to about
+// this many pixel-samples restore the balance (the image is the same: samples are summed in order anyway).
+constexpr std::uint64_t kPixelSamplesPerDispatch = 1u << 19;
+
 void submitSamples(const Device& device, Renderer& renderer, std::uint32_t samples) {
   const glm::uvec2 size(renderer.params.width, renderer.params.height);
+  const std::uint64_t pixels = std::uint64_t(size.x) * size.y;
+  const auto perDispatch = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(kPixelSamplesPerDispatch / pixels, 1, samples));
   submitAndWait(device, [&](VkCommandBuffer cmd) {
     recordResetRayStats(cmd, renderer);
-    for (std::uint32_t i = 0; i < samples; ++i) {
-      recordSamplePass(cmd, renderer, renderer.samplesDone + i, glm::uvec2(0), size);
+    for (std::uint32_t done = 0; done < samples; done += perDispatch) {
+      recordSamplePass(cmd, renderer, renderer.samplesDone + done, glm::uvec2(0), size,
+                       std::min(perDispatch, samples - done));
     }
   });
   renderer.samplesDone += samples;
@@ -173,9 +181,10 @@ void renderSamples(const Device& device, Renderer& renderer, std::uint32_t sampl
 }
 
 void recordSamplePass(VkCommandBuffer cmd, const Renderer& renderer, std::uint32_t sampleIndex,
-                      glm::uvec2 tileOrigin, glm::uvec2 tileSize) {
+                      glm::uvec2 tileOrigin, glm::uvec2 tileSize, std::uint32_t sampleCount) {
   gpu::FrameParams params = renderer.params;
   params.sampleIndex = sampleIndex;
+  params.sampleCount = sampleCount;
   params.tileOrigin = tileOrigin;
   recordDispatch(cmd, renderer.compute, &params, (tileSize.x + kWorkgroupSize - 1) / kWorkgroupSize,
                  (tileSize.y + kWorkgroupSize - 1) / kWorkgroupSize);

@@ -19,15 +19,16 @@ struct FrameParams {
   vec3 cameraUp;
   uint seed;
   vec3 cameraForward;
-  uint sampleIndex;  // which sample of every pixel this dispatch adds; keys the RNG
+  uint sampleIndex;  // the first sample of every pixel this dispatch adds; keys the RNG
   vec3 background;   // radiance of rays that miss everything
   uint maxDepth;     // bounces after the primary hit
   uint lightCount;
   uint flags;
   float throughputCutoff;  // a path whose throughput drops below this stops
   uvec2 tileOrigin;  // first pixel of this dispatch; tiles are multiples of the 8x8 workgroup
+  uint sampleCount;  // samples sampleIndex, sampleIndex + 1, ... this dispatch adds to each pixel
 };
-RL_CHECK_SIZE(FrameParams, 100);
+RL_CHECK_SIZE(FrameParams, 104);
 
 struct RayStats {
   uint primaryRays;

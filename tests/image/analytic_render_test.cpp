@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "render/renderer.h"
+#include "scene/gpu_scene.h"
 #include "scene/default_scene.h"
 #include "scene/shapes.h"
 #include "support/analytic.h"
@@ -171,6 +172,24 @@ TEST_F(AnalyticRenderTest, SameSettingsGiveABitIdenticalImage) {
   settings.seed = 8;
   const Image other = renderImage(device(), scene, settings, 4);
   EXPECT_NE(std::memcmp(first.rgba.data(), other.rgba.data(), first.rgba.size() * sizeof(float)), 0);
+}
+
+TEST_F(AnalyticRenderTest, TheImageDoesNotDependOnHowSamplesAreBatched) {
+  // renderSamples(4) puts all four samples in one dispatch at this size; four calls of one sample each use
+  // four dispatches and four submissions. The viewer and `raylab render` batch differently: same image.
+  const Scene scene = makeDefaultScene();
+  RenderSettings settings;
+  settings.width = 40;
+  settings.height = 24;
+  const Image batched = renderImage(device(), scene, settings, 4);
+  GpuScene gpuScene = uploadScene(device(), scene);
+  Renderer renderer = createRenderer(device(), gpuScene, scene, settings);
+  for (int i = 0; i < 4; ++i) renderSamples(device(), renderer, 1);
+  const Image oneByOne = readImage(device(), renderer);
+  destroyRenderer(device(), renderer);
+  destroyGpuScene(device(), gpuScene);
+  ASSERT_EQ(batched.rgba.size(), oneByOne.rgba.size());
+  EXPECT_EQ(std::memcmp(batched.rgba.data(), oneByOne.rgba.data(), batched.rgba.size() * sizeof(float)), 0);
 }
 
 }  // namespace
