@@ -48,13 +48,13 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
                         const RenderSettings& settings);
 void destroyRenderer(const Device& device, Renderer& renderer);
 
-// Adds `samples` samples to every pixel, in one submission.
+// Adds `samples` samples to every pixel (in as few submissions as the 32-bit ray counters allow).
 void renderSamples(const Device& device, Renderer& renderer, std::uint32_t samples);
 
 // Records `sampleCount` samples (RNG sample indices sampleIndex, sampleIndex + 1, ...) of every pixel of the
-// tile [tileOrigin, tileOrigin + tileSize), followed by a barrier. tileOrigin and tileSize must be multiples of 8 (the workgroup), except
-// where the tile ends at the image edge, so that tiles never overlap. For callers that schedule their own
-// submissions (the viewer); renderSamples does it all for offscreen work.
+// tile [tileOrigin, tileOrigin + tileSize), followed by a barrier. tileOrigin and tileSize must be multiples
+// of 8 (the workgroup), except where the tile ends at the image edge, so that tiles never overlap. For callers
+// that schedule their own submissions (the viewer); renderSamples does it all for offscreen work.
 void recordSamplePass(VkCommandBuffer cmd, const Renderer& renderer, std::uint32_t sampleIndex,
                       glm::uvec2 tileOrigin, glm::uvec2 tileSize, std::uint32_t sampleCount = 1);
 // Ray counters: zero them at the start of a submission, add them to renderer.rays after it completed.
