@@ -1,0 +1,102 @@
+"""ctest python_tools_test: runs raylab's Python tools as a user would, in a tiny mode, and checks what they
+write. Standard library only, run by the system python3; the tools themselves run with .venv/bin/python.
+
+    python_tools_test.py RAYLAB SOURCE_DIR WORK_DIR
+"""
+import csv
+import math
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+SPEED_COLUMNS = ["scene", "variant", "spp", "time_s", "per_sample_s", "cpu_per_sample_s", "run_per_sample_s",
+                 "run_cpu_per_sample_s", "first_sample_s", "rmse", "relmse", "flip"]
+VARIANTS = {"baseline", "schlick", "depth2", "all_features"}
+
+
+class Failure(Exception):
+    pass
+
+
+def check(condition: bool, message: str) -> None:
+    if not condition:
+        raise Failure(message)
+
+
+def run(command: list) -> None:
+    start = time.monotonic()
+    printed = " ".join(str(part) for part in command)
+    result = subprocess.run([str(part) for part in command], capture_output=True, text=True)
+    print(f"$ {printed}\n{result.stdout}{result.stderr}({time.monotonic() - start:.1f} s)", flush=True)
+    check(result.returncode == 0, f"exit code {result.returncode}: {printed}")
+
+
+def check_png(path: Path, min_bytes: int) -> None:
+    check(path.is_file(), f"{path} was not written")
+    data = path.read_bytes()
+    check(data[:8] == b"\x89PNG\r\n\x1a\n", f"{path} is not a PNG file")
+    check(min_bytes <= len(data) <= 150 * 1024, f"{path}: {len(data)} bytes, expected {min_bytes} to 150 KB")
+
+
+def brdf_plot(python: Path, source: Path, raylab: Path, work: Path) -> None:
+    out = work / "phong.png"
+    run([python, source / "tools" / "brdf_plot.py", "--model", "phong", "--params", "rho_d=0;rho_s=1;s=50",
+         "--out", out, "--raylab", raylab, "--gpu-samples", "16384"])
+    check_png(out, 20 * 1024)
+
+
+def speed_vs_error(python: Path, source: Path, raylab: Path, work: Path) -> None:
+    out = work / "speed_vs_error"
+    run([python, source / "tools" / "speed_vs_error.py", "--quick", "--fresh-reference", "--raylab", raylab,
+         "--out", out])
+    table = out / "speed_vs_error.csv"
+    check(table.is_file(), f"{table} was not written")
+    with table.open(newline="") as file:
+        reader = csv.DictReader(file)
+        check(reader.fieldnames == SPEED_COLUMNS, f"{table}: columns {reader.fieldnames}, expected {SPEED_COLUMNS}")
+        rows = list(reader)
+    check({r["variant"] for r in rows} == VARIANTS, f"{table}: variants {sorted({r['variant'] for r in rows})}")
+    check(len(rows) == 2 * len(VARIANTS), f"{table}: {len(rows)} rows, expected two points per variant")
+    for row in rows:
+        for column in ["time_s", "per_sample_s", "cpu_per_sample_s", "first_sample_s", "rmse", "relmse", "flip"]:
+            value = float(row[column])
+            check(math.isfinite(value) and value > 0.0, f"{table}: {row['variant']} at {row['spp']} spp: "
+                                                        f"{column} = {row[column]}, expected finite and positive")
+        check(float(row["flip"]) < 1.0, f"{table}: FLIP {row['flip']} is not in (0, 1)")
+    for variant in VARIANTS:
+        points = sorted((r for r in rows if r["variant"] == variant), key=lambda r: int(r["spp"]))
+        check(float(points[0]["time_s"]) < float(points[1]["time_s"]), f"{variant}: time does not grow with spp")
+    baseline = sorted((r for r in rows if r["variant"] == "baseline"), key=lambda r: int(r["spp"]))
+    for metric in ["rmse", "relmse", "flip"]:
+        low, high = float(baseline[0][metric]), float(baseline[1][metric])
+        check(high < low, f"baseline {metric} does not fall with spp: {low} at {baseline[0]['spp']} spp, "
+                          f"{high} at {baseline[1]['spp']} spp")
+    # 1 -> 16 spp: an unbiased estimator's RMSE falls about 4x; allow the reference's own noise.
+    ratio = float(baseline[0]["rmse"]) / float(baseline[1]["rmse"])
+    check(2.5 < ratio < 6.0, f"baseline RMSE falls {ratio:.2f}x from 1 to 16 spp, expected about 4x")
+    check_png(out / "speed_vs_error_cornell_box.png", 10 * 1024)
+    check((out / "summary.md").is_file(), f"{out / 'summary.md'} was not written")
+
+
+def main() -> None:
+    raylab, source, work = (Path(arg).resolve() for arg in sys.argv[1:4])
+    python = source / ".venv" / "bin" / "python"
+    if not python.exists():
+        raise Failure(f"{python} is missing: run tools/setup.sh render (or test), which creates .venv with the "
+                      f"pinned Python tools of tools/requirements.txt")
+    check(raylab.is_file(), f"{raylab} is missing: build the raylab target")
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    brdf_plot(python, source, raylab, work)
+    speed_vs_error(python, source, raylab, work)
+    print("python_tools_test: passed")
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except Failure as failure:
+        print(f"python_tools_test: FAILED: {failure}")
+        sys.exit(1)

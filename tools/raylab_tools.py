@@ -1,0 +1,56 @@
+"""What raylab's Python tools (tools/*.py) share: where the repository and the raylab binary are, and running
+raylab with errors that say what to do.
+
+The tools run with the project's virtual environment, which `tools/setup.sh render` (or `test`) creates:
+    .venv/bin/python tools/brdf_plot.py --help
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+DEFAULT_RAYLAB = REPO / "build" / "release" / "raylab"
+
+
+class ToolError(Exception):
+    """A failure the user can act on; main() prints it and exits 1."""
+
+
+def venv_hint(missing: str) -> str:
+    return (f"the Python package '{missing}' is missing: run tools/setup.sh render (it installs the pinned "
+            f"tools/requirements.txt into .venv), then run this script with .venv/bin/python")
+
+
+def add_raylab_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--raylab", type=Path, default=DEFAULT_RAYLAB, metavar="PATH",
+                        help=f"the raylab executable (default: {DEFAULT_RAYLAB.relative_to(REPO)})")
+
+
+def check_raylab(path: Path) -> Path:
+    if not path.is_file() or not os.access(path, os.X_OK):
+        raise ToolError(f"no raylab executable at {path}: build it (cmake --preset release && cmake --build "
+                        f"--preset release, or tools/setup.sh render) or pass --raylab PATH")
+    return path.resolve()
+
+
+def run_raylab(raylab: Path, args: list[str], what: str) -> subprocess.CompletedProcess:
+    """Runs raylab; a non-zero exit raises ToolError with the command and raylab's own message."""
+    command = [str(raylab), *args]
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != 0:
+        message = (result.stderr.strip() or result.stdout.strip()).splitlines()[-5:]
+        raise ToolError(f"{what} failed (exit {result.returncode}): {' '.join(command)}\n  " + "\n  ".join(message))
+    return result
+
+
+def run_main(main) -> None:
+    """Calls main(), turning ToolError into a message and exit code 1."""
+    try:
+        main()
+    except ToolError as error:
+        print(f"{Path(sys.argv[0]).name}: error: {error}", file=sys.stderr)
+        sys.exit(1)
