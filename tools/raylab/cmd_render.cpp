@@ -52,6 +52,7 @@ struct RenderReport {
   double accelerationSeconds = 0.0;
   double firstSampleSeconds = 0.0;  // kernel compilation included
   double steadySeconds = 0.0;       // samples 2..spp
+  double steadyCpuSeconds = 0.0;    // the same samples in CPU time of the process (lavapipe's threads included)
   double perSampleSeconds = 0.0;
   double raysPerSecond = 0.0;
 };
@@ -79,6 +80,8 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
       {"steady_samples", o.spp - 1},
       {"steady_s", r.steadySeconds},
       {"per_sample_s", r.perSampleSeconds},
+      {"steady_cpu_s", r.steadyCpuSeconds},
+      {"cpu_per_sample_s", o.spp > 1 ? nlohmann::ordered_json(r.steadyCpuSeconds / (o.spp - 1)) : nullptr},
       {"rays", {{"total", renderer.rays.total()},
                 {"primary", renderer.rays.primary},
                 {"shadow", renderer.rays.shadow},
@@ -156,6 +159,7 @@ int runRender(int argc, char** argv) {
 
     // Later samples go in submissions of about a quarter second: progress stays live, overhead stays low.
     const Stopwatch steadyClock;
+    const CpuStopwatch steadyCpuClock;
     const RayCounts firstRays = renderer.rays;
     std::uint32_t batch = 1;
     while (renderer.samplesDone < o.spp) {
@@ -168,6 +172,7 @@ int runRender(int argc, char** argv) {
     }
     progress.finish();
     const double steadySeconds = steadyClock.seconds();
+    const double steadyCpuSeconds = steadyCpuClock.seconds();
 
     const Image image = readImage(gpu.device, renderer);
     if (!o.exrPath.empty()) writeExr(o.exrPath, image);
@@ -195,7 +200,8 @@ int runRender(int argc, char** argv) {
     if (!o.pngPath.empty()) std::printf("wrote %s\n", o.pngPath.c_str());
     if (!o.reportPath.empty()) {
       writeReport(o.reportPath, o, scene, gpuScene, gpu.device, renderer,
-                  {gpuScene.accelerationBuildSeconds, firstSampleSeconds, steadySeconds, perSample, raysPerSecond});
+                  {gpuScene.accelerationBuildSeconds, firstSampleSeconds, steadySeconds, steadyCpuSeconds, perSample,
+                   raysPerSecond});
       std::printf("wrote %s\n", o.reportPath.c_str());
     }
   } catch (...) {
