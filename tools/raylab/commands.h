@@ -9,5 +9,6 @@ int runDevices(int argc, char** argv);
 int runBench(int argc, char** argv);
 int runView(int argc, char** argv);
 int runBrdf(int argc, char** argv);
+int runSweep(int argc, char** argv);
 
 }  // namespace raylab

@@ -18,6 +18,7 @@ struct Command {
 
 constexpr Command kCommands[] = {
     {"render", raylab::runRender, "render a scene offscreen to OpenEXR and PNG"},
+    {"sweep", raylab::runSweep, "render a parameter sweep of one BRDF model into a labelled contact sheet"},
     {"view", raylab::runView, "open an interactive window on a scene (X11; headless: xvfb-run -a)"},
     {"brdf", raylab::runBrdf, "the BRDF library outside the renderer (brdf eval)"},
     {"bench", raylab::runBench, "benchmarks: kernel variants, ray throughput against Embree, the viewer"},
