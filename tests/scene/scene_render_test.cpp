@@ -1,6 +1,6 @@
 // Renders of the committed scenes and of real glTF files: no NaN or Inf pixel, something lit, and along
-// every sweep's row the brightness order that the scene's extras.sweep states (tools/scenes/make_scenes.py
-// explains each). With RAYLAB_TEST_IMAGES=DIR set, every render is also written to DIR as a PNG.
+// every sweep's row the trend of the statistic that the scene's extras.sweep states (tools/scenes/make_scenes.py
+// says why each holds). With RAYLAB_TEST_IMAGES=DIR set, every render is also written to DIR as a PNG.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,16 +20,19 @@ namespace fs = std::filesystem;
 
 class SceneRenderTest : public GpuTest {};
 
-// The sweeps are measured at 16:9, the aspect their cameras frame; the window is the disc of a quarter of
-// each sphere's projected radius around its projected centre.
-constexpr std::uint32_t kSweepWidth = 320;
-constexpr std::uint32_t kSweepHeight = 180;
-constexpr std::uint32_t kSweepSpp = 8;
-constexpr float kWindowFraction = 0.25f;
-constexpr std::size_t kMinWindowPixels = 20;
-// Tolerances relative to the row's brightest window: a step may go the wrong way by this much (sampling
-// noise of the jittered pixels), and the row must change by at least kMinChange end to end.
+// The sweeps are measured on the row as the asset's camera frames it: one square cell of kSweepCell pixels
+// per sphere. The statistics (tools/scenes/make_scenes.py) are taken over each sphere's projected disc, less
+// its anti-aliased rim.
+constexpr std::uint32_t kSweepCell = 64;
+constexpr std::uint32_t kSweepSpp = 16;
+constexpr float kDiscFraction = 0.9f;
+constexpr std::size_t kMinDiscPixels = 500;
+// Tolerances relative to the row's largest statistic: a step may go the wrong way by this much (sampling
+// noise of the jittered pixels), and the row must change by at least kMinChange end to end. A highlight's
+// area is a whole number of pixels, and with the jitter's noise its rim pixels come and go: small
+// highlights may also step back by kAreaTolerancePixels.
 constexpr float kStepTolerance = 0.01f;
+constexpr float kAreaTolerancePixels = 2.0f;
 constexpr float kMinChange = 0.2f;
 
 Image render(const Device& device, const Scene& scene, std::uint32_t width, std::uint32_t height, std::uint32_t spp) {
@@ -87,14 +90,9 @@ TEST_F(SceneRenderTest, RealGltfFilesRenderFinite) {
   }
 }
 
-struct Window {
-  float mean = 0.0f;  // of (r + g + b) / 3
-  std::size_t pixels = 0;
-};
-
-// The mean radiance over the pixels whose centres lie within kWindowFraction of the sphere's projected
-// radius from its projected centre, projecting as applyCamera sets the kernel's camera up.
-Window measureWindow(const Image& image, const Scene& scene, const Sphere& sphere) {
+// The luminance-like (r + g + b) / 3 of the pixels whose centres lie within kDiscFraction of a sphere's
+// projected radius from its projected centre, projecting as applyCamera sets the kernel's camera up.
+std::vector<float> discPixels(const Image& image, const Scene& scene, const Sphere& sphere) {
   gpu::FrameParams params{};
   applyCamera(params, scene.camera, image.width, image.height);
   const glm::vec3 toCenter = sphere.center - params.cameraOrigin;
@@ -105,25 +103,37 @@ Window measureWindow(const Image& image, const Scene& scene, const Sphere& spher
   const float centerX = 0.5f * (ndcX + 1.0f) * float(image.width);
   const float centerY = 0.5f * (1.0f - ndcY) * float(image.height);
   const float radiusPixels = sphere.radius / (depth * glm::length(params.cameraUp)) * 0.5f * float(image.height);
-  const float windowRadius = kWindowFraction * radiusPixels;
+  const float discRadius = kDiscFraction * radiusPixels;
 
-  Window window;
-  double sum = 0.0;
+  std::vector<float> pixels;
   for (std::uint32_t y = 0; y < image.height; ++y) {
     for (std::uint32_t x = 0; x < image.width; ++x) {
       const float dx = float(x) + 0.5f - centerX;
       const float dy = float(y) + 0.5f - centerY;
-      if (dx * dx + dy * dy > windowRadius * windowRadius) continue;
+      if (dx * dx + dy * dy > discRadius * discRadius) continue;
       const glm::vec4 pixel = image.at(x, y);
-      sum += (pixel.r + pixel.g + pixel.b) / 3.0;
-      ++window.pixels;
+      pixels.push_back((pixel.r + pixel.g + pixel.b) / 3.0f);
     }
   }
-  window.mean = window.pixels > 0 ? float(sum / double(window.pixels)) : 0.0f;
-  return window;
+  return pixels;
 }
 
-TEST_F(SceneRenderTest, SweepsShowTheirBrightnessOrderAlongTheRow) {
+// The statistics extras.sweep may name (tools/scenes/make_scenes.py says what each measures).
+float sweepStatistic(const std::string& statistic, const std::vector<float>& disc) {
+  if (statistic == "mean") {
+    double sum = 0.0;
+    for (float value : disc) sum += value;
+    return float(sum / double(disc.size()));
+  }
+  if (statistic == "highlight_area") {
+    const float brightest = *std::max_element(disc.begin(), disc.end());
+    return float(std::count_if(disc.begin(), disc.end(), [&](float value) { return value > 0.5f * brightest; }));
+  }
+  ADD_FAILURE() << "unknown statistic '" << statistic << "' in extras.sweep";
+  return 0.0f;
+}
+
+TEST_F(SceneRenderTest, SweepsShowTheirStatedTrendAlongTheRow) {
   int sweeps = 0;
   for (const fs::path& file : assetFiles()) {
     std::ifstream in(file);
@@ -132,35 +142,44 @@ TEST_F(SceneRenderTest, SweepsShowTheirBrightnessOrderAlongTheRow) {
     if (!extras.contains("sweep")) continue;
     ++sweeps;
     const std::string name = file.stem().string();
-    const bool increasing = extras["sweep"]["brightness"] == "increasing";
-    SCOPED_TRACE(name + " (" + extras["sweep"]["brightness"].get<std::string>() + ": " +
-                 extras["sweep"]["why"].get<std::string>() + ")");
+    const nlohmann::json& sweep = extras["sweep"];
+    ASSERT_TRUE(sweep.contains("statistic") && sweep.contains("trend") && sweep.contains("why"))
+        << name << ": extras.sweep must state a statistic, its trend and why (tools/scenes/make_scenes.py)";
+    const std::string statistic = sweep["statistic"].get<std::string>();
+    const std::string trend = sweep["trend"].get<std::string>();
+    ASSERT_TRUE(trend == "increasing" || trend == "decreasing") << name << ": trend '" << trend << "'";
+    const bool increasing = trend == "increasing";
+    SCOPED_TRACE(name + " (" + statistic + " " + trend + ": " + sweep["why"].get<std::string>() + ")");
 
     Scene scene = loadQuietly(file);
     std::sort(scene.spheres.begin(), scene.spheres.end(),
               [](const Sphere& a, const Sphere& b) { return a.center.x < b.center.x; });
-    const Image image = render(device(), scene, kSweepWidth, kSweepHeight, kSweepSpp);
+    ASSERT_EQ(scene.spheres.size(), sweep["values"].size()) << "one sphere per value";
+    const auto cells = std::uint32_t(scene.spheres.size());
+    const Image image = render(device(), scene, cells * kSweepCell, kSweepCell, kSweepSpp);
     saveForInspection(image, name + "_sweep");
     expectSaneImage(image, name);
 
-    std::vector<float> means;
+    std::vector<float> values;
     std::string row;
     for (const Sphere& sphere : scene.spheres) {
-      const Window window = measureWindow(image, scene, sphere);
-      ASSERT_GE(window.pixels, kMinWindowPixels) << "the window is too small to measure";
-      means.push_back(window.mean);
+      const std::vector<float> disc = discPixels(image, scene, sphere);
+      ASSERT_GE(disc.size(), kMinDiscPixels) << "the sphere is too small to measure";
+      values.push_back(sweepStatistic(statistic, disc));
       char shown[32];
-      std::snprintf(shown, sizeof shown, " %.4g", window.mean);
+      std::snprintf(shown, sizeof shown, " %.4g", values.back());
       row += shown;
     }
-    const float brightest = *std::max_element(means.begin(), means.end());
-    ASSERT_GT(brightest, 0.0f) << "every window is black:" << row;
-    for (std::size_t i = 1; i < means.size(); ++i) {
-      const float step = increasing ? means[i] - means[i - 1] : means[i - 1] - means[i];
-      EXPECT_GE(step, -kStepTolerance * brightest) << "sphere " << i << " goes the wrong way; windows:" << row;
+    const float largest = *std::max_element(values.begin(), values.end());
+    ASSERT_GT(largest, 0.0f) << "the statistic is 0 for every sphere:" << row;
+    const float tolerance =
+        std::max(kStepTolerance * largest, statistic == "highlight_area" ? kAreaTolerancePixels : 0.0f);
+    for (std::size_t i = 1; i < values.size(); ++i) {
+      const float step = increasing ? values[i] - values[i - 1] : values[i - 1] - values[i];
+      EXPECT_GE(step, -tolerance) << "sphere " << i << " goes the wrong way; row:" << row;
     }
-    const float change = increasing ? means.back() - means.front() : means.front() - means.back();
-    EXPECT_GE(change, kMinChange * brightest) << "the row barely changes; windows:" << row;
+    const float change = increasing ? values.back() - values.front() : values.front() - values.back();
+    EXPECT_GE(change, kMinChange * largest) << "the row barely changes; row:" << row;
   }
   EXPECT_GE(sweeps, 10);
 }

@@ -2,25 +2,31 @@
 """Writes raylab's committed glTF scenes (assets/scenes/*.gltf): one parameter sweep per figure of the
 original slides, a showcase of every model, a Cornell-style box and the minimal example of docs/scenes.md.
 
-    python3 tools/scenes/make_scenes.py [OUTPUT_DIR]     (default: assets/scenes next to this repository)
+    python3 tools/scenes/make_scenes.py [OUTPUT_DIR] [--raylab BINARY]
+        OUTPUT_DIR  default: assets/scenes of this repository
+        BINARY      default: build/release/raylab (build it first: cmake --preset release && cmake --build ...)
+    python3 tools/scenes/make_scenes.py --gallery docs/images/gallery [--raylab BINARY]
+        renders the sweeps' contact sheets for docs/gallery.md instead (about two minutes on lavapipe)
 
 Python 3 standard library only; the output is deterministic, so regenerating an unchanged scene gives an
 identical file. The conventions (extras.raylab materials and spheres, lights in W/sr) are docs/scenes.md's.
 
-Sweeps: eight spheres in a row along +x, the swept parameter growing from left to right. A telephoto camera
-40 units away and lights about 60 units away make every sphere see nearly the same view and light
-directions, so that brightness differences along the row come from the parameter, not from the position.
-Each sweep's scene carries extras.sweep = {model, parameter, values, brightness, why}: `brightness` is what
-the mean radiance in a window around each sphere's projected centre does along the row, which
-tests/scene/scene_render_test.cpp checks.
+Sweeps: raylab lays them out (`raylab sweep --gltf`, the layout of its contact sheets, docs/gallery.md): eight
+spheres in a row along +x, the swept parameter growing from left to right, a telephoto camera and a distant
+light from the upper front left. Each sweep's scene carries extras.sweep: raylab's model, parameter, values and
+title, and from this script the command, and the statistic of each sphere's image that
+tests/scene/scene_render_test.cpp checks along the row, its trend and the physical reason.
 """
 
+import argparse
 import base64
 import json
 import math
 import os
 import struct
+import subprocess
 import sys
+import tempfile
 
 FLOAT = 5126
 UNSIGNED_SHORT = 5123
@@ -55,13 +61,6 @@ def normalize(a):
     return [x / length for x in a]
 
 
-def rotate_towards(direction, axis, degrees):
-    """`direction` rotated by `degrees` about the unit `axis` (Rodrigues)."""
-    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
-    k = normalize(axis)
-    return add(add(scale(direction, c), scale(cross(k, direction), s)), scale(k, dot(k, direction) * (1 - c)))
-
-
 def look_rotation(forward, up):
     """The unit quaternion [x, y, z, w] turning -Z to `forward` and +Y towards `up` (glTF camera and light
     nodes look down their -Z axis)."""
@@ -93,12 +92,6 @@ def normalize4(q):
 def rounded(values, digits=6):
     """Short, stable numbers in the JSON."""
     return [round(v, digits) + 0.0 for v in values]
-
-
-def sweep(first, last, count, log):
-    if log:
-        return [first * (last / first) ** (i / (count - 1)) for i in range(count)]
-    return [first + (last - first) * i / (count - 1) for i in range(count)]
 
 
 # ----------------------------------------------------------------------------------------------- the writer
@@ -292,160 +285,94 @@ def add_checker(gltf, name, x_range, z_range, height, tile, materials):
 
 # ----------------------------------------------------------------------------------------------- the sweeps
 
-ROW_COUNT = 8
-ROW_SPACING = 1.0
-ROW_RADIUS = 0.4
-ROW_TARGET = [0.0, ROW_RADIUS, 0.0]
-CAMERA_DISTANCE = 40.0
-CAMERA_ELEVATION = 6.0  # degrees
-CAMERA_YFOV = 7.0  # degrees: the row fills a 16:9 image
-LIGHT_DISTANCE = 60.0
-LIGHT_IRRADIANCE = 3.0  # W/m² at the row: white Lambert facing the light has radiance 0.95
+# The sweeps are laid out by raylab itself (engine/scene/sweep_scene.cpp, the layout of `raylab sweep`'s
+# contact sheets): this script runs `raylab sweep ... --gltf` and adds to the scene's extras.sweep the command
+# and what tests/scene/scene_render_test.cpp checks along the row: a statistic of each sphere's image and how
+# it must change from left to right, with the physical reason.
+#   mean            mean radiance over the sphere's projected disc (its anti-aliased rim left out)
+#   highlight_area  the number of the disc's pixels brighter than half the disc's brightest: the size of the
+#                   highlight at half its maximum
+
+SWEEPS = [
+    ("sweep_lambert_rho_d", ["--model", "lambert", "--param", "rho_d", "--from", "0", "--to", "1"],
+     "mean", "increasing", "the radiance rho_d/pi E cos is linear in rho_d"),
+    ("sweep_phong_rho_s", ["--model", "phong", "--param", "rho_s", "--from", "0", "--to", "1"],
+     "mean", "increasing", "the specular term is linear in rho_s and the diffuse term is fixed"),
+    ("sweep_phong_s", ["--model", "phong", "--param", "s", "--from", "1", "--to", "1000", "--log"],
+     "highlight_area", "decreasing",
+     "cos^s falls to half its peak within an angle that shrinks like 1/sqrt(s), so the highlight's area at half "
+     "maximum shrinks like 1/s, down to a pixel"),
+    ("sweep_blinnphong_s", ["--model", "blinnphong", "--param", "s", "--from", "1", "--to", "1000", "--log"],
+     "highlight_area", "decreasing",
+     "(N.H)^s falls to half its peak within an angle that shrinks like 1/sqrt(s), so the highlight's area at "
+     "half maximum shrinks like 1/s, down to a pixel"),
+    ("sweep_lambert_delta", ["--model", "lambert", "--param", "delta", "--from", "0", "--to", "1",
+                             "--set", "rho_d=0.8/0.45/0.2"],
+     "mean", "decreasing",
+     "L = (1 - delta) diffuse + delta reflected is linear in delta, and the mirror reflects the dark background in "
+     "its upper half and the checker floor in its lower half, darker on average than the lit orange body"),
+    ("sweep_cooktorrance_m", ["--model", "cooktorrance", "--param", "m", "--from", "0.01", "--to", "1", "--log"],
+     "highlight_area", "increasing",
+     "Beckmann's D falls to half its peak within a half-vector angle that grows with m, so the highlight widens "
+     "(until, dimmed by the 4% Fresnel reflectance of eta 1.5, it sinks under the diffuse body, whose own "
+     "half-maximum area is the largest)"),
+    ("sweep_cooktorrance_eta", ["--model", "cooktorrance", "--param", "eta", "--from", "1", "--to", "10"],
+     "mean", "increasing", "Schlick's F = F0 + (1 - F0)(1 - V.H)^5 grows with F0 = ((eta-1)/(eta+1))^2 at every angle"),
+    ("sweep_ward_alpha_y", ["--model", "ward", "--param", "alpha_y", "--from", "0.02", "--to", "0.5", "--log",
+                            "--set", "alpha_x=0.1"],
+     "highlight_area", "increasing",
+     "the lobe exp(-(tan^2 along t / alpha_x^2 + tan^2 along b / alpha_y^2)) is half its peak on an ellipse of "
+     "half-vector slopes whose area grows like alpha_x alpha_y"),
+    ("sweep_ashikhmin_shirley_nv", ["--model", "ashikhmin_shirley", "--param", "nv", "--from", "1", "--to",
+                                    "10000", "--log", "--set", "nu=100"],
+     "highlight_area", "decreasing",
+     "(N.H)^(nu cos^2 + nv sin^2) is half its peak on an ellipse of half-vector slopes whose area shrinks like "
+     "1/sqrt(nu nv)"),
+    ("sweep_glass_eta", ["--model", "glass", "--param", "eta", "--from", "1", "--to", "2.5"],
+     "mean", "decreasing",
+     "at eta 1 every pixel sees the lit checker wall straight through; a higher eta reflects more (Fresnel grows "
+     "with eta at every angle) and bends rays further, and both send more of each pixel's paths to the dark "
+     "background in front of the spheres. The line from the camera through each centre meets the wall at a tile "
+     "corner, so each lens shows as much of the light tiles as of the dark ones at any magnification"),
+]
 
 
-def view_direction():
-    """From the row towards the camera."""
-    e = math.radians(CAMERA_ELEVATION)
-    return [0.0, math.sin(e), math.cos(e)]
+def sweep_scene(raylab, name, arguments, statistic, trend, why):
+    """The scene `raylab sweep ARGUMENTS --gltf` writes, with the test's expectation in extras.sweep."""
+    with tempfile.TemporaryDirectory() as scratch:
+        path = os.path.join(scratch, name + ".gltf")
+        subprocess.run([raylab, "sweep"] + arguments + ["--gltf", path], check=True, stdout=subprocess.DEVNULL)
+        with open(path, encoding="utf-8") as file:
+            doc = json.load(file)
+    if doc["scenes"][0]["name"] != name:
+        sys.exit("make_scenes.py: %s: raylab named the scene %s" % (name, doc["scenes"][0]["name"]))
+    doc["asset"]["generator"] = "raylab sweep, through tools/scenes/make_scenes.py"
+    doc["scenes"][0]["extras"]["sweep"].update({
+        "command": "raylab sweep " + " ".join(arguments),
+        "statistic": statistic, "trend": trend, "why": why})
+    return Document(name, doc)
 
 
-def light_direction(away_degrees, towards):
-    """A direction `away_degrees` from the view direction, turned towards `towards` (e.g. up or right)."""
-    v = view_direction()
-    axis = cross(v, towards)
-    return normalize(rotate_towards(v, axis, away_degrees))
+def gallery_figure(raylab, name, arguments, directory):
+    """docs/gallery.md's contact sheet of a sweep (the PNG only: the page shows no EXR)."""
+    png = os.path.join(directory, name[len("sweep_"):] + ".png")
+    subprocess.run([raylab, "sweep"] + arguments + ["--out", png], check=True, stdout=subprocess.DEVNULL)
+    os.remove(png[:-len(".png")] + ".exr")
+    return png
 
 
-def sweep_scene(name, model, parameter, values, fixed, brightness, why, light_away, light_towards,
-                ground=(0.35, 0.35, 0.35), colour=(0.8, 0.8, 0.8)):
-    g = Gltf(name)
-    g.background((0.02, 0.022, 0.03))
-    g.doc["scenes"][0]["extras"]["sweep"] = {
-        "model": model, "parameter": parameter, "values": rounded(values, 5), "brightness": brightness, "why": why}
-    ground_material = g.material("ground", {"model": "lambert", "rho_d": list(ground)}, ground)
-    add_quad(g, "ground", [-60.0, 0.0, 60.0], [120.0, 0.0, 0.0], [0.0, 0.0, -120.0], ground_material)
-    for i, value in enumerate(values):
-        params = dict(fixed)
-        params["model"] = model
-        params[parameter] = [value] * 3 if parameter in ("rho_d", "rho_s", "Rd", "Rs") else value
-        label = "%s %s=%.4g" % (model, parameter, value)
-        material = g.material(label, params, colour)
-        x = (i - (len(values) - 1) / 2) * ROW_SPACING
-        g.sphere(label, [x, ROW_RADIUS, 0.0], ROW_RADIUS, material)
-    add_sweep_camera(g)
-    direction = light_direction(light_away, light_towards)
-    g.point_light("key", add(ROW_TARGET, scale(direction, LIGHT_DISTANCE)), LIGHT_IRRADIANCE * LIGHT_DISTANCE ** 2)
-    return g
+class Document:
+    """A finished glTF document, written like the others."""
 
+    def __init__(self, name, doc):
+        self.name = name
+        self.doc = doc
 
-def add_sweep_camera(g):
-    g.camera("camera", add(ROW_TARGET, scale(view_direction(), CAMERA_DISTANCE)), ROW_TARGET, CAMERA_YFOV)
-
-
-UP = [0.0, 1.0, 0.0]
-RIGHT = [1.0, 0.0, 0.0]
-
-
-def sweeps():
-    scenes = []
-    scenes.append(sweep_scene(
-        "sweep_lambert_rho_d", "lambert", "rho_d", sweep(0.0, 1.0, ROW_COUNT, False), {},
-        "increasing", "the diffuse term rho_d/pi grows linearly", 35, UP))
-    scenes.append(sweep_scene(
-        "sweep_phong_rho_s", "phong", "rho_s", sweep(0.0, 1.0, ROW_COUNT, False), {"rho_d": [0.1, 0.1, 0.1], "s": 30},
-        "increasing", "the highlight lies inside the window and grows linearly with rho_s", 16, UP,
-        colour=(0.3, 0.4, 0.8)))
-    # With the light 86 degrees from the view, the highlights sit near the spheres' upper right rim and the
-    # window around the centre sees only the lobes' tails, which narrower lobes make darker. Without a diffuse
-    # term (rho_d = 0) the tails are all the window sees, so position cannot disturb the order.
-    scenes.append(sweep_scene(
-        "sweep_phong_s", "phong", "s", sweep(1.0, 1000.0, ROW_COUNT, True), {"rho_d": [0.0] * 3, "rho_s": [1.0] * 3},
-        "decreasing", "the light is 86 degrees from the view: the window's mirror directions are at least 56 "
-                      "degrees from the camera, where (s+2) cos^s falls with s (the highlight near the rim "
-                      "shrinks)", 86,
-        normalize(add(UP, RIGHT)), colour=(0.9, 0.9, 0.9)))
-    scenes.append(sweep_scene(
-        "sweep_blinnphong_s", "blinnphong", "s", sweep(1.0, 1000.0, ROW_COUNT, True),
-        {"rho_d": [0.0] * 3, "rho_s": [1.0] * 3},
-        "decreasing", "the light is 86 degrees from the view: the window's normals are at least 28 degrees "
-                      "from the half vector, where (s+8) (N.H)^s falls with s (the highlight near the rim shrinks)", 86,
-        normalize(add(UP, RIGHT)), colour=(0.9, 0.9, 0.9)))
-    scenes.append(delta_sweep())
-    scenes.append(sweep_scene(
-        "sweep_cooktorrance_m", "cooktorrance", "m", sweep(0.01, 1.0, ROW_COUNT, True),
-        {"rho_d": [0.0] * 3, "rho_s": [1.0] * 3, "eta": 1.5},
-        "increasing", "the light is 86 degrees above the view: the window's normals are 28 to 58 degrees "
-                      "from the half vector, where the Beckmann D, averaged over the window, grows with m from 0.01 "
-                      "to 1 (the highlight near the rim widens)", 86, UP, colour=(0.9, 0.9, 0.9)))
-    scenes.append(sweep_scene(
-        "sweep_cooktorrance_eta", "cooktorrance", "eta", sweep(1.0, 10.0, ROW_COUNT, False),
-        {"rho_d": [0.1, 0.02, 0.02], "rho_s": [1.0] * 3, "m": 0.2},
-        "increasing", "Schlick's F0 = ((eta-1)/(eta+1))^2 grows with eta at every angle", 16, UP,
-        colour=(0.6, 0.1, 0.1)))
-    scenes.append(sweep_scene(
-        "sweep_ward_alpha_y", "ward", "alpha_y", sweep(0.02, 0.8, ROW_COUNT, True),
-        {"rho_d": [0.0] * 3, "rho_s": [1.0] * 3, "alpha_x": 0.1},
-        "increasing", "the light is 86 degrees above the view, so the half vector tilts along the bitangent "
-                      "(sphere latitude lines run along the tangent): a wider alpha_y lets more of the lobe reach "
-                      "the window", 86, UP, colour=(0.8, 0.7, 0.3)))
-    scenes.append(sweep_scene(
-        "sweep_ashikhmin_shirley_nv", "ashikhmin_shirley", "nv", sweep(1.0, 1000.0, ROW_COUNT, True),
-        {"Rd": [0.0] * 3, "Rs": [1.0] * 3, "nu": 10.0},
-        "decreasing", "the light is 86 degrees above the view, so the half vector tilts along the bitangent "
-                      "where nv is the exponent: a larger nv narrows the lobe there and the window darkens", 86, UP,
-        colour=(0.3, 0.7, 0.5)))
-    scenes.append(glass_sweep())
-    return scenes
-
-
-def delta_sweep():
-    """Mirror weight 0 to 1 over a checkerboard: the reflections show the board, and the window centre
-    reflects the dark sky behind the camera, so brightness falls as delta rises."""
-    g = Gltf("sweep_lambert_delta")
-    g.background((0.02, 0.022, 0.03))
-    values = sweep(0.0, 1.0, ROW_COUNT, False)
-    g.doc["scenes"][0]["extras"]["sweep"] = {
-        "model": "lambert", "parameter": "delta", "values": rounded(values, 5), "brightness": "decreasing",
-        "why": "L = (1 - delta) diffuse + delta reflected, and the window centre reflects the dark sky behind "
-               "the camera; the lower half of each sphere shows the checkerboard"}
-    light = g.material("checker light", {"model": "lambert", "rho_d": [0.8, 0.8, 0.8]}, (0.8, 0.8, 0.8))
-    dark = g.material("checker dark", {"model": "lambert", "rho_d": [0.05, 0.1, 0.3]}, (0.05, 0.1, 0.3))
-    add_checker(g, "checker", (-8.0, 8.0), (-8.0, 8.0), 0.0, 1.0, (light, dark))
-    for i, value in enumerate(values):
-        label = "lambert delta=%.4g" % value
-        material = g.material(label, {"model": "lambert", "rho_d": [0.8, 0.55, 0.3], "delta": value}, (0.8, 0.55, 0.3))
-        g.sphere(label, [(i - (len(values) - 1) / 2) * ROW_SPACING, ROW_RADIUS, 0.0], ROW_RADIUS, material)
-    add_sweep_camera(g)
-    direction = light_direction(35, normalize(add(UP, scale(RIGHT, -0.5))))
-    g.point_light("key", add(ROW_TARGET, scale(direction, LIGHT_DISTANCE)), LIGHT_IRRADIANCE * LIGHT_DISTANCE ** 2)
-    return g
-
-
-def glass_sweep():
-    """Glass eta 1 to 2.5 in front of a bright sky, standing at the back edge of a checkerboard floor, with a
-    black wall behind the camera: each sphere shows the floor refracted (upside down, in its upper part) and
-    the window centre sees the sky through the glass, dimmed by the Fresnel reflections that grow with eta."""
-    g = Gltf("sweep_glass_eta")
-    g.background((0.75, 0.8, 0.9))
-    values = sweep(1.0, 2.5, ROW_COUNT, False)
-    g.doc["scenes"][0]["extras"]["sweep"] = {
-        "model": "glass", "parameter": "eta", "values": rounded(values, 5), "brightness": "decreasing",
-        "why": "the window centre sees the bright sky through the sphere with weight (1 - F)^2, and its "
-               "reflection sees the black wall behind the camera; F grows with eta"}
-    light = g.material("checker light", {"model": "lambert", "rho_d": [0.8, 0.8, 0.8]}, (0.8, 0.8, 0.8))
-    dark = g.material("checker dark", {"model": "lambert", "rho_d": [0.6, 0.1, 0.05]}, (0.6, 0.1, 0.05))
-    add_checker(g, "checker", (-8.0, 8.0), (-0.5, 15.5), 0.0, 1.0, (light, dark))
-    black = g.material("black wall", {"model": "lambert", "rho_d": [0.0, 0.0, 0.0]}, (0.0, 0.0, 0.0))
-    # Facing the scene (-z), well behind the camera.
-    add_quad(g, "black wall", [100.0, -100.0, 60.0], [-200.0, 0.0, 0.0], [0.0, 200.0, 0.0], black)
-    for i, value in enumerate(values):
-        label = "glass eta=%.4g" % value
-        material = g.material(label, {"model": "glass", "eta": value}, (0.9, 0.95, 1.0))
-        g.sphere(label, [(i - (len(values) - 1) / 2) * ROW_SPACING, ROW_RADIUS, 0.0], ROW_RADIUS, material)
-    add_sweep_camera(g)
-    direction = light_direction(35, UP)
-    g.point_light("key", add(ROW_TARGET, scale(direction, LIGHT_DISTANCE)), LIGHT_IRRADIANCE * LIGHT_DISTANCE ** 2)
-    return g
+    def write(self, directory):
+        path = os.path.join(directory, self.name + ".gltf")
+        with open(path, "w", encoding="ascii") as out:
+            out.write(to_json(self.doc) + "\n")
+        return path
 
 
 # ------------------------------------------------------------------------------------- showcase and others
@@ -534,10 +461,28 @@ def minimal():
 
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
-    directory = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "..", "assets", "scenes")
-    os.makedirs(directory, exist_ok=True)
-    for scene in sweeps() + [showcase(), cornell_box(), minimal()]:
-        path = scene.write(directory)
+    root = os.path.normpath(os.path.join(here, "..", ".."))
+    parser = argparse.ArgumentParser(description="Writes raylab's committed glTF scenes, or the gallery's figures.")
+    parser.add_argument("directory", nargs="?", default=os.path.join(root, "assets", "scenes"),
+                        help="output directory of the scenes (default: assets/scenes)")
+    parser.add_argument("--raylab", default=os.path.join(root, "build", "release", "raylab"),
+                        help="the raylab binary that lays out the sweeps (default: build/release/raylab)")
+    parser.add_argument("--gallery", metavar="DIRECTORY",
+                        help="instead of the scenes, render each sweep's contact sheet into DIRECTORY "
+                             "(docs/images/gallery for docs/gallery.md)")
+    options = parser.parse_args()
+    if not os.access(options.raylab, os.X_OK):
+        sys.exit("make_scenes.py: %s is not an executable: build raylab first, or give --raylab" % options.raylab)
+    if options.gallery:
+        os.makedirs(options.gallery, exist_ok=True)
+        for name, arguments, *_ in SWEEPS:
+            path = gallery_figure(options.raylab, name, arguments, options.gallery)
+            print("wrote %s (%d bytes)" % (os.path.relpath(path), os.path.getsize(path)))
+        return
+    os.makedirs(options.directory, exist_ok=True)
+    sweeps = [sweep_scene(options.raylab, *sweep) for sweep in SWEEPS]
+    for scene in sweeps + [showcase(), cornell_box(), minimal()]:
+        path = scene.write(options.directory)
         print("wrote %s (%d bytes)" % (os.path.relpath(path), os.path.getsize(path)))
 
 
