@@ -164,8 +164,7 @@ gpu::MaterialRecord sweepBaseMaterial(std::uint32_t model) {
       record.rhoS = glm::vec3(0.9f);
       break;
     case gpu::kModelAshikhminShirley:
-      // Rs is the reflectance at normal incidence, which Schlick's Fresnel raises towards 1 at grazing: a small
-      // Rs shows the brightening of the rim that sets this model apart.
+      // The model scales its diffuse term by (1 - Rs): a dielectric's small Rs keeps the body in view.
       record.rhoD = glm::vec3(0.2f);
       record.rhoS = glm::vec3(0.1f);
       break;
