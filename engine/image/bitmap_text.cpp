@@ -48,8 +48,10 @@ void drawText(Rgb8Image& image, int x, int y, std::string_view text, int scale, 
     float corner0[2], corner2[2];
     std::copy_n(reinterpret_cast<const float*>(quads.data() + q * 64), 2, corner0);
     std::copy_n(reinterpret_cast<const float*>(quads.data() + q * 64 + 32), 2, corner2);
-    const int x0 = std::max(x + int(corner0[0]) * scale, left), x1 = std::min(x + int(corner2[0]) * scale, right);
-    const int y0 = std::max(y + int(corner0[1]) * scale, 0), y1 = std::min(y + int(corner2[1]) * scale, int(image.height));
+    const int x0 = std::max(x + int(corner0[0]) * scale, left);
+    const int x1 = std::min(x + int(corner2[0]) * scale, right);
+    const int y0 = std::max(y + int(corner0[1]) * scale, 0);
+    const int y1 = std::min(y + int(corner2[1]) * scale, int(image.height));
     for (int py = y0; py < y1; ++py) {
       for (int px = x0; px < x1; ++px) {
         std::copy(colour.begin(), colour.end(), &image.rgb[(std::size_t(py) * image.width + px) * 3]);

@@ -33,8 +33,8 @@ struct ContactSheetLayout {
   glm::uvec2 cellOrigin(std::uint32_t index) const;  // top-left pixel of cell `index`
 };
 
-// The labels' font scale is the largest (up to max(2, cellSize / 96)) at which every label fits its cell, the title's the largest
-// up to that at which it fits the sheet; text that does not fit even at scale 1 is clipped.
+// The labels' font scale is the largest, up to max(2, cellSize / 96), at which every label fits its cell; the
+// title's is the largest up to that at which it fits the sheet. Text too wide even at scale 1 is clipped.
 ContactSheetLayout layoutContactSheet(std::uint32_t count, std::uint32_t cellSize, const std::string& title,
                                       std::span<const std::string> labels);
 

@@ -167,7 +167,8 @@ TEST(SweepCliTest, UsageErrorsExitTwoAndNameTheOptionAndRange) {
     for (const std::string& arg : c.args) command += " " + arg;
     EXPECT_EQ(result.exitCode, 2) << command << "\n" << result.output;
     for (const std::string& text : c.mentions) {
-      EXPECT_NE(result.output.find(text), std::string::npos) << command << ": no '" << text << "' in\n" << result.output;
+      EXPECT_NE(result.output.find(text), std::string::npos)
+          << command << ": no '" << text << "' in\n" << result.output;
     }
   }
 }

@@ -1,6 +1,7 @@
 // Renders of the committed scenes and of real glTF files: no NaN or Inf pixel, something lit, and along
-// every sweep's row the trend of the statistic that the scene's extras.sweep states (tools/scenes/make_scenes.py
-// says why each holds). With RAYLAB_TEST_IMAGES=DIR set, every render is also written to DIR as a PNG.
+// every sweep's row the trend of the statistic that the scene's extras.sweep states
+// (tools/scenes/make_scenes.py says why each holds). With RAYLAB_TEST_IMAGES=DIR set, every render is also
+// written to DIR as a PNG.
 #include <gtest/gtest.h>
 
 #include <algorithm>

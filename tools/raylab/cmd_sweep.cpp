@@ -137,8 +137,7 @@ SweepSpec validatedSpec(const SweepOptions& o) {
     }
     if (spec.logScale && value <= 0.0f) {
       usage(std::string(option) + ": " + o.param + " = " + formatSweepValue(value) +
-            (o.log ? " cannot start or end a --log sweep (both bounds must be positive)"
-                   : " cannot bound a geometric sweep; give --linear or positive bounds"));
+            " cannot bound a geometric (--log) sweep: both bounds must be positive");
     }
   }
   if (spec.from == spec.to) usage("--from and --to are equal (" + formatSweepValue(spec.from) + ")");
@@ -192,7 +191,9 @@ std::vector<Image> renderCells(const SweepOptions& o, const SweepScene& sweep) {
     settings.maxDepth = o.maxDepth;
     renderer = createRenderer(gpu.device, gpuScene, scene, settings);
     const std::uint32_t count = std::uint32_t(sweep.values.size());
-    ProgressLine progress(kCommand, std::uint64_t(count) * o.spp);
+    // One line for the whole sheet: its samples count those of every cell.
+    ProgressLine progress(std::string(kCommand) + " (all " + std::to_string(count) + " cells)",
+                          std::uint64_t(count) * o.spp);
     const Stopwatch clock;
     for (std::uint32_t i = 0; i < count; ++i) {
       updateMaterials(gpu.device, gpuScene, cellMaterials(sweep, i));

@@ -6,7 +6,7 @@ original slides, a showcase of every model, a Cornell-style box and the minimal 
         OUTPUT_DIR  default: assets/scenes of this repository
         BINARY      default: build/release/raylab (build it first: cmake --preset release && cmake --build ...)
     python3 tools/scenes/make_scenes.py --gallery docs/images/gallery [--raylab BINARY]
-        renders the sweeps' contact sheets for docs/gallery.md instead (about two minutes on lavapipe)
+        renders the sweeps' contact sheets for docs/gallery.md instead (about 90 s on lavapipe, 2 cores)
 
 Python 3 standard library only; the output is deterministic, so regenerating an unchanged scene gives an
 identical file. The conventions (extras.raylab materials and spheres, lights in W/sr) are docs/scenes.md's.
