@@ -219,19 +219,22 @@ void writeSweepGltf(const SweepScene& sweep, const std::string& path) {
     root.nodes.push_back(b.node(std::move(node)));
   }
 
-  tinygltf::Camera camera;
-  camera.name = scene.camera.name;
-  camera.type = "perspective";
-  camera.perspective.yfov = tidy(scene.camera.yfov);
-  camera.perspective.znear = 0.05;
-  camera.perspective.zfar = 1000.0;
-  model.cameras.push_back(camera);
-  tinygltf::Node cameraNode;
-  cameraNode.name = scene.camera.name + " node";
-  cameraNode.camera = 0;
-  cameraNode.translation = doubles(scene.camera.position);
-  cameraNode.rotation = cameraRotation(scene.camera);
-  root.nodes.push_back(b.node(std::move(cameraNode)));
+  // The overview first: raylab renders a file's first camera unless --camera names another.
+  for (const Camera& source : {scene.camera, sweep.rowCamera}) {
+    tinygltf::Camera camera;
+    camera.name = source.name;
+    camera.type = "perspective";
+    camera.perspective.yfov = tidy(source.yfov);
+    camera.perspective.znear = 0.05;
+    camera.perspective.zfar = 1000.0;
+    model.cameras.push_back(camera);
+    tinygltf::Node node;
+    node.name = source.name + " node";
+    node.camera = int(model.cameras.size()) - 1;
+    node.translation = doubles(source.position);
+    node.rotation = cameraRotation(source);
+    root.nodes.push_back(b.node(std::move(node)));
+  }
 
   for (const Light& source : scene.lights) {
     if (source.record.type != gpu::kLightPoint) throw Error(path + ": sweeps are lit by point lights only");

@@ -9,6 +9,7 @@
 
 namespace raylab {
 
+// Two cameras: "camera", the whole row at 16:9, and "row", one cell tall (the row fills an N:1 image).
 // Materials go in extras.raylab (with a pbrMetallicRoughness preview), spheres as extras.raylab.sphere nodes
 // carrying a low-poly stand-in mesh for other viewers, the light as KHR_lights_punctual, buffers as data URIs
 // (docs/scenes.md). The scene's extras hold the background and `sweep`: the model, parameter, values, bounds

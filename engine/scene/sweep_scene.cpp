@@ -19,6 +19,9 @@ constexpr float kSpacing = 2.5f;
 // lit exactly alike).
 constexpr float kCameraDistance = 60.0f;
 constexpr float kCameraElevationDegrees = 12.0f;  // enough to see a floor behind the spheres
+// The overview camera frames the row, with a quarter of a cell to spare on each side, at this aspect (raylab
+// render's 640x360).
+constexpr float kOverviewAspect = 16.0f / 9.0f;
 constexpr float kLightDistance = 100.0f;
 // The key light: 40 degrees to the left of the camera and 40 degrees up, so the highlight sits on the upper
 // left of the body and the terminator is in view on the lower right. Irradiance at the spheres: a white
@@ -107,13 +110,14 @@ float rowHalfWidth(std::uint32_t count) { return 0.5f * float(count - 1) * kSpac
 void addStage(Scene& scene, SweepStage stage, std::uint32_t count) {
   const float half = rowHalfWidth(count);
   if (stage == SweepStage::kCheckerFloor) {
-    // Under the row and far enough behind it that mirrors show the floor up to near their horizon.
+    // Under the row, from 20 units in front of it (the overview camera's lowest ray meets the floor 17 units
+    // in front) to 20 behind, far enough that mirrors show the floor up to near their horizon.
     const int columns = 2 * static_cast<int>(std::ceil((half + 12.0f) / kFloorTile));
-    const int rows = static_cast<int>(std::ceil(30.0f / kFloorTile));
+    const int rows = static_cast<int>(std::ceil(40.0f / kFloorTile));
     // Corners at every multiple of the tile; a row of an even count has its spheres an odd number of tiles
     // from the middle, so its pattern is shifted by one tile to give them the colours the middle has.
     const float shift = count % 2 == 0 ? kFloorTile : 0.0f;
-    const glm::vec3 origin(-0.5f * float(columns) * kFloorTile + shift, -kRadius, 10.0f - float(rows) * kFloorTile);
+    const glm::vec3 origin(-0.5f * float(columns) * kFloorTile + shift, -kRadius, 20.0f - float(rows) * kFloorTile);
     // u = +z, v = +x: u x v = +y, the floor faces up.
     addChecker(scene, "floor", origin, {0.0f, 0.0f, kFloorTile}, {kFloorTile, 0.0f, 0.0f}, rows, columns);
   } else if (stage == SweepStage::kCheckerWall) {
@@ -206,17 +210,22 @@ SweepScene makeSweepScene(const SweepSpec& spec) {
                                               : SweepStage::kPlain;
   addStage(scene, sweep.stage, spec.steps);
 
+  sweep.rowCamera.name = "row";
+  sweep.rowCamera.target = glm::vec3(0.0f);
+  sweep.rowCamera.position = kCameraDistance * towardsCamera();
+  sweep.rowCamera.up = {0.0f, 1.0f, 0.0f};
+  sweep.rowCamera.yfov = 2.0f * std::atan(0.5f * kSpacing / kCameraDistance);
+  scene.camera = sweep.rowCamera;
   scene.camera.name = "camera";
-  scene.camera.target = glm::vec3(0.0f);
-  scene.camera.position = kCameraDistance * towardsCamera();
-  scene.camera.up = {0.0f, 1.0f, 0.0f};
-  scene.camera.yfov = 2.0f * std::atan(0.5f * kSpacing / kCameraDistance);
+  const float overviewWidth = (float(spec.steps) + 0.5f) * kSpacing;
+  scene.camera.yfov = 2.0f * std::atan(0.5f * overviewWidth / kOverviewAspect / kCameraDistance);
   scene.lights.push_back(keyLight(sweep.stage));
   return sweep;
 }
 
 Scene cellScene(const SweepScene& sweep) {
   Scene scene = sweep.scene;
+  scene.camera = sweep.rowCamera;
   scene.spheres = {{glm::vec3(0.0f), kRadius, sweep.scene.spheres.front().material}};
   return scene;
 }

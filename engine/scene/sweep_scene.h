@@ -40,9 +40,13 @@ struct SweepScene {
   std::vector<float> values;       // one per sphere, left to right
   gpu::MaterialRecord fixed{};     // the material before the swept parameter is set (the title's values)
   SweepStage stage = SweepStage::kPlain;
-  // The whole row: spheres along +x centred on the origin, the camera framing all of them ("camera"), and the
-  // light placed for the middle of the row. Spheres are sorted left to right: scene.spheres[i] has values[i].
+  // The whole row: spheres along +x centred on the origin, the light placed for the middle of the row, and
+  // a camera ("camera") that frames the whole row in a 16:9 image, raylab render's default shape. Spheres are
+  // sorted left to right: scene.spheres[i] has values[i].
   Scene scene;
+  // The same camera with the field of view of one cell ("row"): the row fills an N:1 image, one square cell
+  // per sphere, and a cell's camera is this one.
+  Camera rowCamera;
 };
 
 // The values of a sweep: linear or geometric from `from` to `to`, both included. `to` is exact.

@@ -117,6 +117,8 @@ TEST(SweepCliTest, GltfWritesTheRowAsALoadableScene) {
   EXPECT_FALSE(fs::exists(scratchDir() + "/phong_s.png")) << "--gltf alone must not render";
   const Scene scene = loadGltfFile(gltf, {});
   ASSERT_EQ(scene.spheres.size(), 3u);
+  EXPECT_EQ(scene.camera.name, "camera") << "the overview of the whole row comes first";
+  EXPECT_EQ(loadGltfFile(gltf, {"row"}).camera.name, "row");
   ASSERT_EQ(scene.lights.size(), 1u);
   const float expected[] = {1.0f, 10.0f, 100.0f};  // geometric, the default for an exponent
   for (std::size_t i = 0; i < 3; ++i) {

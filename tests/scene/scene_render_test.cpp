@@ -21,9 +21,10 @@ namespace fs = std::filesystem;
 
 class SceneRenderTest : public GpuTest {};
 
-// The sweeps are measured on the row as the asset's camera frames it: one square cell of kSweepCell pixels
-// per sphere. The statistics (tools/scenes/make_scenes.py) are taken over each sphere's projected disc, less
+// The sweeps are measured on the row as the asset's camera "row" frames it: one square cell of kSweepCell
+// pixels per sphere. The statistics (tools/scenes/make_scenes.py) are taken over each sphere's projected disc, less
 // its anti-aliased rim.
+constexpr const char* kSweepCamera = "row";
 constexpr std::uint32_t kSweepCell = 64;
 constexpr std::uint32_t kSweepSpp = 16;
 constexpr float kDiscFraction = 0.9f;
@@ -62,9 +63,9 @@ void expectSaneImage(const Image& image, const std::string& name) {
   EXPECT_GT(brightest, 0.0f) << name << ": the image is black";
 }
 
-Scene loadQuietly(const fs::path& path) {
+Scene loadQuietly(const fs::path& path, const std::string& camera = "") {
   WarningCapture warnings;  // the loader tests check the warnings; here they would only clutter the log
-  return loadGltfFile(path.string(), {});
+  return loadGltfFile(path.string(), {camera});
 }
 
 TEST_F(SceneRenderTest, EveryCommittedSceneRendersFinite) {
@@ -152,7 +153,7 @@ TEST_F(SceneRenderTest, SweepsShowTheirStatedTrendAlongTheRow) {
     const bool increasing = trend == "increasing";
     SCOPED_TRACE(name + " (" + statistic + " " + trend + ": " + sweep["why"].get<std::string>() + ")");
 
-    Scene scene = loadQuietly(file);
+    Scene scene = loadQuietly(file, kSweepCamera);
     std::sort(scene.spheres.begin(), scene.spheres.end(),
               [](const Sphere& a, const Sphere& b) { return a.center.x < b.center.x; });
     ASSERT_EQ(scene.spheres.size(), sweep["values"].size()) << "one sphere per value";
