@@ -240,15 +240,15 @@ int runSweep(int argc, char** argv) {
   args.option("--param", &o.param, "P", "the parameter to sweep (one of the model's, or delta)");
   args.option("--from", &o.from, "X", "first value (default: the parameter's minimum)");
   args.option("--to", &o.to, "X", "last value (default: the parameter's maximum)");
-  args.option("--steps", &o.steps, "number of spheres", 2, 64);
+  args.option("--steps", &o.steps, "number of spheres (default 8)", 2, 64);
   args.flag("--log", &o.log, "geometric steps (default for exponents and roughnesses)");
   args.flag("--linear", &o.linear, "linear steps (default for the others)");
   args.option("--set", &unusedSet, "K=V",
               "another parameter of the model, RGB as r/g/b (repeatable), e.g. --set rho_d=0.2/0.1/0.05");
   args.option("--out", &o.pngPath, "FILE.png", "the contact sheet (default out/sweep_<model>_<param>.png)");
   args.option("--gltf", &o.gltfPath, "FILE.gltf", "write the sweep's scene as glTF 2.0");
-  args.option("--cell", &o.cell, "cell size in pixels", 16, 2048);
-  args.option("--spp", &o.spp, "samples per pixel", 1, 1u << 16);
+  args.option("--cell", &o.cell, "cell size in pixels (default 192)", 16, 2048);
+  args.option("--spp", &o.spp, "samples per pixel (default 64)", 1, 1u << 16);
   args.option("--seed", &o.seed, "random seed of the sample pattern", 0, UINT32_MAX);
   args.option("--max-depth", &o.maxDepth, "bounces after the primary hit (mirror, glass)", 0, 64);
   args.option("--exposure", &o.exposure, "exposure of the PNG in stops", -20.0f, 20.0f);
