@@ -107,7 +107,7 @@ def lobe_angles(theta_i: float) -> np.ndarray:
     return angles[np.abs(angles) < 89.95]
 
 
-def evaluate(raylab: Path, rows: list[list[str]], workdir: Path) -> dict[str, list[str]]:
+def evaluate(raylab: Path, rows: list[list[str]], workdir: Path) -> dict[str, list[tuple[str, str]]]:
     """Runs `raylab brdf eval --backend gpu` on the rows; returns id -> [(quantity, value), ...]."""
     cases = workdir / "cases.csv"
     values = workdir / "values.csv"
@@ -276,7 +276,7 @@ def brdf_figure(raylab: Path, args: argparse.Namespace, workdir: Path):
     note = f"lobes: {symbol} in the plane of incidence, light from the arrow ({scale}, RGB mean)"
     if len(phis) > 1:
         note += f"; {ANISOTROPIC_NOTE}"
-    figure.text(0.01, 0.01, note, fontsize=7.5, color="0.3")
+    figure.text(0.01, -0.01, note, fontsize=7.5, color="0.3", va="top")
     return figure
 
 
@@ -291,7 +291,9 @@ def glass_figure(raylab: Path, args: argparse.Namespace, workdir: Path):
     for k, theta in enumerate(incident):
         rows.append([f"ray/{k}", "glass", args.params, vector(*in_plane(-theta, 0.0)), "", "0 0 1", ""])
     values = evaluate(raylab, rows, workdir)
-    quantity = lambda key, name: next(v for q, v in values[key] if q == name)  # noqa: E731
+
+    def quantity(key: str, name: str) -> str:
+        return next(value for q, value in values[key] if q == name)
 
     figure = plt.figure(figsize=(10.5, 4.6))
     grid = figure.add_gridspec(1, 2, width_ratios=[1.0, 1.3], wspace=0.12)
@@ -344,6 +346,9 @@ def main() -> None:
     raylab = check_raylab(args.raylab)
     if args.out.suffix != ".png":
         raise ToolError(f"--out: '{args.out}' must end in .png")
+    if "," in args.params:
+        raise ToolError(f"--params: '{args.params}' has a comma: separate parameters with ';' and RGB channels "
+                        f"with '/' (e.g. 'rho_d=0.5/0.2/0.1;s=50')")
     with tempfile.TemporaryDirectory(prefix="brdf_plot_") as temp:
         make = glass_figure if args.model == "glass" else brdf_figure
         figure = make(raylab, args, Path(temp))

@@ -42,8 +42,9 @@ def run_raylab(raylab: Path, args: list[str], what: str) -> subprocess.Completed
     command = [str(raylab), *args]
     result = subprocess.run(command, capture_output=True, text=True)
     if result.returncode != 0:
-        message = (result.stderr.strip() or result.stdout.strip()).splitlines()[-5:]
-        raise ToolError(f"{what} failed (exit {result.returncode}): {' '.join(command)}\n  " + "\n  ".join(message))
+        lines = (result.stderr.strip() or result.stdout.strip()).splitlines()
+        shown = lines if len(lines) <= 4 else [*lines[:3], f"... ({len(lines) - 4} more lines)", lines[-1]]
+        raise ToolError(f"{what} failed (exit {result.returncode}): {' '.join(command)}\n  " + "\n  ".join(shown))
     return result
 
 

@@ -14,9 +14,10 @@ Every variant is compared with the BASELINE's reference, so a variant that chang
 linear images (alpha ignored): RMSE = sqrt(mean((x - r)^2)); relMSE = mean((x - r)^2 / (r^2 + 0.01)), each
 channel divided by its own reference value; FLIP = the mean of HDR-FLIP (flip-evaluator) on the linear
 images. The time of a point is spp x the variant's steady time per sample from raylab's own report
-(`raylab render --report`), measured in the variant's highest-spp render: kernel compilation (the first
-sample) is excluded and reported separately. Test renders use seed 0 and the reference seed 1000, so their
-samples are independent.
+(`raylab render --report`), the best of its four highest-spp renders: by default in CPU seconds of the raylab
+process (lavapipe's worker threads included), which varies far less than wall-clock time on a shared machine;
+--clock wall uses wall-clock seconds. Kernel compilation (the first sample) is excluded and reported
+separately. Test renders use seed 0 and the reference seed 1000, so their samples are independent.
 
 Writes OUT/speed_vs_error.csv, OUT/summary.md (the table of docs/performance.md), OUT/run.json (machine and
 load) and one log-log plot per scene, OUT/speed_vs_error_<scene>.png, copied to docs/images/performance/.
@@ -28,6 +29,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import hashlib
 import json
 import math
 import os
@@ -58,7 +60,7 @@ REFERENCE_SEED = 1000
 class Scene:
     name: str
     file: str | None  # None: the built-in showcase
-    why: str
+    camera: str | None = None  # None: the scene's first camera
 
 
 @dataclass(frozen=True)
@@ -68,10 +70,13 @@ class Variant:
     style: str
 
 
+# The default scene (every BRDF model, one glass sphere, a mirror), a closed box with a mirror and a glass sphere,
+# and the glass sweep's close-up camera, where two glass spheres (eta 1.64 and 1.86) in front of a checkered wall
+# fill the frame: glass is where the variants differ.
 SCENES = [
-    Scene("showcase", None, "every BRDF model, a glass sphere and a mirror: the default scene"),
-    Scene("cornell_box", "assets/scenes/cornell_box.gltf", "a closed box with a mirror and a glass sphere"),
-    Scene("sweep_glass_eta", "assets/scenes/sweep_glass_eta.gltf", "eight glass spheres, eta 1 to 2.5"),
+    Scene("showcase", None),
+    Scene("cornell_box", "assets/scenes/cornell_box.gltf"),
+    Scene("sweep_glass_eta", "assets/scenes/sweep_glass_eta.gltf", camera="row"),
 ]
 BASELINE = ("--fresnel", "exact", "--max-depth", "8")
 VARIANTS = [
@@ -131,15 +136,15 @@ def parse_args() -> argparse.Namespace:
                         help="comma-separated subset of " + ", ".join(s.name for s in SCENES))
     parser.add_argument("--variants", default=None, metavar="LIST",
                         help="comma-separated subset of " + ", ".join(v.name for v in VARIANTS))
-    parser.add_argument("--width", type=int, default=320, help="image width (default 320)")
-    parser.add_argument("--height", type=int, default=180, help="image height (default 180)")
+    parser.add_argument("--width", type=int, default=256, help="image width (default 256)")
+    parser.add_argument("--height", type=int, default=144, help="image height (default 144)")
     parser.add_argument("--max-spp", type=int, default=128, help="highest spp of the test renders, a power of "
                         "two (default 128: 1, 2, 4, ..., 128)")
     parser.add_argument("--reference-spp", type=int, default=2048, help="spp of the references (default 2048)")
     parser.add_argument("--fresh-reference", action="store_true", help="render the references again")
-    parser.add_argument("--clock", choices=["wall", "cpu"], default="wall",
-                        help="time axis: wall-clock seconds (default) or CPU seconds of the raylab process, which "
-                        "vary less on a shared machine")
+    parser.add_argument("--clock", choices=["cpu", "wall"], default="cpu",
+                        help="time axis: CPU seconds of the raylab process (default; they vary far less on a "
+                        "shared machine) or wall-clock seconds")
     add_raylab_option(parser)
     return parser.parse_args()
 
@@ -179,6 +184,7 @@ def render(raylab: Path, scene: Scene, settings: Settings, options: tuple[str, .
     """One `raylab render`; returns its --report."""
     report = exr.with_suffix(".json")
     command = ["render"] + ([str(REPO / scene.file)] if scene.file else [])
+    command += ["--camera", scene.camera] if scene.camera else []
     command += ["--width", str(settings.width), "--height", str(settings.height), "--spp", str(spp),
                 "--seed", str(seed), *options, "--out", str(exr), "--report", str(report)]
     run_raylab(raylab, command, f"rendering {scene.name}")
@@ -202,10 +208,20 @@ def read_exr(path: Path) -> np.ndarray:
     return image
 
 
+def scene_digest(scene: Scene) -> str:
+    """A digest of the scene file (the built-in showcase is assets/scenes/showcase.gltf compiled in), so that a
+    cached reference of an edited scene is not reused."""
+    path = REPO / (scene.file or "assets/scenes/showcase.gltf")
+    return hashlib.sha256(path.read_bytes()).hexdigest()[:12]
+
+
 def reference(raylab: Path, scene: Scene, settings: Settings) -> np.ndarray:
     directory = settings.out / "reference"
     directory.mkdir(parents=True, exist_ok=True)
-    exr = directory / f"{scene.name}_{settings.width}x{settings.height}_{settings.reference_spp}spp.exr"
+    camera = f"_{scene.camera}" if scene.camera else ""
+    name = (f"{scene.name}{camera}_{scene_digest(scene)}_{settings.width}x{settings.height}_"
+            f"{settings.reference_spp}spp")
+    exr = directory / f"{name}.exr"
     if exr.exists() and exr.with_suffix(".json").exists() and not settings.fresh_reference:
         if raylab.stat().st_mtime > exr.stat().st_mtime:
             print(f"  note: {exr.name} is older than {raylab}; pass --fresh-reference if the renderer changed")
@@ -231,6 +247,7 @@ def errors(test: np.ndarray, ref: np.ndarray) -> tuple[float, float, float]:
 
 def measure_scene(raylab: Path, scene: Scene, settings: Settings) -> list[Point]:
     print(f"{scene.name}: {settings.width}x{settings.height}, spp {settings.spps}", flush=True)
+    digest = scene_digest(scene)
     ref = reference(raylab, scene, settings)
     renders = settings.out / "renders"
     renders.mkdir(parents=True, exist_ok=True)
@@ -252,6 +269,9 @@ def measure_scene(raylab: Path, scene: Scene, settings: Settings) -> list[Point]
         print(f"  {spp:5d} spp: " + ", ".join(f"{p.variant} {p.rmse:.4g}" for p in points[-len(settings.variants):])
               + " (RMSE)", flush=True)
     settings.timings[f"variants {scene.name}"] = time.monotonic() - start
+    if scene_digest(scene) != digest:
+        raise ToolError(f"{scene.file or 'assets/scenes/showcase.gltf'} changed during the run: its renders do not "
+                        f"match; run again")
     for variant in settings.variants:
         mine = [p for p in points if p.variant == variant.name]
         timed = [p for p in mine if p.spp > 1][-TIMED_RUNS:]
@@ -342,13 +362,15 @@ def plot_scene(points: list[Point], scene: Scene, settings: Settings, path: Path
         ax.set_xscale("log")
         ax.set_yscale("log")
         clock = "wall-clock" if settings.clock == "wall" else "CPU"
-        ax.set_xlabel(f"render time ({clock} s, kernel compilation excluded)", fontsize=9)
+        ax.set_xlabel(f"render time ({clock} seconds, kernel compilation excluded)", fontsize=9)
         ax.set_title(label, fontsize=10)
         ax.grid(alpha=0.3, which="both")
         ax.tick_params(labelsize=8)
     axes[0].legend(fontsize=7.5)
-    figure.suptitle(f"{scene.name}: {settings.width}x{settings.height}, {settings.spps[0]}–{settings.spps[-1]} spp; "
-                    f"reference: baseline at {settings.reference_spp} spp", fontsize=11)
+    camera = f" (camera {scene.camera})" if scene.camera else ""
+    spps = f"{settings.spps[0]}–{settings.spps[-1]} spp"
+    figure.suptitle(f"{scene.name}{camera}: {settings.width}x{settings.height}, {spps}; reference: baseline at "
+                    f"{settings.reference_spp} spp", fontsize=11)
     figure.tight_layout()
     figure.savefig(path, dpi=80)
     plt.close(figure)
@@ -379,7 +401,8 @@ def main() -> None:
     run = {"cores": os.cpu_count(), "load_average_before": load_before, "load_average_after": os.getloadavg(),
            "lp_num_threads": os.environ.get("LP_NUM_THREADS", ""), "seconds": settings.timings,
            "width": settings.width, "height": settings.height, "spps": settings.spps,
-           "reference_spp": settings.reference_spp}
+           "reference_spp": settings.reference_spp, "clock": settings.clock,
+           "scene_digests": {scene.name: scene_digest(scene) for scene in settings.scenes}}
     (settings.out / "run.json").write_text(json.dumps(run, indent=2) + "\n")
     print("\n" + table)
     print(f"wrote {settings.out / 'speed_vs_error.csv'}, summary.md, run.json and {len(plots)} plots"

@@ -46,9 +46,10 @@ std::vector<double> parseAngles(const std::string& text) {
     const std::string entry = text.substr(start, end - start);
     double angle = 0.0;
     const auto [last, error] = std::from_chars(entry.data(), entry.data() + entry.size(), angle);
-    if (entry.empty() || error != std::errc() || last != entry.data() + entry.size() || !(angle >= 0.0 && angle < 90.0)) {
-      throw Error(std::string(kCommand) + ": --angles: expected angles in degrees in [0, 90) separated by commas, got '" +
-                      entry + "'",
+    const bool parsed = !entry.empty() && error == std::errc() && last == entry.data() + entry.size();
+    if (!parsed || !(angle >= 0.0 && angle < 90.0)) {
+      throw Error(std::string(kCommand) + ": --angles: expected angles in degrees in [0, 90) separated by commas, " +
+                      "got '" + entry + "'",
                   kExitUsage);
     }
     angles.push_back(angle);
@@ -60,11 +61,11 @@ std::vector<double> parseAngles(const std::string& text) {
 AlbedoRow albedoOnCpu(const reference::Material& material, double thetaDeg, double phiDeg, double tolerance) {
   reference::AlbedoOptions options;
   options.relTolerance = tolerance;
-  const reference::Albedo albedo =
-      reference::directionalAlbedo(material, reference::directionFromAngles(thetaDeg * kDegree, phiDeg * kDegree), options);
+  const glm::dvec3 wo = reference::directionFromAngles(thetaDeg * kDegree, phiDeg * kDegree);
+  const reference::Albedo albedo = reference::directionalAlbedo(material, wo, options);
   if (!albedo.converged) {
-    std::fprintf(stderr, "%s: warning: the cubature did not reach its tolerance at theta_o = %g (error estimate %.3g)\n",
-                 kCommand, thetaDeg, albedo.errorEstimate);
+    std::fprintf(stderr, "%s: warning: the cubature did not reach its tolerance at theta_o = %g (error estimate "
+                 "%.3g)\n", kCommand, thetaDeg, albedo.errorEstimate);
   }
   return {thetaDeg, albedo.value, albedo.errorEstimate, albedo.evaluations};
 }
@@ -83,7 +84,8 @@ std::vector<glm::vec3> uniforms(std::uint64_t seed, std::size_t count) {
 AlbedoRow albedoOnGpu(const Device& device, BrdfSampler& sampler, const gpu::MaterialRecord& material, double thetaDeg,
                       double phiDeg, std::uint32_t samples, std::uint64_t seed) {
   const glm::vec3 wo(reference::directionFromAngles(thetaDeg * kDegree, phiDeg * kDegree));
-  const std::vector<gpu::BrdfSampleValue> draws = drawBrdfSamples(device, sampler, material, wo, uniforms(seed, samples));
+  const std::vector<gpu::BrdfSampleValue> draws =
+      drawBrdfSamples(device, sampler, material, wo, uniforms(seed, samples));
   glm::dvec3 sum(0.0), sumSquares(0.0);
   for (const gpu::BrdfSampleValue& draw : draws) {
     if (!(draw.pdf > 0.0f)) continue;
@@ -135,18 +137,24 @@ int runBrdfAlbedo(int argc, char** argv) {
                  "the device's bsdfSample (error: one standard error, largest channel). delta, the mirror weight\n"
                  "of the integrator, is not part of f and does not change the albedo. Glass is a delta BSDF:\n"
                  "its reflectance is F_exact of `raylab brdf eval`.");
-  args.option("--model", &model, "MODEL", "lambert, phong, blinnphong, cooktorrance, ward, ward_duer, ward_gmd, ashikhmin_shirley");
-  args.option("--params", &params, "'k=v;k=v'", "parameters as in `raylab brdf eval` (RGB as r/g/b); others take defaults");
-  args.option("--angles", &anglesText, "LIST", "theta_o in degrees, in [0, 90), comma-separated (default 0,10,...,80,85,88,89,89.9)");
+  args.option("--model", &model, "MODEL",
+              "lambert, phong, blinnphong, cooktorrance, ward, ward_duer, ward_gmd, ashikhmin_shirley");
+  args.option("--params", &params, "'k=v;k=v'",
+              "parameters as in `raylab brdf eval` (RGB as r/g/b); others take defaults");
+  args.option("--angles", &anglesText, "LIST",
+              "theta_o in degrees, in [0, 90), comma-separated (default 0,10,...,80,85,88,89,89.9)");
   args.option("--phi", &phiDeg, "azimuth of wo from the tangent, degrees", 0.0f, 360.0f);
   args.choice("--backend", &backend, {"cpu", "gpu"}, "reference cubature (default) or device Monte Carlo");
   args.option("--samples", &samples, "gpu backend: samples per angle", 1, 1u << 22);
   args.option("--seed", &seed, "gpu backend: seed of the uniform numbers", 0, UINT32_MAX);
   args.option("--tolerance", &tolerance, "cpu backend: relative tolerance of the cubature", 1e-12f, 1e-2f);
   args.option("--out", &outPath, "FILE.csv", "write the CSV here instead of standard output");
-  args.option("--device", &deviceIndex, "gpu backend: Vulkan device index from `raylab devices` (default: best capable)");
+  args.option("--device", &deviceIndex,
+              "gpu backend: Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(argc, argv)) return kExitOk;
-  if (model.empty()) throw Error(std::string(kCommand) + ": --model is required (see `raylab brdf albedo --help`)", kExitUsage);
+  if (model.empty()) {
+    throw Error(std::string(kCommand) + ": --model is required (see `raylab brdf albedo --help`)", kExitUsage);
+  }
 
   gpu::MaterialRecord record;
   try {
@@ -155,8 +163,8 @@ int runBrdfAlbedo(int argc, char** argv) {
     throw Error(error.what(), kExitUsage);
   }
   if (record.model == gpu::kModelGlass) {
-    throw Error(std::string(kCommand) + ": glass is a delta BSDF and has no albedo integral; its reflectance is F_exact "
-                                        "of `raylab brdf eval`",
+    throw Error(std::string(kCommand) + ": glass is a delta BSDF and has no albedo integral; its reflectance is " +
+                    "F_exact of `raylab brdf eval`",
                 kExitUsage);
   }
   const std::vector<double> angles = parseAngles(anglesText);
@@ -171,7 +179,8 @@ int runBrdfAlbedo(int argc, char** argv) {
     BrdfSampler sampler = createBrdfSampler(session.device, samples);
     try {
       for (std::size_t i = 0; i < angles.size(); ++i) {
-        rows.push_back(albedoOnGpu(session.device, sampler, record, angles[i], phiDeg, samples, std::uint64_t(seed) * 1000 + i));
+        const std::uint64_t angleSeed = std::uint64_t(seed) * 1000 + i;
+        rows.push_back(albedoOnGpu(session.device, sampler, record, angles[i], phiDeg, samples, angleSeed));
       }
     } catch (...) {
       destroyBrdfSampler(session.device, sampler);
