@@ -22,7 +22,7 @@ separately. Test renders use seed 0 and the reference seed 1000, so their sample
 Writes OUT/speed_vs_error.csv, OUT/summary.md (the table of docs/performance.md), OUT/run.json (machine and
 load) and one log-log plot per scene, OUT/speed_vs_error_<scene>.png, copied to docs/images/performance/.
 
-    .venv/bin/python tools/speed_vs_error.py              # about 10 minutes on 2 cores; 5 with cached references
+    .venv/bin/python tools/speed_vs_error.py              # about 7 minutes on 2 cores; 2.5 with cached references
     .venv/bin/python tools/speed_vs_error.py --quick      # smoke test: one scene, 64x36, two points
 """
 from __future__ import annotations
