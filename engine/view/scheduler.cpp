@@ -25,7 +25,7 @@ void restart(Scheduler& s, glm::uvec2 extent, bool preview, FramePlan& plan) {
   s.traceExtent = extent;
   s.preview = preview;
   // A preview pass is traced whole in one frame: one dispatch is cheaper than many.
-  s.tiles = preview ? std::vector<Tile>{{{0, 0}, extent}} : makeTiles(extent, s.settings.tileSize);
+  s.tiles = preview ? std::vector<Tile>{{{0, 0}, extent}} : makeTiles(extent, {extent.x, s.settings.bandRows});
   s.nextTile = 0;
   s.sampleIndex = 0;
   s.needsReset = false;
@@ -60,11 +60,11 @@ void addTiles(Scheduler& s, FramePlan& plan, double budget) {
 
 }  // namespace
 
-std::vector<Tile> makeTiles(glm::uvec2 extent, std::uint32_t tileSize) {
+std::vector<Tile> makeTiles(glm::uvec2 extent, glm::uvec2 tileSize) {
   std::vector<Tile> tiles;
-  for (std::uint32_t y = 0; y < extent.y; y += tileSize) {
-    for (std::uint32_t x = 0; x < extent.x; x += tileSize) {
-      tiles.push_back({{x, y}, {std::min(tileSize, extent.x - x), std::min(tileSize, extent.y - y)}});
+  for (std::uint32_t y = 0; y < extent.y; y += tileSize.y) {
+    for (std::uint32_t x = 0; x < extent.x; x += tileSize.x) {
+      tiles.push_back({{x, y}, {std::min(tileSize.x, extent.x - x), std::min(tileSize.y, extent.y - y)}});
     }
   }
   return tiles;

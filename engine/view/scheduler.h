@@ -18,9 +18,9 @@ struct Tile {
   glm::uvec2 size{0};
 };
 
-// Tiles of tileSize x tileSize (a multiple of the 8x8 workgroup) covering `extent` row by row; the last row and
-// column are cut at the image edge.
-std::vector<Tile> makeTiles(glm::uvec2 extent, std::uint32_t tileSize);
+// Tiles of tileSize (multiples of the 8x8 workgroup) covering `extent` row by row; the last row and column
+// are cut at the image edge.
+std::vector<Tile> makeTiles(glm::uvec2 extent, glm::uvec2 tileSize);
 
 // Running estimates from the device's timestamps.
 struct CostModel {
@@ -37,7 +37,10 @@ void addOverheadMeasurement(CostModel& cost, double seconds);
 struct SchedulerSettings {
   double targetFrameSeconds = 0.050;
   double settleSeconds = 0.25;      // unchanged this long: refine at full resolution
-  std::uint32_t tileSize = 64;      // multiple of 8
+  // Still frames refine in bands of the full width and this many rows (a multiple of 8). Lavapipe keeps its
+  // threads busy only with enough workgroups: a 640-pixel band of 32 rows traces a pixel-sample in about half
+  // the time a 64x64 tile does, and is still short enough to fit a 50 ms frame at 1280x720.
+  std::uint32_t bandRows = 32;
   std::uint32_t sppLimit = 0;       // full-resolution passes to stop at; 0: never stop
   float minPreviewScale = 1.0f / 16.0f;
   float firstPreviewScale = 0.25f;  // before anything was measured

@@ -50,7 +50,7 @@ Scheduler makeScheduler(glm::uvec2 full, double secondsPerPixelSample) {
 TEST(SchedulerTest, TilesCoverTheImageOnceOnWorkgroupBoundaries) {
   const glm::uvec2 extent(203, 77);
   std::vector<int> covered(std::size_t(extent.x) * extent.y, 0);
-  for (const Tile& tile : makeTiles(extent, 64)) {
+  for (const Tile& tile : makeTiles(extent, {64, 32})) {
     EXPECT_EQ(tile.origin.x % 8, 0u);
     EXPECT_EQ(tile.origin.y % 8, 0u);
     for (std::uint32_t y = tile.origin.y; y < tile.origin.y + tile.size.y; ++y) {
