@@ -82,10 +82,7 @@ int expectAnalyticSphere(const Image& image, const gpu::FrameParams& params, con
 TEST_F(AnalyticRenderTest, LambertSphereUnderPointLightMatchesClosedForm) {
   const SphereSetup setup{{0.0, 0.0, 0.0}, 1.0, {0.8, 0.5, 0.2}, {2.0, 3.0, 4.0}, {10.0, 20.0, 30.0}};
   const Scene scene = makeSphereScene(setup, {0.0f, 0.5f, 4.0f});
-  RenderSettings settings;
-  settings.width = 96;
-  settings.height = 72;
-  settings.jitter = false;
+  const RenderSettings settings = pixelCentres(96, 72);
   const Image image = renderImage(device(), scene, settings, 1);
   const gpu::FrameParams params = frameFor(scene, settings.width, settings.height);
   EXPECT_GT(expectAnalyticSphere(image, params, setup, 0.0), 1500);
@@ -98,10 +95,7 @@ TEST_F(AnalyticRenderTest, FarFromTheOriginTheRayOffsetStillAvoidsSelfShadowing)
   const SphereSetup setup{{1.0e4, -2.0e4, 5.0e3}, 2.0, {0.6, 0.6, 0.6}, {1.0e4 + 3.0, -2.0e4 + 6.0, 5.0e3 + 8.0},
                           {50.0, 50.0, 50.0}};
   const Scene scene = makeSphereScene(setup, glm::vec3(setup.center) + glm::vec3(1.0f, 2.0f, 9.0f));
-  RenderSettings settings;
-  settings.width = 64;
-  settings.height = 64;
-  settings.jitter = false;
+  const RenderSettings settings = pixelCentres(64, 64);
   const Image image = renderImage(device(), scene, settings, 1);
   const gpu::FrameParams params = frameFor(scene, settings.width, settings.height);
   EXPECT_GT(expectAnalyticSphere(image, params, setup, 2e-3), 800);
@@ -120,10 +114,7 @@ TEST_F(AnalyticRenderTest, ShadowedGroundIsExactlyZeroAndLitGroundMatchesClosedF
   scene.camera.target = {0.0f, 0.0f, 0.0f};
   scene.camera.yfov = glm::radians(40.0f);
 
-  RenderSettings settings;
-  settings.width = 80;
-  settings.height = 60;
-  settings.jitter = false;
+  const RenderSettings settings = pixelCentres(80, 60);
   const Image image = renderImage(device(), scene, settings, 1);
   const gpu::FrameParams params = frameFor(scene, settings.width, settings.height);
 

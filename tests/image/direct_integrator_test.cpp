@@ -18,14 +18,6 @@ namespace {
 
 class DirectIntegratorTest : public GpuTest {};
 
-RenderSettings pixelCentres(std::uint32_t width, std::uint32_t height) {
-  RenderSettings settings;
-  settings.width = width;
-  settings.height = height;
-  settings.jitter = false;
-  return settings;
-}
-
 gpu::MaterialRecord glassMaterial(float eta) {
   gpu::MaterialRecord record = defaultRecord(gpu::kModelGlass);
   record.eta = eta;

@@ -6,6 +6,14 @@
 
 namespace raylab::test {
 
+RenderSettings pixelCentres(std::uint32_t width, std::uint32_t height) {
+  RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.jitter = false;
+  return settings;
+}
+
 gpu::FrameParams frameFor(const Scene& scene, std::uint32_t width, std::uint32_t height) {
   gpu::FrameParams params{};
   params.width = width;

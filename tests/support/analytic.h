@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/renderer.h"
 #include "scene/scene.h"
 #include "shared/frame.h"
 
@@ -17,6 +18,9 @@ struct Ray {
   glm::dvec3 origin;
   glm::dvec3 direction;  // unit
 };
+
+// Render settings sampling pixel centres only (no jitter), so each pixel's ray is pixelCenterRay's.
+RenderSettings pixelCentres(std::uint32_t width, std::uint32_t height);
 
 // The camera of `scene` for a width x height image, exactly as the renderer sets it up.
 gpu::FrameParams frameFor(const Scene& scene, std::uint32_t width, std::uint32_t height);
