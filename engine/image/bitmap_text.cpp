@@ -5,12 +5,10 @@
 #pragma GCC diagnostic ignored "-Wunused-function"
 #include <stb_easy_font.h>
 #pragma GCC diagnostic pop
-#include <stb_image_write.h>
 
 #include <algorithm>
 
-#include "util/error.h"
-#include "util/files.h"
+#include "image/image.h"
 
 namespace raylab {
 
@@ -61,11 +59,7 @@ void drawText(Rgb8Image& image, int x, int y, std::string_view text, int scale, 
 }
 
 void writePng(const std::string& path, const Rgb8Image& image) {
-  createParentDirectories(path);
-  if (stbi_write_png(path.c_str(), int(image.width), int(image.height), 3, image.rgb.data(), int(image.width) * 3) ==
-      0) {
-    throw Error(path + ": cannot write PNG file");
-  }
+  writePngRgb8(path, image.width, image.height, image.rgb.data());
 }
 
 }  // namespace raylab

@@ -4,10 +4,13 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
+
+#include <sstream>
 
 #include "image/image.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
-#include "util/files.h"
 
 namespace raylab {
 
@@ -18,8 +21,10 @@ constexpr const char* kChannels[4] = {"R", "G", "B", "A"};
 }  // namespace
 
 void writeExr(const std::string& path, const Image& image) {
-  createParentDirectories(path);
+  // Encoded in memory, then written with every write checked: OpenEXR's file output finishes in a destructor
+  // that swallows errors, so a full disk could otherwise pass unnoticed.
   try {
+    Imf::StdOSStream stream;
     Imf::Header header(static_cast<int>(image.width), static_cast<int>(image.height));
     Imf::FrameBuffer frameBuffer;
     char* base = reinterpret_cast<char*>(const_cast<float*>(image.rgba.data()));
@@ -28,13 +33,19 @@ void writeExr(const std::string& path, const Image& image) {
       frameBuffer.insert(kChannels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), 4 * sizeof(float),
                                                   4 * sizeof(float) * image.width));
     }
-    Imf::OutputFile file(path.c_str(), header);
-    file.setFrameBuffer(frameBuffer);
-    file.writePixels(static_cast<int>(image.height));
+    {
+      Imf::OutputFile output(stream, header);
+      output.setFrameBuffer(frameBuffer);
+      output.writePixels(static_cast<int>(image.height));
+    }
+    writeFileAtomically(path, stream.str());
+  } catch (const Error&) {
+    throw;
   } catch (const std::exception& e) {
-    throw Error(path + ": cannot write OpenEXR file: " + e.what());
+    throw Error(path + ": cannot encode OpenEXR file: " + e.what());
   }
 }
+
 
 Image readExr(const std::string& path) {
   try {

@@ -33,11 +33,15 @@ enum class ToneMap {
   kAces,      // Narkowicz's fit of the ACES filmic curve
 };
 
-// Parent directories are created. Errors name the file.
+// Every writer writes atomically (util/atomic_file.h): a failure keeps the old file. Parent directories are
+// created. Errors name the file.
 void writeExr(const std::string& path, const Image& image);
 Image readExr(const std::string& path);
 // `exposure` in stops: values are scaled by 2^exposure before the tone curve and the sRGB transfer function.
 void writePng(const std::string& path, const Image& image, float exposure, ToneMap toneMap);
+
+// The one PNG encoder: 8-bit RGB rows, top first.
+void writePngRgb8(const std::string& path, std::uint32_t width, std::uint32_t height, const std::uint8_t* rgb);
 
 // The 8-bit sRGB value of a linear value after exposure and tone mapping.
 std::uint8_t toDisplay(float linear, float exposure, ToneMap toneMap);

@@ -7,7 +7,7 @@
 
 #include "image/image.h"
 #include "util/error.h"
-#include "util/files.h"
+#include "util/atomic_file.h"
 
 namespace raylab {
 
@@ -36,18 +36,25 @@ std::uint8_t toDisplay(float linear, float exposure, ToneMap toneMap) {
   return static_cast<std::uint8_t>(std::lround(linearToSrgb(mapped) * 255.0f));
 }
 
-void writePng(const std::string& path, const Image& image, float exposure, ToneMap toneMap) {
-  createParentDirectories(path);
+void writePngRgb8(const std::string& path, std::uint32_t width, std::uint32_t height, const std::uint8_t* rgb) {
+  std::string encoded;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+  };
+  // stb reports only that encoding failed (out of memory, or a size beyond its int arithmetic).
+  if (stbi_write_png_to_func(append, &encoded, static_cast<int>(width), static_cast<int>(height), 3, rgb,
+                             static_cast<int>(width) * 3) == 0) {
+    throw Error(path + ": cannot encode a " + std::to_string(width) + "x" + std::to_string(height) + " PNG");
+  }
+  writeFileAtomically(path, encoded);
+}
 
+void writePng(const std::string& path, const Image& image, float exposure, ToneMap toneMap) {
   std::vector<std::uint8_t> bytes(std::size_t(image.width) * image.height * 3);
   for (std::size_t i = 0; i < std::size_t(image.width) * image.height; ++i) {
     for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = toDisplay(image.rgba[i * 4 + c], exposure, toneMap);
   }
-  const int stride = static_cast<int>(image.width) * 3;
-  if (stbi_write_png(path.c_str(), static_cast<int>(image.width), static_cast<int>(image.height), 3, bytes.data(),
-                     stride) == 0) {
-    throw Error(path + ": cannot write PNG file");
-  }
+  writePngRgb8(path, image.width, image.height, bytes.data());
 }
 
 }  // namespace raylab

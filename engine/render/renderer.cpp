@@ -18,13 +18,6 @@ namespace {
 
 constexpr std::uint32_t kWorkgroupSize = 8;  // render.comp: local_size 8 x 8
 
-void checkImageSize(std::uint32_t width, std::uint32_t height) {
-  if (width == 0 || height == 0 || width > 16384 || height > 16384) {
-    throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1..16384",
-                kExitUsage);
-  }
-}
-
 SpecializationConstants specializationFor(const KernelFeatures& kernel) {
   SpecializationConstants constants;
   constants.set(gpu::kSpecEnabledModels, kernel.models).set(gpu::kSpecFeatures, kernel.features);
@@ -40,6 +33,30 @@ std::vector<DescriptorBinding> rendererBindings() {
 }
 
 }  // namespace
+
+std::uint64_t maxImagePixels(const Device& device) {
+  // Also below 2^27 pixels: lavapipe crashes inside the kernel above that whatever the buffer limit says.
+  return std::min<std::uint64_t>(device.properties.limits.maxStorageBufferRange / sizeof(glm::vec4),
+                                 (std::uint64_t(1) << 27) - 1);
+}
+
+void checkImageSize(const Device& device, std::uint32_t width, std::uint32_t height) {
+  if (width == 0 || height == 0 || width > kMaxImageSide || height > kMaxImageSide) {
+    throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1.." +
+                    std::to_string(kMaxImageSide),
+                kExitUsage);
+  }
+  const std::uint64_t pixels = std::uint64_t(width) * height;
+  const std::uint64_t limit = maxImagePixels(device);
+  if (pixels > limit) {
+    throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " (" + std::to_string(pixels) +
+                    " pixels) is over this device's limit of " + std::to_string(limit) +
+                    " pixels: the accumulation buffer (16 bytes a pixel) must fit maxStorageBufferRange (" +
+                    std::to_string(device.properties.limits.maxStorageBufferRange) +
+                    " bytes); lower --width/--height (3840x2160 fits on lavapipe)",
+                kExitUsage);
+  }
+}
 
 void applyCamera(gpu::FrameParams& params, const Camera& camera, std::uint32_t width, std::uint32_t height) {
   const glm::vec3 forward = camera.target - camera.position;
@@ -64,7 +81,7 @@ void applyCamera(gpu::FrameParams& params, const Camera& camera, std::uint32_t w
 
 Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Scene& scene,
                         const RenderSettings& settings) {
-  checkImageSize(settings.width, settings.height);
+  checkImageSize(device, settings.width, settings.height);
   Renderer renderer;
   gpu::FrameParams& params = renderer.params;
   params.width = settings.width;
@@ -109,7 +126,7 @@ void setCamera(Renderer& renderer, const Camera& camera) {
 }
 
 void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t width, std::uint32_t height) {
-  checkImageSize(width, height);
+  checkImageSize(device, width, height);
   destroyBuffer(device, renderer.accumulation);
   renderer.accumulation = createBuffer(device, VkDeviceSize(width) * height * sizeof(glm::vec4),
                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |

@@ -16,6 +16,9 @@
 
 namespace raylab {
 
+// The largest image side any command accepts; the pixel count is further bounded by maxImagePixels.
+inline constexpr std::uint32_t kMaxImageSide = 16384;
+
 struct RenderSettings {
   std::uint32_t width = 640;
   std::uint32_t height = 360;
@@ -43,6 +46,11 @@ struct Renderer {
   RayCounts rays;
 };
 
+// The most pixels an image may have on `device`: its accumulation buffer must fit one storage-buffer binding.
+std::uint64_t maxImagePixels(const Device& device);
+// Throws Error(kExitUsage) naming the size and the limit when `device` cannot render width x height.
+void checkImageSize(const Device& device, std::uint32_t width, std::uint32_t height);
+
 // Creates the pipeline (LLVM compiles it on lavapipe at the first dispatch, not here).
 Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Scene& scene,
                         const RenderSettings& settings);
@@ -66,7 +74,8 @@ void recordCopyRayStats(VkCommandBuffer cmd, const Renderer& renderer, VkBuffer 
 
 // Live changes (the viewer). Each leaves the accumulated samples stale: reset them afterwards.
 void setCamera(Renderer& renderer, const Camera& camera);
-// New image size: reallocates the accumulation buffer (and resets it).
+// New image size: reallocates the accumulation buffer (and resets it). Throws Error(kExitUsage) beyond
+// kMaxImageSide or maxImagePixels, leaving the renderer as it was.
 void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t width, std::uint32_t height);
 // A pipeline of the renderer's layout specialised for `kernel`; thread-safe, for building one in the
 // background. On lavapipe the driver compiles it at its first dispatch, not here.

@@ -3,7 +3,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
+#include "scene/gltf_files.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -139,18 +141,28 @@ std::string formatNumber(double value) {
 }
 
 Document parseDocument(const std::string& bytes, const std::string& baseDirectory, const std::string& label,
-                       bool mustBeBinary) {
+                       bool mustBeBinary, bool allowOutsideUris) {
   if (bytes.size() > kMaxFileBytes) throw Error(label + ": the file is larger than 2 GiB");
   const bool binary = isGlb(bytes);
   if (mustBeBinary && !binary) throw Error(label + ": a .glb file must start with the GLB magic 'glTF'");
 
   Document document;
   document.label = label;
-  document.json = parseJson(binary ? glbJson(bytes, label) : bytes, label);
+  const std::string jsonText = binary ? glbJson(bytes, label) : bytes;
+  checkJsonDepth(jsonText, label);
+  document.json = parseJson(jsonText, label);
   checkSchema(document.json, label);
   checkExtensions(document);
 
   tinygltf::TinyGLTF loader;
+  UriPolicy policy;
+  policy.allowOutside = allowOutsideUris;
+  if (!baseDirectory.empty() || allowOutsideUris) {
+    std::error_code error;
+    policy.root = std::filesystem::weakly_canonical(baseDirectory.empty() ? "." : baseDirectory, error);
+  }
+  loader.SetFsCallbacks(fsCallbacks(policy));
+  loader.SetImageLoader(&keepEncodedImage, nullptr);
   std::string errors;
   std::string warnings;
   const bool loaded =
@@ -161,6 +173,8 @@ Document parseDocument(const std::string& bytes, const std::string& baseDirector
                                           static_cast<unsigned int>(bytes.size()), baseDirectory);
   // tinygltf may report an error and still return true (a texture info without its index, for one).
   if (!loaded || !errors.empty()) {
+    // The policy's own message says why a file was refused; tinygltf's would only say it was not read.
+    if (!policy.error.empty()) throw Error(label + ": " + policy.error);
     throw Error(label + ": " + oneLine(errors.empty() ? "tinygltf could not load the file" : errors));
   }
   if (!warnings.empty()) warn(label + ": " + oneLine(warnings));

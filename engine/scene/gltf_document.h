@@ -30,10 +30,12 @@ struct Document {
 };
 
 // Reads a .glb or .gltf from memory: the GLB container, the JSON (with its line and column on a syntax
-// error), the schema check, the required extensions, then tinygltf (buffers, data URIs, image decoding).
-// Extensions in extensionsUsed that raylab does not read go to `ignored`. `label` starts messages.
+// error, and its nesting depth), the schema check, the required extensions, then tinygltf (buffers and data
+// URIs; images stay encoded until a material uses them, gltf_files.h). External files must lie inside
+// `baseDirectory` unless `allowOutsideUris`. Extensions in extensionsUsed that raylab does not read go to
+// `ignored`. `label` starts messages.
 Document parseDocument(const std::string& bytes, const std::string& baseDirectory, const std::string& label,
-                       bool mustBeBinary);
+                       bool mustBeBinary, bool allowOutsideUris);
 
 // Checks the JSON types of every property the loader reads, so that a string where a number belongs is an
 // error naming its JSON path instead of a silently defaulted value (tinygltf 2.7 ignores most wrong types).

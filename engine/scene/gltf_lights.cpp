@@ -1,5 +1,6 @@
 #include "scene/gltf_lights.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "util/error.h"
@@ -9,6 +10,9 @@ namespace raylab::gltf {
 namespace {
 
 constexpr double kHalfPi = 1.57079632679489661923;
+// Intensity (W/sr) or irradiance (W/m^2) per channel: far above any real light in scene units, far below
+// where float shading overflows (1/r^2 at r = 1e-5 still leaves a factor of 1e8 to FLT_MAX).
+constexpr float kMaxLightIntensity = 1e20f;
 
 }  // namespace
 
@@ -37,6 +41,13 @@ Light convertLight(const Document& document, int lightIndex, const glm::mat4& wo
   gpu::LightRecord& record = light.record;
   record.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
   record.intensity = color * float(gltfLight.intensity);
+  // Checked as the float the kernel uses, with headroom: shading multiplies the intensity by the BRDF and
+  // 1/r^2, and 1e39 (or 1e30 x 1e30) would reach the image as Inf.
+  const float brightest = std::max({record.intensity.r, record.intensity.g, record.intensity.b});
+  if (!(brightest <= kMaxLightIntensity) || !std::isfinite(float(gltfLight.intensity))) {
+    document.fail(where + ": color x intensity = " + formatNumber(double(gltfLight.intensity) * std::max({color.r, color.g, color.b})) +
+                  " is over raylab's limit of " + formatNumber(kMaxLightIntensity) + " (docs/scenes.md, Limits)");
+  }
   record.cosInner = -1.0f;
   record.cosOuter = -1.0f;
   const glm::vec3 minusZ = glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));

@@ -12,7 +12,9 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "scene/camera_pivot.h"
 #include "scene/gltf_document.h"
+#include "scene/gltf_files.h"
 #include "scene/gltf_geometry.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
@@ -35,6 +37,10 @@ constexpr float kFramingMargin = 1.05f;
 // The default light: irradiance at the scene's centre such that white Lambert facing it has radiance 0.8.
 constexpr float kDefaultLightRadiance = 0.8f;
 constexpr float kPi = 3.14159265358979323846f;
+// More instances than any device's TLAS comfortably holds (lavapipe: 2^24) and a bound on the memory a small
+// file can ask for (docs/scenes.md, Limits).
+constexpr std::size_t kMaxMeshInstances = std::size_t(1) << 20;
+constexpr float kMaxPreciseReach = 1e7f;
 
 bool isFinite(const glm::mat4& m) {
   for (int c = 0; c < 4; ++c) {
@@ -75,13 +81,12 @@ struct Bounds {
 class SceneBuilder {
  public:
   SceneBuilder(Document& document, const GltfOptions& options, Scene& scene)
-      : document_(document), model_(document.model), options_(options), scene_(scene),
-        onPath_(document.model.nodes.size(), false) {}
+      : document_(document), model_(document.model), options_(options), scene_(scene) {}
 
   void build() {
     gltf::convertMaterials(document_, scene_);
     const std::vector<int> roots = sceneRoots();
-    for (int root : roots) visit(root, glm::mat4(1.0f), "scene");
+    walk(roots);
     if (scene_.instances.empty() && scene_.spheres.empty()) {
       std::string skipped;
       for (const std::string& feature : document_.ignored) skipped += (skipped.empty() ? "" : "; ") + feature;
@@ -89,6 +94,7 @@ class SceneBuilder {
                      (skipped.empty() ? std::string() : "; ignored: " + skipped) + ")");
     }
     if (!model_.animations.empty()) document_.ignore("animations");
+    warnIfBeyondFloatPrecision();
     chooseCamera();
     if (scene_.lights.empty()) addDefaultLight();
     document_.reportIgnored();
@@ -161,17 +167,77 @@ class SceneBuilder {
     return local;
   }
 
-  void visit(int nodeIndex, const glm::mat4& parent, const std::string& parentWhere) {
+  // glTF 2.0 § 3.5.3: the node hierarchy is a set of disjoint trees. A node listed as a child twice (or by two
+  // parents) would make a tiny file expand exponentially, and a scene root with a parent would be drawn twice:
+  // both are refused before the walk.
+  void checkHierarchy(const std::vector<int>& roots) {
+    std::vector<int> parent(model_.nodes.size(), -1);
+    for (std::size_t i = 0; i < model_.nodes.size(); ++i) {
+      for (int child : model_.nodes[i].children) {
+        if (child < 0 || std::size_t(child) >= model_.nodes.size()) {
+          document_.fail(gltf::describe("node", int(i), model_.nodes[i].name) + ": node " + std::to_string(child) +
+                         " does not exist (the file has " + std::to_string(model_.nodes.size()) + ")");
+        }
+        if (parent[std::size_t(child)] >= 0) {
+          document_.fail(gltf::describe("node", child, model_.nodes[std::size_t(child)].name) +
+                         ": is a child of node " + std::to_string(parent[std::size_t(child)]) + " and again of node " +
+                         std::to_string(i) + "; glTF allows each node one parent");
+        }
+        parent[std::size_t(child)] = int(i);
+      }
+    }
+    for (int root : roots) {
+      if (root >= 0 && std::size_t(root) < parent.size() && parent[std::size_t(root)] >= 0) {
+        int ancestor = parent[std::size_t(root)];
+        for (std::size_t step = 0; ancestor >= 0 && ancestor != root && step < parent.size(); ++step) {
+          ancestor = parent[std::size_t(ancestor)];
+        }
+        if (ancestor == root) {
+          document_.fail(gltf::describe("node", root, model_.nodes[std::size_t(root)].name) +
+                         ": is its own ancestor (the node hierarchy has a cycle)");
+        }
+        document_.fail(gltf::describe("node", root, model_.nodes[std::size_t(root)].name) +
+                       ": is a scene root and a child of node " + std::to_string(parent[std::size_t(root)]) +
+                       "; glTF scene nodes must be roots");
+      }
+    }
+  }
+
+  // Depth first, in file order, without recursion: a 10,000-level chain must not overflow the stack.
+  void walk(const std::vector<int>& roots) {
+    checkHierarchy(roots);
+    struct Pending {
+      int node;
+      glm::mat4 parent;
+      std::string parentWhere;
+    };
+    std::vector<Pending> stack;
+    for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.push_back({*root, glm::mat4(1.0f), "scene"});
+    std::vector<bool> visited(model_.nodes.size(), false);
+    while (!stack.empty()) {
+      Pending next = std::move(stack.back());
+      stack.pop_back();
+      const glm::mat4 world = visit(next.node, next.parent, next.parentWhere, visited);
+      const tinygltf::Node& node = model_.nodes[std::size_t(next.node)];
+      const std::string where = gltf::describe("node", next.node, node.name);
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
+        stack.push_back({*child, world, where});
+      }
+    }
+  }
+
+  // One node: its transform, sphere or mesh instances, camera and light. Returns its world transform.
+  glm::mat4 visit(int nodeIndex, const glm::mat4& parent, const std::string& parentWhere, std::vector<bool>& visited) {
     if (nodeIndex < 0 || std::size_t(nodeIndex) >= model_.nodes.size()) {
       document_.fail(parentWhere + ": node " + std::to_string(nodeIndex) + " does not exist (the file has " +
                      std::to_string(model_.nodes.size()) + ")");
     }
     const tinygltf::Node& node = model_.nodes[std::size_t(nodeIndex)];
     const std::string where = gltf::describe("node", nodeIndex, node.name);
-    if (onPath_[std::size_t(nodeIndex)]) {
-      document_.fail(where + ": is its own ancestor (the node hierarchy has a cycle)");
+    if (visited[std::size_t(nodeIndex)]) {
+      document_.fail(where + ": is reached twice (listed twice in the scene, or the hierarchy has a cycle)");
     }
-    onPath_[std::size_t(nodeIndex)] = true;
+    visited[std::size_t(nodeIndex)] = true;
 
     const glm::mat4 world = parent * localTransform(node, where);
     if (!isFinite(world)) document_.fail(where + ": the world transform overflows");
@@ -198,8 +264,7 @@ class SceneBuilder {
     if (const json* light = findPath(nodeJson, {"extensions", "KHR_lights_punctual", "light"})) {
       scene_.lights.push_back(gltf::convertLight(document_, light->get<int>(), world, where));
     }
-    for (int child : node.children) visit(child, world, where);
-    onPath_[std::size_t(nodeIndex)] = false;
+    return world;
   }
 
   // The node's extras.raylab.sphere object, or null; extras.raylab may hold nothing else.
@@ -288,6 +353,10 @@ class SceneBuilder {
       document_.warnOnce("singular", where + ": has a zero scale; its mesh is not shown");
       return;
     }
+    if (scene_.instances.size() + cached->second.size() > kMaxMeshInstances) {
+      document_.fail(where + ": the scene has more than " + std::to_string(kMaxMeshInstances) +
+                     " mesh instances (raylab's limit, docs/scenes.md)");
+    }
     for (const auto& [mesh, material] : cached->second) scene_.instances.push_back({mesh, world, material});
   }
 
@@ -334,8 +403,9 @@ class SceneBuilder {
     const std::string where = gltf::describe("camera", chosen->camera, camera.name);
     if (camera.type != "perspective") document_.fail(where + ": type \"" + camera.type + "\" is not perspective");
     const double yfov = camera.perspective.yfov;
-    if (!(yfov > 0.0 && yfov < 3.1)) {
-      document_.fail(where + ": yfov " + std::to_string(yfov) + " rad is outside (0, 3.1)");
+    // Checked as the float the renderer keeps: below 1e-4 rad the pixel footprint underflows.
+    if (!(float(yfov) >= 1e-4f && float(yfov) < 3.1f)) {
+      document_.fail(where + ": yfov " + gltf::formatNumber(yfov) + " rad is outside [0.0001, 3.1)");
     }
     // The camera looks down its node's -Z with +Y up (glTF 2.0 § 3.10.1).
     const glm::mat4& world = chosen->world;
@@ -347,9 +417,23 @@ class SceneBuilder {
     }
     scene_.camera.name = cameraName(*chosen);
     scene_.camera.position = glm::vec3(world[3]);
-    scene_.camera.target = scene_.camera.position + glm::normalize(forward);
+    // The viewer orbits and zooms about the target: put it on the scene, where the view ray meets it.
+    scene_.camera.target = orbitPivot(scene_, scene_.camera.position, forward);
     scene_.camera.up = glm::normalize(up);
     scene_.camera.yfov = float(yfov);
+  }
+
+  // Traversal and intersection run in float32: 1e7 units from the origin one ulp is a whole unit, and a
+  // ground plane scaled to 1e8 vanishes or leaks without an error. Warn with the extent.
+  void warnIfBeyondFloatPrecision() {
+    const Bounds bounds = sceneBounds();
+    const float reach = std::max(glm::length(bounds.low), glm::length(bounds.high));
+    if (reach > kMaxPreciseReach) {
+      document_.warnOnce("float range", "geometry reaches " + gltf::formatNumber(reach) +
+                                            " units from the origin; float32 traversal resolves about " +
+                                            gltf::formatNumber(reach * 6e-8) +
+                                            " units there, so surfaces may vanish or leak (docs/scenes.md, Limits)");
+    }
   }
 
   Bounds sceneBounds() const {
@@ -403,7 +487,6 @@ class SceneBuilder {
   const tinygltf::Model& model_;
   const GltfOptions& options_;
   Scene& scene_;
-  std::vector<bool> onPath_;
   std::vector<CameraUse> cameras_;
   std::map<int, std::vector<std::pair<std::uint32_t, std::uint32_t>>> meshes_;
   gltf::DefaultMaterial defaultMaterial_;
@@ -427,14 +510,15 @@ Scene loadGltfFile(const std::string& path, const GltfOptions& options) {
   std::string extension = file.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  const std::string bytes = readTextFile(path);
-  Document document = gltf::parseDocument(bytes, file.parent_path().string(), path, extension == ".glb");
+  const std::string bytes = gltf::readSceneFile(path, gltf::kMaxSceneFileBytes);
+  const std::string directory = file.parent_path().empty() ? "." : file.parent_path().string();
+  Document document = gltf::parseDocument(bytes, directory, path, extension == ".glb", options.allowOutsideUris);
   return loadDocument(document, file.stem().string(), options);
 }
 
 Scene loadGltfText(const std::string& json, const std::string& baseDirectory, const std::string& sceneName,
                    const GltfOptions& options) {
-  Document document = gltf::parseDocument(json, baseDirectory, sceneName, false);
+  Document document = gltf::parseDocument(json, baseDirectory, sceneName, false, options.allowOutsideUris);
   return loadDocument(document, sceneName, options);
 }
 

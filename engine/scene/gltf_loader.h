@@ -12,6 +12,7 @@ namespace raylab {
 
 struct GltfOptions {
   std::string camera;  // --camera NAME: a camera's or its node's name; empty: the first perspective camera
+  bool allowOutsideUris = false;  // --allow-outside-uris: buffers and images may lie outside the file's folder
 };
 
 // Loads the default scene of a .gltf or .glb file (told apart by content). Scene.name is the file's stem.

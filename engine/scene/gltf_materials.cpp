@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <map>
 
+#include <stb_image.h>
+
+#include "scene/gltf_files.h"
 #include "scene/material_params.h"
 #include "util/error.h"
 
@@ -88,53 +92,53 @@ class TextureConverter {
   }
 
  private:
-  // tinygltf has decoded the image with stb (RGBA unless told otherwise); any channel count and 8 or 16 bits
-  // are accepted and stored as RGBA8 with the colour still sRGB-encoded.
+  // The image's bytes are still encoded (gltf_files.h, keepEncodedImage): its size is read from the header
+  // and checked against the limits before anything is decoded. stb converts any channel count and 8 or 16
+  // bits to RGBA8, with the colour still sRGB-encoded.
   Texture decode(const tinygltf::Image& image, int imageIndex) {
-    const std::string where = describe("image", imageIndex, image.name);
-    const int channels = image.component;
-    const int bytesPerChannel = image.bits / 8;
-    if (image.width <= 0 || image.height <= 0 || channels < 1 || channels > 4 ||
-        (image.bits != 8 && image.bits != 16)) {
-      document_.fail(where + ": decoded to " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                     " with " + std::to_string(channels) + " channels of " + std::to_string(image.bits) +
-                     " bits; expected 1 to 4 channels of 8 or 16 bits");
+    const std::string where = describe("image", imageIndex, image.name) +
+                              (!image.uri.empty() && !tinygltf::IsDataURI(image.uri) ? " ('" + image.uri + "')" : "");
+    const auto* bytes = image.image.data();
+    const int size = static_cast<int>(std::min<std::size_t>(image.image.size(), INT32_MAX));
+    int width = 0, height = 0, channels = 0;
+    if (image.image.empty()) {
+      // tinygltf only warns when an image's file cannot be read, and leaves it empty.
+      const bool external = !image.uri.empty() && !tinygltf::IsDataURI(image.uri);
+      document_.fail(where + (external ? ": its file is missing or unreadable (URIs resolve against the scene's folder)"
+                                       : ": has no image data"));
     }
-    const std::size_t texels = std::size_t(image.width) * std::size_t(image.height);
-    if (image.image.size() != texels * std::size_t(channels) * std::size_t(bytesPerChannel)) {
-      document_.fail(where + ": decoded pixel data has " + std::to_string(image.image.size()) + " bytes, not " +
-                     std::to_string(texels * std::size_t(channels * bytesPerChannel)));
+    if (!stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
+      document_.fail(where + ": is not a PNG or JPEG image raylab can read (" + std::string(stbi_failure_reason()) +
+                     ")");
     }
-    const auto channel = [&](std::size_t texel, int c) -> std::uint8_t {
-      const std::size_t offset = (texel * std::size_t(channels) + std::size_t(c)) * std::size_t(bytesPerChannel);
-      if (bytesPerChannel == 1) return image.image[offset];
-      std::uint16_t value;
-      std::memcpy(&value, image.image.data() + offset, sizeof value);
-      return static_cast<std::uint8_t>((std::uint32_t(value) * 255 + 32767) / 65535);
-    };
+    const std::uint64_t texels = std::uint64_t(width) * std::uint64_t(height);
+    if (texels > kMaxImageTexels || width > 16384 || height > 16384) {
+      document_.fail(where + ": is " + std::to_string(width) + "x" + std::to_string(height) +
+                     ", over raylab's limit of " + std::to_string(kMaxImageTexels) +
+                     " texels and 16384 a side (docs/scenes.md, Limits); scale it down");
+    }
+    decodedTexels_ += texels;
+    if (decodedTexels_ > kMaxSceneTexels) {
+      document_.fail(where + ": the scene's textures together exceed raylab's limit of " +
+                     std::to_string(kMaxSceneTexels) + " texels (docs/scenes.md, Limits)");
+    }
+    stbi_uc* pixels = stbi_load_from_memory(bytes, size, &width, &height, &channels, 4);
+    if (pixels == nullptr) document_.fail(where + ": cannot be decoded (" + std::string(stbi_failure_reason()) + ")");
     Texture texture;
     texture.name = !image.name.empty() ? image.name
                    : (!image.uri.empty() && !tinygltf::IsDataURI(image.uri)) ? image.uri
                                                                              : "image " + std::to_string(imageIndex);
-    texture.width = std::uint32_t(image.width);
-    texture.height = std::uint32_t(image.height);
-    texture.rgba.resize(texels * 4);
-    for (std::size_t t = 0; t < texels; ++t) {
-      std::uint8_t* out = &texture.rgba[4 * t];
-      if (channels <= 2) {  // grey, or grey and alpha
-        out[0] = out[1] = out[2] = channel(t, 0);
-        out[3] = channels == 2 ? channel(t, 1) : 255;
-      } else {
-        for (int c = 0; c < 3; ++c) out[c] = channel(t, c);
-        out[3] = channels == 4 ? channel(t, 3) : 255;
-      }
-    }
+    texture.width = std::uint32_t(width);
+    texture.height = std::uint32_t(height);
+    texture.rgba.assign(pixels, pixels + texels * 4);
+    stbi_image_free(pixels);
     return texture;
   }
 
   Document& document_;
   Scene& scene_;
   std::map<int, int> cache_;
+  std::uint64_t decodedTexels_ = 0;
 };
 
 bool hasRhoD(std::uint32_t model) {

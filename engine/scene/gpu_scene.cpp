@@ -1,5 +1,6 @@
 #include "scene/gpu_scene.h"
 
+#include <cstdio>
 #include <string>
 
 #include "shared/bindings.h"
@@ -95,9 +96,53 @@ std::vector<gpu::LightRecord> lightRecords(std::span<const Light> lights) {
   return records;
 }
 
+std::string mebibytes(std::uint64_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
+  return text;
+}
+
+// Every buffer a kernel binds must fit the device's maxStorageBufferRange, and every BLAS and the TLAS its
+// acceleration-structure limits (lavapipe accepts more, but that is outside Vulkan's rules and fails on GPUs).
+// Checked before anything is created, so that a refusal leaves nothing behind.
+void checkDeviceLimits(const Device& device, const Scene& scene) {
+  const std::uint64_t maxRange = device.properties.limits.maxStorageBufferRange;
+  const auto checkBuffer = [&](const std::string& what, std::uint64_t bytes) {
+    if (bytes > maxRange) {
+      throw Error("the scene's " + what + " need " + mebibytes(bytes) + ", over this device's maxStorageBufferRange of " +
+                  mebibytes(maxRange) + ": simplify the scene or split it (docs/scenes.md, Limits)");
+    }
+  };
+  std::uint64_t vertices = 0, indices = 0, texels = 0;
+  for (const Mesh& mesh : scene.meshes) {
+    vertices += mesh.positions.size();
+    indices += mesh.indices.size();
+    if (mesh.indices.size() / 3 > device.maxPrimitiveCount) {
+      throw Error("mesh '" + mesh.name + "' has " + std::to_string(mesh.indices.size() / 3) +
+                  " triangles, over this device's maxPrimitiveCount of " + std::to_string(device.maxPrimitiveCount) +
+                  ": split the mesh into several primitives");
+    }
+  }
+  for (const Texture& texture : scene.textures) texels += std::uint64_t(texture.width) * texture.height;
+  checkBuffer("vertex positions (" + std::to_string(vertices) + ")", vertices * sizeof(glm::vec3));
+  checkBuffer("triangle indices (" + std::to_string(indices) + ")", indices * sizeof(std::uint32_t));
+  checkBuffer("texture texels (" + std::to_string(texels) + ")", texels * sizeof(std::uint32_t));
+  checkBuffer("spheres (" + std::to_string(scene.spheres.size()) + ")",
+              scene.spheres.size() * sizeof(gpu::SphereRecord));
+  if (scene.spheres.size() > device.maxPrimitiveCount) {
+    throw Error("the scene has " + std::to_string(scene.spheres.size()) +
+                " spheres, over this device's maxPrimitiveCount of " + std::to_string(device.maxPrimitiveCount));
+  }
+  if (scene.instances.size() + 1 > device.maxInstanceCount) {
+    throw Error("the scene has " + std::to_string(scene.instances.size()) +
+                " mesh instances, over this device's maxInstanceCount of " + std::to_string(device.maxInstanceCount));
+  }
+}
+
 }  // namespace
 
 GpuScene uploadScene(const Device& device, const Scene& scene) {
+  checkDeviceLimits(device, scene);
   for (const MeshInstance& instance : scene.instances) {
     if (instance.mesh >= scene.meshes.size()) throw Error("an instance refers to a mesh that does not exist");
     if (instance.material >= scene.materials.size()) throw Error("an instance refers to a material that does not exist");

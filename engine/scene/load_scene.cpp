@@ -1,5 +1,7 @@
 #include "scene/load_scene.h"
 
+#include <filesystem>
+
 #include "scene/default_scene.h"
 #include "scene/gltf_loader.h"
 
@@ -7,7 +9,12 @@ namespace raylab {
 
 Scene loadScene(const SceneRequest& request) {
   if (request.path.empty()) return makeDefaultScene(request.camera);
-  return loadGltfFile(request.path, GltfOptions{request.camera});
+  return loadGltfFile(request.path, GltfOptions{request.camera, request.allowOutsideUris});
+}
+
+std::string sceneName(const SceneRequest& request) {
+  if (request.path.empty()) return "showcase";
+  return std::filesystem::path(request.path).stem().string();
 }
 
 }  // namespace raylab

@@ -10,8 +10,13 @@ namespace raylab {
 struct SceneRequest {
   std::string path;    // empty: the built-in default scene
   std::string camera;  // --camera NAME; empty: the file's first camera
+  bool allowOutsideUris = false;  // --allow-outside-uris (docs/scenes.md)
 };
 
 Scene loadScene(const SceneRequest& request);
+
+// The name loadScene gives the scene (the file's stem, or "showcase"), known before loading: default output
+// paths are checked before the work starts.
+std::string sceneName(const SceneRequest& request);
 
 }  // namespace raylab

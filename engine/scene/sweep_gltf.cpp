@@ -10,6 +10,7 @@
 
 #include "scene/material_params.h"
 #include "scene/shapes.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/files.h"
 
@@ -260,12 +261,13 @@ void writeSweepGltf(const SweepScene& sweep, const std::string& path) {
   model.scenes.push_back(std::move(root));
   model.defaultScene = 0;
 
-  createParentDirectories(path);
   tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToFile(&model, path, /*embedImages=*/true, /*embedBuffers=*/true, /*prettyPrint=*/true,
-                                   /*writeBinary=*/false)) {
-    throw Error(path + ": cannot write glTF file");
-  }
+  replaceFileAtomically(path, [&](const std::string& temporary) {
+    if (!writer.WriteGltfSceneToFile(&model, temporary, /*embedImages=*/true, /*embedBuffers=*/true,
+                                     /*prettyPrint=*/true, /*writeBinary=*/false)) {
+      throw Error(path + ": cannot write glTF file");
+    }
+  });
 }
 
 }  // namespace raylab

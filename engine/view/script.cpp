@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "scene/material_params.h"
+#include "shared/scene_records.h"
 #include "util/error.h"
 #include "util/files.h"
 #include "view/scene_edits.h"
@@ -38,6 +40,8 @@ std::vector<std::string> splitWords(const std::string& line, const std::string& 
   }
   return words;
 }
+
+bool finiteInFloat(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 float parseNumber(const std::string& word, const std::string& where, const char* what) {
   float value = 0.0f;
@@ -82,11 +86,17 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
                                                    : "at <frame> pan <dx> <dy>");
     event.action = action == "orbit" ? ScriptAction::kOrbit : ScriptAction::kPan;
     readValues(event, words, 3, "an offset");
+    if (event.action == ScriptAction::kPan && !(std::abs(event.value.x) <= 1e3f && std::abs(event.value.y) <= 1e3f)) {
+      throw Error(where + ": a pan moves at most 1000 view heights");
+    }
   } else if (action == "zoom") {
     expectWords(words, 4, where, "at <frame> zoom <factor>");
     event.action = ScriptAction::kZoom;
     readValues(event, words, 3, "the zoom factor");
-    if (!(event.value.x > 0.0f)) throw Error(where + ": the zoom factor must be > 0");
+    // A camera moved by more than this in one step leaves float range or collapses onto its target.
+    if (!(event.value.x >= 1e-3f && event.value.x <= 1e3f)) {
+      throw Error(where + ": the zoom factor must be within [0.001, 1000], not " + words[3]);
+    }
   } else if (action == "model") {
     expectWords(words, 5, where, "at <frame> model <material> <model>");
     event.action = ScriptAction::kModel;
@@ -103,12 +113,15 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
     event.value = glm::vec3(float(width), float(height), 0.0f);
     event.valueCount = 2;
   } else if (action == "screenshot") {
-    expectWords(words, 4, where, "at <frame> screenshot <file.exr>");
+    expectWords(words, 4, where, "at <frame> screenshot <file.exr|file.png>");
     event.action = ScriptAction::kScreenshot;
     event.name = words[3];
-    if (event.name.size() < 5 || event.name.substr(event.name.size() - 4) != ".exr") {
-      throw Error(where + ": the screenshot file must end in .exr");
+    const std::string extension = std::filesystem::path(event.name).extension().string();
+    if (extension != ".exr" && extension != ".png") {
+      throw Error(where + ": the screenshot file must end in .exr or .png");
     }
+    // Events of frame N apply before frame N is traced: at frame 0 nothing has been traced yet.
+    if (event.frame == 0) throw Error(where + ": a screenshot at frame 0 would be black (nothing traced yet); use 1 or later");
   } else if (action == "set") {
     if (words.size() < 5) throw Error(where + ": expected 'at <frame> set material|light|exposure|max-depth ...'");
     const std::string& what = words[3];
@@ -121,14 +134,33 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
       event.param = words[5];
       readValues(event, words, 6, "a parameter value");
     } else if (what == "light") {
-      expectWords(words, 9, where, "at <frame> set light <name> intensity|position <x> <y> <z>");
+      if (words.size() < 6) throw Error(where + ": expected 'at <frame> set light <name> intensity|position|direction|cone ...'");
       event.name = words[4];
-      if (words[5] == "intensity") event.action = ScriptAction::kSetLightIntensity;
-      else if (words[5] == "position") event.action = ScriptAction::kSetLightPosition;
-      else throw Error(where + ": a light has 'intensity' and 'position', not '" + words[5] + "'");
-      readValues(event, words, 6, "a light value");
-      if (event.action == ScriptAction::kSetLightIntensity && glm::any(glm::lessThan(event.value, glm::vec3(0.0f)))) {
-        throw Error(where + ": a light's intensity must be >= 0");
+      const std::string& property = words[5];
+      if (property == "cone") {
+        expectWords(words, 8, where, "at <frame> set light <name> cone <inner-degrees> <outer-degrees>");
+        event.action = ScriptAction::kSetLightCone;
+        readValues(event, words, 6, "a cone angle");
+        if (!(event.value.x >= 0.0f && event.value.x < event.value.y && event.value.y <= 90.0f)) {
+          throw Error(where + ": cone angles must satisfy 0 <= inner < outer <= 90 degrees");
+        }
+      } else {
+        expectWords(words, 9, where, "at <frame> set light <name> intensity|position|direction <x> <y> <z>");
+        if (property == "intensity") event.action = ScriptAction::kSetLightIntensity;
+        else if (property == "position") event.action = ScriptAction::kSetLightPosition;
+        else if (property == "direction") event.action = ScriptAction::kSetLightDirection;
+        else throw Error(where + ": a light has intensity, position, direction and cone, not '" + property + "'");
+        readValues(event, words, 6, "a light value");
+        if (event.action == ScriptAction::kSetLightIntensity &&
+            (glm::any(glm::lessThan(event.value, glm::vec3(0.0f))) || !finiteInFloat(event.value))) {
+          throw Error(where + ": a light's intensity must be finite and >= 0");
+        }
+        if (event.action == ScriptAction::kSetLightDirection) {
+          if (!(glm::length(event.value) > 0.0f) || !finiteInFloat(event.value)) {
+            throw Error(where + ": a light's direction must be a finite, non-zero vector");
+          }
+          event.value = glm::normalize(event.value);
+        }
       }
     } else if (what == "exposure") {
       expectWords(words, 5, where, "at <frame> set exposure <stops>");
@@ -174,7 +206,11 @@ SceneEffect applyToScene(const ScriptEvent& event, Scene& scene) {
     case ScriptAction::kSetMaterial:
     case ScriptAction::kModel: {
       Material* material = findMaterial(scene, event.name);
-      if (material == nullptr) throw Error(event.where + ": the scene has no material '" + event.name + "'");
+      if (material == nullptr) {
+        std::string known;
+        for (const Material& m : scene.materials) known += (known.empty() ? "'" : ", '") + m.name + "'";
+        throw Error(event.where + ": the scene has no material '" + event.name + "' (materials: " + known + ")");
+      }
       if (event.action == ScriptAction::kModel) {
         const ModelInfo* model = findModel(event.param);
         if (model == nullptr) {
@@ -197,11 +233,30 @@ SceneEffect applyToScene(const ScriptEvent& event, Scene& scene) {
       break;
     }
     case ScriptAction::kSetLightIntensity:
-    case ScriptAction::kSetLightPosition: {
+    case ScriptAction::kSetLightPosition:
+    case ScriptAction::kSetLightDirection:
+    case ScriptAction::kSetLightCone: {
       Light* light = findLight(scene, event.name);
-      if (light == nullptr) throw Error(event.where + ": the scene has no light '" + event.name + "'");
-      if (event.action == ScriptAction::kSetLightIntensity) light->record.intensity = event.value;
-      else light->record.position = event.value;
+      if (light == nullptr) {
+        std::string known;
+        for (const Light& l : scene.lights) known += (known.empty() ? "'" : ", '") + l.name + "'";
+        throw Error(event.where + ": the scene has no light '" + event.name + "' (lights: " + known + ")");
+      }
+      const std::uint32_t type = light->record.type;
+      if (event.action == ScriptAction::kSetLightIntensity) {
+        light->record.intensity = event.value;
+      } else if (event.action == ScriptAction::kSetLightPosition) {
+        light->record.position = event.value;
+      } else if (event.action == ScriptAction::kSetLightDirection) {
+        if (type != gpu::kLightSpot && type != gpu::kLightDirectional) {
+          throw Error(event.where + ": light '" + event.name + "' is a point light, which has no direction");
+        }
+        light->record.direction = event.value;
+      } else {
+        if (type != gpu::kLightSpot) throw Error(event.where + ": light '" + event.name + "' is not a spot light");
+        light->record.cosInner = std::cos(glm::radians(event.value.x));
+        light->record.cosOuter = std::cos(glm::radians(event.value.y));
+      }
       effect.lights = true;
       break;
     }

@@ -8,11 +8,13 @@
 //   at <frame> set material <name> <param> <value> [<g> <b>]
 //   at <frame> set light <name> intensity <r> <g> <b>
 //   at <frame> set light <name> position <x> <y> <z>
+//   at <frame> set light <name> direction <x> <y> <z>   spot and directional lights
+//   at <frame> set light <name> cone <inner> <outer>    spot lights, degrees from the axis
 //   at <frame> set exposure <stops>
 //   at <frame> set max-depth <bounces>
 //   at <frame> model <material> <model>
 //   at <frame> resize <width> <height>
-//   at <frame> screenshot <file.exr>               also writes file.png
+//   at <frame> screenshot <file.exr|file.png>      also writes the other beside it; frame >= 1
 //
 // Names containing spaces are written in double quotes. Events of one frame apply in file order, before that
 // frame is traced.
@@ -35,6 +37,8 @@ enum class ScriptAction {
   kSetMaterial,
   kSetLightIntensity,
   kSetLightPosition,
+  kSetLightDirection,
+  kSetLightCone,
   kSetExposure,
   kSetMaxDepth,
   kModel,

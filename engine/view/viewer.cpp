@@ -2,7 +2,6 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <stb_image_write.h>
 
 #include <algorithm>
 #include <array>
@@ -47,10 +46,6 @@ bool covers(const KernelFeatures& kernel, const KernelFeatures& needed) {
   return (needed.models & ~kernel.models) == 0 && (needed.features & ~kernel.features) == 0;
 }
 
-std::string pngBeside(const std::string& exrPath) {
-  return std::filesystem::path(exrPath).replace_extension(".png").string();
-}
-
 std::string timestampedScreenshotPath() {
   const std::time_t now = std::time(nullptr);
   char name[64];
@@ -58,9 +53,14 @@ std::string timestampedScreenshotPath() {
   return name;
 }
 
-glm::uvec2 fullExtentFor(VkExtent2D window, float scale) {
-  const auto scaled = [scale](std::uint32_t size) {
-    return std::clamp<std::uint32_t>(static_cast<std::uint32_t>(std::lround(size * double(scale))), 8u, 16384u);
+// The traced size for a window: its size times the resolution scale, shrunk (aspect kept) where the device
+// cannot hold that many pixels in one accumulation buffer; the display pass scales the image up.
+glm::uvec2 fullExtentFor(VkExtent2D window, float scale, std::uint64_t maxPixels) {
+  double s = scale;
+  const double pixels = double(window.width) * window.height * s * s;
+  if (pixels > double(maxPixels)) s *= std::sqrt(double(maxPixels) / pixels) * 0.999;
+  const auto scaled = [s](std::uint32_t size) {
+    return std::clamp<std::uint32_t>(static_cast<std::uint32_t>(std::floor(size * s)), 8u, kMaxImageSide);
   };
   return {scaled(window.width), scaled(window.height)};
 }
@@ -152,7 +152,7 @@ void setUp(Viewer& v) {
   if (!v.options.windowCapture.empty() && !(v.swapchain.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT)) {
     throw Error("--capture-window: this window system does not let raylab read the window's images back");
   }
-  const glm::uvec2 full = fullExtentFor(v.swapchain.extent, v.settings.resolutionScale);
+  const glm::uvec2 full = fullExtentFor(v.swapchain.extent, v.settings.resolutionScale, maxImagePixels(v.device));
   RenderSettings renderSettings = v.options.render;
   renderSettings.width = full.x;
   renderSettings.height = full.y;
@@ -203,7 +203,6 @@ void tearDown(Viewer& v) {
 
 void writeWindowCapture(const Viewer& v, const FrameSlot& slot) {
   const std::string& path = v.options.windowCapture;
-  createParentDirectories(path);
   const VkExtent2D extent = slot.captureExtent;
   const bool bgra = v.swapchain.format == VK_FORMAT_B8G8R8A8_UNORM || v.swapchain.format == VK_FORMAT_B8G8R8A8_SRGB;
   const auto* pixels = static_cast<const std::uint8_t*>(slot.capture.mapped);
@@ -213,9 +212,7 @@ void writeWindowCapture(const Viewer& v, const FrameSlot& slot) {
     rgb[i * 3 + 1] = pixels[i * 4 + 1];
     rgb[i * 3 + 2] = pixels[i * 4 + (bgra ? 0 : 2)];
   }
-  if (stbi_write_png(path.c_str(), int(extent.width), int(extent.height), 3, rgb.data(), int(extent.width) * 3) == 0) {
-    throw Error(path + ": cannot write PNG file");
-  }
+  writePngRgb8(path, extent.width, extent.height, rgb.data());
   if (!v.options.quiet) std::printf("wrote %s\n", path.c_str());
 }
 
@@ -322,6 +319,20 @@ void uploadSceneEdits(Viewer& v, bool materials, bool lights) {
   v.changed = true;
 }
 
+// A camera that a script moved out of float range, or onto its own target, is the script's error: say which line.
+void checkCameraEvent(const Viewer& v, const ScriptEvent& event) {
+  gpu::FrameParams probe{};
+  try {
+    applyCamera(probe, v.camera, v.renderer.params.width, v.renderer.params.height);
+  } catch (const Error& error) {
+    throw Error(event.where + ": this camera move leaves no usable view (" + error.what() + ")");
+  }
+  const glm::vec3 position = v.camera.position;
+  if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z)) {
+    throw Error(event.where + ": this camera move puts the camera outside float range");
+  }
+}
+
 void applyScriptEvents(Viewer& v) {
   if (v.eventsAppliedFor == std::int64_t(v.frameIndex)) return;
   v.eventsAppliedFor = v.frameIndex;
@@ -341,7 +352,9 @@ void applyScriptEvents(Viewer& v) {
       case ScriptAction::kSetMaterial:
       case ScriptAction::kModel:
       case ScriptAction::kSetLightIntensity:
-      case ScriptAction::kSetLightPosition: {
+      case ScriptAction::kSetLightPosition:
+      case ScriptAction::kSetLightDirection:
+      case ScriptAction::kSetLightCone: {
         const SceneEffect effect = applyToScene(event, v.scene);
         materials |= effect.materials;
         lights |= effect.lights;
@@ -359,9 +372,15 @@ void applyScriptEvents(Viewer& v) {
                       std::to_string(int(kResizeTimeout)) + " s");
         }
         break;
-      case ScriptAction::kScreenshot:
-        saveScreenshot(v, event.name, pngBeside(event.name));
+      case ScriptAction::kScreenshot: {
+        const ScreenshotPaths paths = screenshotPaths(event.name, "");
+        saveScreenshot(v, paths.exr, paths.png);
         break;
+      }
+    }
+    if (event.action == ScriptAction::kOrbit || event.action == ScriptAction::kPan ||
+        event.action == ScriptAction::kZoom) {
+      checkCameraEvent(v, event);
     }
     if (resetsAccumulation(event)) v.changed = true;
   }
@@ -369,7 +388,7 @@ void applyScriptEvents(Viewer& v) {
 }
 
 void updateFullExtent(Viewer& v) {
-  const glm::uvec2 full = fullExtentFor(v.swapchain.extent, v.settings.resolutionScale);
+  const glm::uvec2 full = fullExtentFor(v.swapchain.extent, v.settings.resolutionScale, maxImagePixels(v.device));
   v.extentStale = false;
   if (full == v.scheduler.fullExtent) return;
   waitForFrames(v);
@@ -402,7 +421,7 @@ void handleHotKeys(Viewer& v, const WindowInput& input) {
     if (key == GLFW_KEY_F1 || key == GLFW_KEY_TAB) v.ui.visible = !v.ui.visible;
     if (key == GLFW_KEY_F12 || key == GLFW_KEY_P) {
       const std::string path = timestampedScreenshotPath();
-      saveScreenshot(v, path, pngBeside(path));
+      saveScreenshot(v, path, screenshotPaths(path, "").png);
     }
   }
 }
@@ -578,7 +597,7 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
   uploadSceneEdits(v, edits.materials, edits.lights);
   if (edits.screenshot) {
     const std::string path = timestampedScreenshotPath();
-    saveScreenshot(v, path, pngBeside(path));
+    saveScreenshot(v, path, screenshotPaths(path, "").png);
   }
   v.scheduler.settings.targetFrameSeconds = v.settings.targetMs / 1000.0;
 
@@ -679,8 +698,8 @@ void run(Viewer& v) {
   waitForFrames(v);
   v.report.spp = v.scheduler.sampleIndex;
   if (!v.options.screenshot.empty()) {
-    saveScreenshot(v, v.options.screenshot,
-                   v.options.screenshotPng.empty() ? pngBeside(v.options.screenshot) : v.options.screenshotPng);
+    const ScreenshotPaths paths = screenshotPaths(v.options.screenshot, v.options.screenshotPng);
+    saveScreenshot(v, paths.exr, paths.png);
   }
   if (!v.options.quiet) {
     updateStatus(v);
@@ -689,6 +708,12 @@ void run(Viewer& v) {
 }
 
 }  // namespace
+
+ScreenshotPaths screenshotPaths(const std::string& named, const std::string& pngOverride) {
+  std::filesystem::path path(named);
+  if (path.extension() == ".png") return {std::filesystem::path(path).replace_extension(".exr").string(), named};
+  return {named, pngOverride.empty() ? path.replace_extension(".png").string() : pngOverride};
+}
 
 ViewerReport runViewer(const Scene& scene, const ViewerOptions& options) {
   checkScript(options.script, scene);

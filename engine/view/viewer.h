@@ -32,8 +32,8 @@ struct ViewerOptions {
   // full-resolution pass, so N frames without changes hold what `raylab render --spp N` computes.
   std::optional<std::uint32_t> frames;
   std::vector<ScriptEvent> script;
-  std::string screenshot;     // FILE.exr of the last frame's accumulation; a PNG beside it
-  std::string screenshotPng;  // overrides the PNG's path
+  std::string screenshot;     // FILE.exr or FILE.png of the last frame's accumulation; the other beside it
+  std::string screenshotPng;  // overrides the PNG's path of a FILE.exr screenshot
   std::string windowCapture;  // PNG of the last frame's window, panel included
   bool exitWhenConverged = false;  // exit once still at full resolution with sppLimit samples (benchmarks)
   bool quiet = false;
@@ -52,6 +52,13 @@ struct FrameRecord {
   std::uint32_t spp = 0;         // complete passes at traceExtent after this frame
   std::uint64_t pixelSamples = 0;
 };
+
+// A screenshot writes both images: the one named, and the other beside it (or at `pngOverride`).
+struct ScreenshotPaths {
+  std::string exr;
+  std::string png;
+};
+ScreenshotPaths screenshotPaths(const std::string& named, const std::string& pngOverride);
 
 struct ViewerReport {
   std::string device;

@@ -298,6 +298,8 @@ Device createDevice(const Instance& instance, const DeviceReport& report, VkSurf
   vkGetPhysicalDeviceProperties2(device.physical, &properties);
   device.properties = properties.properties;
   device.scratchAlignment = asProperties.minAccelerationStructureScratchOffsetAlignment;
+  device.maxPrimitiveCount = asProperties.maxPrimitiveCount;
+  device.maxInstanceCount = asProperties.maxInstanceCount;
   device.subgroupSize = subgroup.subgroupSize;
   vkGetPhysicalDeviceMemoryProperties(device.physical, &device.memory);
 

@@ -55,6 +55,10 @@ struct Device {
   VkPhysicalDeviceProperties properties{};
   VkPhysicalDeviceMemoryProperties memory{};
   std::uint32_t scratchAlignment = 1;  // minAccelerationStructureScratchOffsetAlignment
+  // Limits the renderer must stay within (VkPhysicalDeviceAccelerationStructurePropertiesKHR); the storage
+  // buffer range is properties.limits.maxStorageBufferRange.
+  std::uint64_t maxPrimitiveCount = 0;
+  std::uint64_t maxInstanceCount = 0;
   std::uint32_t subgroupSize = 1;
   ExtensionFunctions ext;
 };

@@ -91,11 +91,27 @@ TEST(CliTest, RenderWritesExrAndPngAndReportsTimings) {
   EXPECT_GT(std::filesystem::file_size(png), 100u);
 }
 
-TEST(CliTest, UnwritableOutputIsAnErrorNamingTheFile) {
-  const CommandResult result = runRaylab({"render", "--width", "8", "--height", "8", "--spp", "1", "--out",
-                                          "/proc/raylab-cannot-write-here/x.exr"});
-  EXPECT_EQ(result.exitCode, 1) << result.output;
-  EXPECT_NE(result.output.find("/proc/raylab-cannot-write-here"), std::string::npos) << result.output;
+TEST(CliTest, ErrorsCarryOnePrefixAndBareBrdfSaysWhatIsMissing) {
+  const CommandResult usage = runRaylab({"render", "--spp", "abc"});
+  EXPECT_EQ(usage.output.find("raylab: raylab"), std::string::npos) << usage.output;
+  const CommandResult missing = runRaylab({"render", "/nonexistent/scene.gltf"});
+  EXPECT_EQ(missing.exitCode, 1) << missing.output;
+  EXPECT_NE(missing.output.find("raylab render: /nonexistent/scene.gltf: no such file"), std::string::npos)
+      << missing.output;
+  const CommandResult brdf = runRaylab({"brdf"});
+  EXPECT_EQ(brdf.exitCode, 2) << brdf.output;
+  EXPECT_NE(brdf.output.find("which subcommand"), std::string::npos) << brdf.output;
+  const CommandResult top = runRaylab({"--help"});
+  EXPECT_NE(top.output.find("brdf albedo"), std::string::npos) << top.output;
+}
+
+// `raylab render /dev/zero` used to read until memory ran out.
+TEST(CliTest, ASceneThatIsNotARegularFileIsRefused) {
+  for (const char* path : {"/dev/zero", "/tmp"}) {
+    const CommandResult result = runRaylab({"render", path, "--no-png", "--out", "/tmp/raylab_cli_never.exr"});
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find(path), std::string::npos) << result.output;
+  }
 }
 
 }  // namespace

@@ -203,11 +203,17 @@ TEST(ScriptTest, ErrorsNameTheFileAndLine) {
       {"at 1 spin 3", "unknown action 'spin'"},
       {"at 1 orbit 1", "orbit"},
       {"at 1 zoom abc", "number"},
-      {"at 1 zoom 0", "> 0"},
+      {"at 1 zoom 0", "[0.001, 1000]"},
+      {"at 1 zoom 1e30", "[0.001, 1000]"},
+      {"at 1 pan 1e30 0", "1000 view heights"},
       {"at 1 resize 4 4", "8..16384"},
       {"at 1 set light key colour 1 1 1", "'colour'"},
       {"at 1 set material \"unterminated rho_d 1", "unterminated"},
-      {"at 1 screenshot a.png", ".exr"},
+      {"at 1 screenshot a.tif", ".exr or .png"},
+      {"at 0 screenshot a.exr", "frame 0 would be black"},
+      {"at 1 set light key cone 30 20", "inner < outer"},
+      {"at 1 set light key direction 0 0 0", "non-zero"},
+      {"at 1 set light key intensity 1e39 1 1", "number"},
       {"orbit 1 2", "at <frame>"},
   };
   for (const auto& [line, mentions] : cases) {
@@ -219,6 +225,42 @@ TEST(ScriptTest, ErrorsNameTheFileAndLine) {
       EXPECT_NE(message.find("script.txt:2"), std::string::npos) << message;
       EXPECT_NE(message.find(mentions), std::string::npos) << message;
     }
+  }
+}
+
+// A user can aim a spot or directional light and open a spot's cone from a script, and is told when the
+// light has no such property.
+TEST(ScriptTest, LightDirectionAndConeChangeSpotAndDirectionalLights) {
+  Scene scene;
+  gpu::LightRecord spot{};
+  spot.type = gpu::kLightSpot;
+  spot.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+  gpu::LightRecord point{};
+  point.type = gpu::kLightPoint;
+  scene.lights = {{"spot", spot}, {"bulb", point}};
+  const std::vector<ScriptEvent> events = parseScript(
+      "at 1 set light spot direction 0 0 -2\n"
+      "at 1 set light spot cone 10 30\n",
+      "s.txt");
+  for (const ScriptEvent& event : events) EXPECT_TRUE(applyToScene(event, scene).lights);
+  EXPECT_EQ(scene.lights[0].record.direction, glm::vec3(0.0f, 0.0f, -1.0f));  // normalised
+  EXPECT_NEAR(scene.lights[0].record.cosInner, std::cos(glm::radians(10.0f)), 1e-6f);
+  EXPECT_NEAR(scene.lights[0].record.cosOuter, std::cos(glm::radians(30.0f)), 1e-6f);
+
+  const std::vector<ScriptEvent> wrong = parseScript("at 1 set light bulb cone 10 30\n", "s.txt");
+  try {
+    applyToScene(wrong[0], scene);
+    ADD_FAILURE() << "a point light accepted a cone";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("s.txt:1: light 'bulb' is not a spot light"), std::string::npos)
+        << error.what();
+  }
+  const std::vector<ScriptEvent> unknown = parseScript("at 1 set light lamp intensity 1 1 1\n", "s.txt");
+  try {
+    applyToScene(unknown[0], scene);
+    ADD_FAILURE() << "an unknown light was accepted";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("(lights: 'spot', 'bulb')"), std::string::npos) << error.what();
   }
 }
 

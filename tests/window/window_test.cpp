@@ -249,9 +249,20 @@ TEST(WindowTest, ResizingMidRunKeepsRenderingAtTheNewSize) {
   expectSameImage(view, reference, "after the resize, against raylab render");
 }
 
+TEST(WindowTest, AScreenshotNamedPngWritesThePngAndTheExrBesideIt) {
+  const std::string dir = scratchDir();
+  const std::string png = dir + "/named.png";
+  std::filesystem::remove(png);
+  std::filesystem::remove(dir + "/named.exr");
+  const CommandResult result = runView({"--width", "64", "--height", "48", "--frames", "2", "--screenshot", png});
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_GT(std::filesystem::file_size(png), 100u);
+  EXPECT_EQ(readExr(dir + "/named.exr").width, 64u);
+}
+
 TEST(WindowTest, ScriptErrorsNameTheLineAndUsageErrorsTheOption) {
   const std::string script = writeScript("typo.txt", "at 1 orbit 10 0\nat 2 set material nosuch rho_d 0.5\n");
-  const CommandResult typo = runView({"--frames", "2", "--script", script});
+  const CommandResult typo = runView({"--frames", "3", "--script", script});
   EXPECT_EQ(typo.exitCode, 1) << typo.output;
   EXPECT_NE(typo.output.find("typo.txt:2"), std::string::npos) << typo.output;
   EXPECT_NE(typo.output.find("nosuch"), std::string::npos) << typo.output;
@@ -261,7 +272,14 @@ TEST(WindowTest, ScriptErrorsNameTheLineAndUsageErrorsTheOption) {
   EXPECT_EQ(unknown.exitCode, 1) << unknown.output;
   EXPECT_NE(unknown.output.find("bad.txt:1"), std::string::npos) << unknown.output;
 
-  const CommandResult usage = runRaylab({"view", "--screenshot", "shot.png"});
+  // An event at or after --frames would silently never happen.
+  const std::string late = writeScript("late.txt", "at 5 orbit 10 0\n");
+  const CommandResult dropped = runView({"--frames", "5", "--script", late});
+  EXPECT_EQ(dropped.exitCode, 2) << dropped.output;
+  EXPECT_NE(dropped.output.find("late.txt:1: the event at frame 5 would never run"), std::string::npos)
+      << dropped.output;
+
+  const CommandResult usage = runRaylab({"view", "--screenshot", "shot.tif"});
   EXPECT_EQ(usage.exitCode, 2) << usage.output;
   EXPECT_NE(usage.output.find("--screenshot"), std::string::npos) << usage.output;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "args.h"
 #include "bench_commands.h"
 #include "scene/load_scene.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "view/viewer.h"
 
@@ -51,10 +53,8 @@ std::string loadAverage() {
   return one.empty() ? "unknown" : one + " (1 min), " + five + " (5 min)";
 }
 
-void writeFramesCsv(const std::string& path, Size size, const std::vector<FrameRecord>& frames,
-                    std::uint32_t stillFrame) {
-  std::ofstream file(path, std::ios::app);
-  if (!file) throw Error(path + ": cannot write");
+void appendFramesCsv(std::string* csv, Size size, const std::vector<FrameRecord>& frames, std::uint32_t stillFrame) {
+  std::ostringstream file;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const FrameRecord& f = frames[i];
     file << size.width << 'x' << size.height << ',' << i << ',' << (i < stillFrame ? "moving" : "still") << ','
@@ -62,10 +62,11 @@ void writeFramesCsv(const std::string& path, Size size, const std::vector<FrameR
          << f.preview << ',' << f.spp << ',' << f.pixelSamples << ',' << f.traceSeconds << ',' << f.displaySeconds
          << ',' << f.blitSeconds << ',' << f.deviceSeconds << '\n';
   }
+  *csv += file.str();
 }
 
 ViewTiming timeViewer(const Scene& scene, Size size, std::uint32_t warmupFrames, std::uint32_t orbitFrames,
-                      float degreesPerFrame, double targetMs, std::uint32_t spp, const std::string& csvPath) {
+                      float degreesPerFrame, double targetMs, std::uint32_t spp, std::string* csv) {
   ViewerOptions options;
   options.width = size.width;
   options.height = size.height;
@@ -85,7 +86,7 @@ ViewTiming timeViewer(const Scene& scene, Size size, std::uint32_t warmupFrames,
   const ViewerReport report = runViewer(scene, options);
   const std::vector<FrameRecord>& frames = report.frames;
   const std::uint32_t stillFrame = warmupFrames + orbitFrames;
-  if (!csvPath.empty()) writeFramesCsv(csvPath, size, frames, stillFrame);
+  if (csv != nullptr) appendFramesCsv(csv, size, frames, stillFrame);
   if (frames.size() <= stillFrame) {
     throw Error("raylab bench view: the viewer stopped after " + std::to_string(frames.size()) + " frames");
   }
@@ -162,12 +163,15 @@ int benchView(int argc, char** argv) {
   if (degrees == 0.0f) degrees = 360.0f / float(orbitFrames);
 
   const Scene scene = loadScene({scenePath, ""});
-  if (!csvPath.empty()) std::ofstream(csvPath, std::ios::trunc);
+  if (!csvPath.empty()) checkOutputPath(csvPath, "--frames-csv");
+  std::string csv;
   const std::string loadBefore = loadAverage();
   std::vector<ViewTiming> timings;
   for (const Size size : {Size{640, 360}, Size{1280, 720}}) {
-    timings.push_back(timeViewer(scene, size, warmupFrames, orbitFrames, degrees, targetMs, spp, csvPath));
+    timings.push_back(timeViewer(scene, size, warmupFrames, orbitFrames, degrees, targetMs, spp,
+                                 csvPath.empty() ? nullptr : &csv));
   }
+  if (!csvPath.empty()) writeFileAtomically(csvPath, csv);
   const std::string loadAfter = loadAverage();
   const unsigned cores = std::thread::hardware_concurrency();
 

@@ -19,6 +19,7 @@
 #include "brdf_commands.h"
 #include "gpu_session.h"
 #include "reference/albedo.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/files.h"
 #include "util/timer.h"
@@ -152,6 +153,7 @@ int runBrdfAlbedo(int argc, char** argv) {
   args.option("--device", &deviceIndex,
               "gpu backend: Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(argc, argv)) return kExitOk;
+  if (!outPath.empty()) checkOutputPath(outPath, "--out");
   if (model.empty()) {
     throw Error(std::string(kCommand) + ": --model is required (see `raylab brdf albedo --help`)", kExitUsage);
   }
@@ -193,11 +195,7 @@ int runBrdfAlbedo(int argc, char** argv) {
   if (outPath.empty()) {
     std::fputs(csv.c_str(), stdout);
   } else {
-    createParentDirectories(outPath);
-    std::ofstream out(outPath, std::ios::binary);
-    out << csv;
-    out.close();
-    if (!out) throw Error(outPath + ": cannot write file");
+    writeFileAtomically(outPath, csv);
   }
   std::fprintf(stderr, "%s: %s, %zu angles on the %s backend in %.2f s\n", kCommand, model.c_str(), angles.size(),
                backend.c_str(), clock.seconds());

@@ -12,6 +12,7 @@
 #include "brdf_commands.h"
 #include "commands.h"
 #include "gpu_session.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/files.h"
 #include "util/timer.h"
@@ -41,6 +42,7 @@ int runBrdfEval(int argc, char** argv) {
   if (!args.parse(argc, argv)) return kExitOk;
   if (inPath.empty()) throw Error("raylab brdf eval: --in is required (see `raylab brdf eval --help`)", kExitUsage);
   if (outPath.empty()) throw Error("raylab brdf eval: --out is required (see `raylab brdf eval --help`)", kExitUsage);
+  checkOutputPath(outPath, "--out");
 
   const Stopwatch total;
   const BrdfCaseFile file = parseBrdfCases(readTextFile(inPath), inPath);
@@ -62,11 +64,7 @@ int runBrdfEval(int argc, char** argv) {
     evaluationSeconds = clock.seconds();
   }
 
-  createParentDirectories(outPath);
-  std::ofstream out(outPath, std::ios::binary);
-  out << formatBrdfValues(file.cases, results);
-  out.close();
-  if (!out) throw Error(outPath + ": cannot write file");
+  writeFileAtomically(outPath, formatBrdfValues(file.cases, results));
 
   std::fprintf(stderr, "raylab brdf eval: %zu rows (%zu malformed) on the %s backend: %s %.2f ms, total %.2f s\n",
                file.cases.size(), file.errors.size(), backend.c_str(), backend == "gpu" ? "dispatch" : "evaluation",
@@ -96,6 +94,7 @@ void printUsage(std::FILE* stream) {
 
 int runBrdf(int argc, char** argv) {
   if (argc < 1) {
+    std::fprintf(stderr, "raylab brdf: which subcommand? (eval or albedo)\n\n");
     printUsage(stderr);
     return kExitUsage;
   }

@@ -1,10 +1,12 @@
 // `raylab render`: offscreen frame capture to OpenEXR (linear) and PNG (tone-mapped), for scripts and CI.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -16,7 +18,7 @@
 #include "scene/load_scene.h"
 #include "scene/gpu_scene.h"
 #include "util/error.h"
-#include "util/files.h"
+#include "util/atomic_file.h"
 #include "util/progress.h"
 #include "util/timer.h"
 
@@ -35,6 +37,9 @@ struct RenderOptions {
   float exposure = 0.0f;
   std::string toneMap = "clamp";
   bool noAntialiasing = false;
+  bool noExr = false;
+  bool allowOutsideUris = false;
+  bool noPng = false;
   bool stats = false;
   bool allFeatures = false;
   std::string fresnel = "exact";
@@ -90,11 +95,40 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
       {"exr", o.exrPath},
       {"png", o.pngPath},
   };
-  createParentDirectories(path);
-  std::ofstream out(path, std::ios::binary);
-  out << report.dump(2) << "\n";
-  out.close();
-  if (!out) throw Error(path + ": cannot write file");
+  writeFileAtomically(path, report.dump(2) + "\n");
+}
+
+// A non-finite pixel is a defect somewhere (an input that passed its checks, or the kernel): never write it
+// silently as an image that looks fine.
+void checkFinite(const Image& image) {
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+    if (!std::isfinite(image.rgba[i]) || !std::isfinite(image.rgba[i + 1]) || !std::isfinite(image.rgba[i + 2])) ++bad;
+  }
+  if (bad > 0) {
+    throw Error(std::to_string(bad) + " pixels are NaN or Inf; no file was written (please report the scene)");
+  }
+}
+
+// Writes the images, each atomically. When one fails after another was written, the message says which
+// files were written and which was not, so nothing is taken for done that is not.
+void writeImages(const RenderOptions& o, const Image& image) {
+  std::vector<std::string> written;
+  const auto attempt = [&](const std::string& path, const std::function<void()>& write) {
+    if (path.empty()) return;
+    try {
+      write();
+    } catch (const Error& error) {
+      std::string message = error.what();
+      message += written.empty() ? "; no file was written" : "; written before the failure:";
+      for (const std::string& done : written) message += " " + done;
+      throw Error(message);
+    }
+    written.push_back(path);
+    std::printf("wrote %s\n", path.c_str());
+  };
+  attempt(o.exrPath, [&] { writeExr(o.exrPath, image); });
+  attempt(o.pngPath, [&] { writePng(o.pngPath, image, o.exposure, parseToneMap(o.toneMap)); });
 }
 
 void requireExtension(const std::string& option, const std::string& path, const std::string& extension) {
@@ -113,14 +147,19 @@ int runRender(int argc, char** argv) {
                  "the same device. Without --out and --png it writes out/<scene>.exr and out/<scene>.png.");
   args.positional("SCENE", &o.scene, "a .gltf or .glb file (default: the built-in scene)");
   args.option("--camera", &o.camera, "NAME", "the glTF camera (or its node) to render from (default: the first)");
+  args.flag("--allow-outside-uris", &o.allowOutsideUris,
+            "let the scene's buffers and images lie outside its directory (only for files you trust)");
   args.option("--width", &o.settings.width, "image width in pixels", 1, 16384);
   args.option("--height", &o.settings.height, "image height in pixels", 1, 16384);
   args.option("--spp", &o.spp, "samples per pixel", 1, 1u << 20);
   args.option("--seed", &o.settings.seed, "random seed of the sample pattern", 0, UINT32_MAX);
   args.option("--max-depth", &o.settings.maxDepth, "bounces after the primary hit (mirror, glass)", 0, 64);
   args.flag("--no-aa", &o.noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
-  args.option("--out", &o.exrPath, "FILE.exr", "write the linear image here (OpenEXR, float32 RGBA)");
-  args.option("--png", &o.pngPath, "FILE.png", "write the tone-mapped image here (sRGB, 8-bit)");
+  args.option("--out", &o.exrPath, "FILE.exr",
+              "write the linear image here (OpenEXR, float32 RGBA; default out/<scene>.exr)");
+  args.option("--png", &o.pngPath, "FILE.png", "write the tone-mapped image here (sRGB, 8-bit; default out/<scene>.png)");
+  args.flag("--no-exr", &o.noExr, "write no OpenEXR image");
+  args.flag("--no-png", &o.noPng, "write no PNG image");
   args.option("--report", &o.reportPath, "FILE.json",
               "also write the printed figures (times, rays, kernel, device) here as JSON, for scripts");
   args.option("--exposure", &o.exposure, "exposure of the PNG in stops", -20.0f, 20.0f);
@@ -133,20 +172,31 @@ int runRender(int argc, char** argv) {
   if (!args.parse(argc, argv)) return kExitOk;
   o.settings.jitter = !o.noAntialiasing;
 
+  if (!o.exrPath.empty() && o.noExr) throw Error("raylab render: --out and --no-exr contradict each other", kExitUsage);
+  if (!o.pngPath.empty() && o.noPng) throw Error("raylab render: --png and --no-png contradict each other", kExitUsage);
   if (!o.exrPath.empty()) requireExtension("--out", o.exrPath, ".exr");
   if (!o.pngPath.empty()) requireExtension("--png", o.pngPath, ".png");
   if (!o.reportPath.empty()) requireExtension("--report", o.reportPath, ".json");
+  // Each output has its own default, so giving one never suppresses the other.
+  const SceneRequest request{o.scene, o.camera, o.allowOutsideUris};
+  if (o.exrPath.empty() && !o.noExr) o.exrPath = "out/" + sceneName(request) + ".exr";
+  if (o.pngPath.empty() && !o.noPng) o.pngPath = "out/" + sceneName(request) + ".png";
+  if (o.exrPath.empty() && o.pngPath.empty() && o.reportPath.empty()) {
+    throw Error("raylab render: --no-exr and --no-png leave nothing to write (add --report to time a render)",
+                kExitUsage);
+  }
+  // Before any work: a render is never thrown away because its output cannot be written.
+  if (!o.exrPath.empty()) checkOutputPath(o.exrPath, "--out");
+  if (!o.pngPath.empty()) checkOutputPath(o.pngPath, "--png");
+  if (!o.reportPath.empty()) checkOutputPath(o.reportPath, "--report");
 
-  Scene scene = loadScene({o.scene, o.camera});
+  Scene scene = loadScene(request);
   KernelFeatures kernel = o.allFeatures ? allFeatures() : featuresOf(scene);
   kernel.schlickFresnel = o.fresnel == "schlick";
   o.settings.kernel = kernel;
-  if (o.exrPath.empty() && o.pngPath.empty()) {
-    o.exrPath = "out/" + scene.name + ".exr";
-    o.pngPath = "out/" + scene.name + ".png";
-  }
 
   GpuSession gpu(o.device);
+  checkImageSize(gpu.device, o.settings.width, o.settings.height);
   GpuScene gpuScene = uploadScene(gpu.device, scene);
   Renderer renderer;
   try {
@@ -175,8 +225,8 @@ int runRender(int argc, char** argv) {
     const double steadyCpuSeconds = steadyCpuClock.seconds();
 
     const Image image = readImage(gpu.device, renderer);
-    if (!o.exrPath.empty()) writeExr(o.exrPath, image);
-    if (!o.pngPath.empty()) writePng(o.pngPath, image, o.exposure, parseToneMap(o.toneMap));
+    checkFinite(image);
+    writeImages(o, image);
 
     const std::uint32_t steadySamples = o.spp - 1;
     const double perSample = steadySamples > 0 ? steadySeconds / steadySamples : firstSampleSeconds;
@@ -196,8 +246,6 @@ int runRender(int argc, char** argv) {
                 formatCount(double(renderer.rays.primary), "").c_str(),
                 formatCount(double(renderer.rays.shadow), "").c_str(),
                 formatCount(double(renderer.rays.secondary), "").c_str(), formatCount(raysPerSecond, "rays/s").c_str());
-    if (!o.exrPath.empty()) std::printf("wrote %s\n", o.exrPath.c_str());
-    if (!o.pngPath.empty()) std::printf("wrote %s\n", o.pngPath.c_str());
     if (!o.reportPath.empty()) {
       writeReport(o.reportPath, o, scene, gpuScene, gpu.device, renderer,
                   {gpuScene.accelerationBuildSeconds, firstSampleSeconds, steadySeconds, steadyCpuSeconds, perSample,

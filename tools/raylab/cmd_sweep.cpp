@@ -20,6 +20,7 @@
 #include "scene/material_params.h"
 #include "scene/sweep_gltf.h"
 #include "scene/sweep_scene.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/progress.h"
 #include "util/timer.h"
@@ -266,6 +267,13 @@ int runSweep(int argc, char** argv) {
     usage("--gltf: '" + o.gltfPath + "' must end in .gltf");
   }
 
+  const std::string exrPath = std::filesystem::path(o.pngPath).replace_extension(".exr").string();
+  if (!o.gltfPath.empty()) checkOutputPath(o.gltfPath, "--gltf");
+  if (render) {
+    checkOutputPath(o.pngPath, "--out");
+    checkOutputPath(exrPath, "--out (the EXR beside it)");
+  }
+
   const SweepScene sweep = makeSweepScene(spec);
   if (!o.gltfPath.empty()) {
     writeSweepGltf(sweep, o.gltfPath);
@@ -279,7 +287,6 @@ int runSweep(int argc, char** argv) {
   for (std::uint32_t i = 0; i < sweep.values.size(); ++i) labels.push_back(sweepLabel(sweep, i));
   const ContactSheetLayout layout = layoutContactSheet(std::uint32_t(cells.size()), o.cell, title, labels);
   const Image sheet = composeContactSheet(layout, cells);
-  const std::string exrPath = std::filesystem::path(o.pngPath).replace_extension(".exr").string();
   writeExr(exrPath, sheet);
   writePng(o.pngPath, annotateContactSheet(layout, sheet, o.exposure, parseToneMap(o.toneMap), title, labels));
   std::printf("%s\nwrote %s (%ux%u)\nwrote %s\n", title.c_str(), o.pngPath.c_str(), layout.width, layout.height,

@@ -7,6 +7,7 @@
 #include "args.h"
 #include "commands.h"
 #include "scene/load_scene.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 #include "view/script.h"
 #include "view/viewer.h"
@@ -14,6 +15,10 @@
 namespace raylab {
 
 namespace {
+
+bool hasExtension(const std::string& path, const std::string& extension) {
+  return std::filesystem::path(path).extension() == extension;
+}
 
 void requireExtension(const std::string& option, const std::string& path, const std::string& extension) {
   if (std::filesystem::path(path).extension() != extension) {
@@ -37,6 +42,7 @@ int runView(int argc, char** argv) {
   std::string toneMap = "clamp";
   float targetMs = 50.0f;
   bool noAntialiasing = false;
+  bool allowOutsideUris = false;
   bool noPanel = false;
   std::optional<std::uint32_t> frames;
   ArgParser args("raylab view", "[SCENE] [options]",
@@ -48,6 +54,8 @@ int runView(int argc, char** argv) {
                  "drag look + WASD/QE fly, R/Home reset view, F1/Tab panel, F12/P screenshot, Esc quit.");
   args.positional("SCENE", &scenePath, "a .gltf or .glb file (default: the built-in scene)");
   args.option("--camera", &camera, "NAME", "the scene's camera to start from (default: its first)");
+  args.flag("--allow-outside-uris", &allowOutsideUris,
+            "let the scene's buffers and images lie outside its directory (only for files you trust)");
   args.option("--width", &o.width, "window width in pixels", 8, 16384);
   args.option("--height", &o.height, "window height in pixels", 8, 16384);
   args.option("--seed", &o.render.seed, "random seed of the sample pattern", 0, UINT32_MAX);
@@ -60,17 +68,20 @@ int runView(int argc, char** argv) {
   args.flag("--no-panel", &noPanel, "start with the panel hidden (F1 shows it)");
   args.option("--frames", &frames, "run N frames and exit; each frame without a change adds one full pass");
   args.option("--script", &scriptPath, "FILE", "replay camera and parameter changes (format in docs/viewer.md)");
-  args.option("--screenshot", &o.screenshot, "FILE.exr", "save the last frame's image (and a PNG beside it)");
-  args.option("--png", &o.screenshotPng, "FILE.png", "where --screenshot writes its PNG");
+  args.option("--screenshot", &o.screenshot, "FILE.exr|FILE.png",
+              "save the last frame's image: the EXR and the PNG, the one not named beside the other");
+  args.option("--png", &o.screenshotPng, "FILE.png", "where --screenshot FILE.exr writes its PNG");
   args.option("--capture-window", &o.windowCapture, "FILE.png",
               "save the last frame's window, panel included (with --frames)");
   args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(argc, argv)) return kExitOk;
 
-  if (!o.screenshot.empty()) requireExtension("--screenshot", o.screenshot, ".exr");
+  if (!o.screenshot.empty() && !hasExtension(o.screenshot, ".exr") && !hasExtension(o.screenshot, ".png")) {
+    throw Error("raylab view: --screenshot: '" + o.screenshot + "' must end in .exr or .png", kExitUsage);
+  }
   if (!o.screenshotPng.empty()) requireExtension("--png", o.screenshotPng, ".png");
-  if (!o.screenshotPng.empty() && o.screenshot.empty()) {
-    throw Error("raylab view: --png names the PNG of --screenshot, which is missing", kExitUsage);
+  if (!o.screenshotPng.empty() && !hasExtension(o.screenshot, ".exr")) {
+    throw Error("raylab view: --png names the PNG of --screenshot FILE.exr, which is missing", kExitUsage);
   }
   if (!o.windowCapture.empty()) requireExtension("--capture-window", o.windowCapture, ".png");
   if (!o.windowCapture.empty() && !frames) {
@@ -83,8 +94,30 @@ int runView(int argc, char** argv) {
   o.render.jitter = !noAntialiasing;
   o.panel = !noPanel;
   if (!scriptPath.empty()) o.script = loadScript(scriptPath);
+  // With --frames N the viewer exits after frame N - 1: a later event would never happen.
+  for (const ScriptEvent& event : o.script) {
+    if (frames && event.frame >= *frames) {
+      throw Error("raylab view: " + event.where + ": the event at frame " + std::to_string(event.frame) +
+                      " would never run: --frames " + std::to_string(*frames) + " ends after frame " +
+                      std::to_string(*frames - 1),
+                  kExitUsage);
+    }
+  }
+  // Every output is checked before the window opens, so that no session's work is lost to an unwritable path.
+  if (!o.screenshot.empty()) {
+    const ScreenshotPaths paths = screenshotPaths(o.screenshot, o.screenshotPng);
+    checkOutputPath(paths.exr, "--screenshot");
+    checkOutputPath(paths.png, "--screenshot");
+  }
+  if (!o.windowCapture.empty()) checkOutputPath(o.windowCapture, "--capture-window");
+  for (const ScriptEvent& event : o.script) {
+    if (event.action != ScriptAction::kScreenshot) continue;
+    const ScreenshotPaths paths = screenshotPaths(event.name, "");
+    checkOutputPath(paths.exr, event.where);
+    checkOutputPath(paths.png, event.where);
+  }
 
-  const Scene scene = loadScene({scenePath, camera});
+  const Scene scene = loadScene({scenePath, camera, allowOutsideUris});
   runViewer(scene, o);
   return kExitOk;
 }

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <new>
 #include <string>
 
 #include "commands.h"
@@ -20,7 +21,7 @@ constexpr Command kCommands[] = {
     {"render", raylab::runRender, "render a scene offscreen to OpenEXR and PNG"},
     {"sweep", raylab::runSweep, "render a parameter sweep of one BRDF model into a labelled contact sheet"},
     {"view", raylab::runView, "open an interactive window on a scene (X11; headless: xvfb-run -a)"},
-    {"brdf", raylab::runBrdf, "the BRDF library outside the renderer (brdf eval)"},
+    {"brdf", raylab::runBrdf, "the BRDF library outside the renderer (brdf eval, brdf albedo)"},
     {"bench", raylab::runBench, "benchmarks: kernel variants, ray throughput against Embree, the viewer"},
     {"devices", raylab::runDevices, "list Vulkan devices and whether raylab can use them"},
 };
@@ -34,6 +35,15 @@ void printUsage(std::FILE* stream) {
   std::fprintf(stream,
                "\n`raylab <command> --help` describes each command.\n"
                "Environment: RAYLAB_VALIDATION=1 enables the Vulkan validation layers.\n");
+}
+
+// One prefix per message: "raylab render: ...". Messages that already name their command keep their own.
+void printError(const char* command, const std::string& message) {
+  if (message.rfind("raylab ", 0) == 0) {
+    std::fprintf(stderr, "%s\n", message.c_str());
+  } else {
+    std::fprintf(stderr, "raylab %s: %s\n", command, message.c_str());
+  }
 }
 
 }  // namespace
@@ -58,10 +68,14 @@ int main(int argc, char** argv) {
     try {
       code = command.run(argc - 2, argv + 2);
     } catch (const raylab::Error& error) {
-      std::fprintf(stderr, "raylab: %s\n", error.what());
+      printError(command.name, error.what());
       code = error.exitCode();
+    } catch (const std::bad_alloc&) {
+      printError(command.name, "out of memory (the input asks for more than this machine has; see the limits in "
+                               "docs/scenes.md)");
+      code = raylab::kExitFailure;
     } catch (const std::exception& error) {
-      std::fprintf(stderr, "raylab: unexpected error: %s\n", error.what());
+      printError(command.name, std::string("unexpected error: ") + error.what());
       code = raylab::kExitFailure;
     }
     // With validation on, any message is a bug: make it impossible to miss.
