@@ -3,17 +3,18 @@
 #
 #   tools/setup.sh render   install, build, render the built-in scene to out/default.exr and out/default.png
 #   tools/setup.sh test     install, build, run the whole test suite (ctest)
+#   tools/setup.sh deps     install the Debian packages only (tools/fuzz.sh starts with it)
 #
 # Idempotent: with everything installed and built it only checks and rebuilds what changed.
 set -euo pipefail
 
 usage() {
-  sed -n '2,7p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
 }
 
 mode=${1:-}
 case "$mode" in
-  render|test) ;;
+  render|test|deps) ;;
   -h|--help) usage; exit 0 ;;
   *) usage >&2; exit 2 ;;
 esac
@@ -102,6 +103,7 @@ build() {
 }
 
 install_packages
+if [[ $mode == deps ]]; then exit 0; fi
 python_tools
 build
 case "$mode" in

@@ -13,14 +13,18 @@
 
 #include "brdf/sampling.glsl"
 
-// max(0, R.wo)^s with R the mirror of wi about n (symmetric in wi and wo). For unit vectors
-// 1 - R.wo = |R - wo|^2 / 2, which has no cancellation near the peak, where 1 - dot(R, wo) would lose all
-// accuracy that matters for s = 10^4; the power is exp(s log1p(-x)) for the reason in common.glsl.
+// max(0, R.wo)^s with R the mirror of wi about n (symmetric in wi and wo), in the form accurate in each
+// regime. Near the peak (R.wo >= 1/2), 1 - R.wo = |R - wo|^2 / 2 carries no cancellation, where 1 - dot(R, wo)
+// would lose all the accuracy that matters for s = 10^4; the power is exp(s log1p(-x)) for the reason in
+// common.glsl. Far from it the cosine itself is accurate and 1 - |R - wo|^2 / 2 is not: at R.wo = 1e-7 that
+// form is off by 20% or rounds to 0 (grazing wi or wo).
 float phongLobe(vec3 wi, vec3 wo, float s) {
-  const vec3 d = vec3(-wi.xy, wi.z) - wo;
-  const float x = 0.5 * dot(d, d);
-  if (x >= 1.0) return 0.0;  // R.wo <= 0
-  return exp(s * log1pAccurate(-x));
+  const vec3 r = vec3(-wi.xy, wi.z);
+  const float c = dot(r, wo);
+  if (!(c > 0.0)) return 0.0;
+  if (c < 0.5) return exp(s * log(c));
+  const vec3 d = r - wo;
+  return exp(s * log1pAccurate(-0.5 * dot(d, d)));
 }
 
 vec3 phongEval(vec3 rhoD, vec3 rhoS, float s, vec3 wi, vec3 wo) {
