@@ -419,7 +419,15 @@ class SceneBuilder {
     scene_.camera.position = glm::vec3(world[3]);
     // The viewer orbits and zooms about the target: put it on the scene, where the view ray meets it.
     scene_.camera.target = orbitPivot(scene_, scene_.camera.position, forward);
-    scene_.camera.up = glm::normalize(up);
+    // The viewer orbits about camera.up: for a camera without roll that must be the world's vertical, not the
+    // node's tilted +Y (a 180-degree orbit about that puts the camera under the floor). Both give the same
+    // image, as applyCamera only takes the plane of forward and up.
+    const glm::vec3 worldUp(0.0f, 1.0f, 0.0f);
+    const glm::vec3 side = glm::cross(forward, worldUp);
+    const bool unrolled = glm::length(side) > 1e-3f * glm::length(forward) &&
+                          std::abs(glm::dot(glm::normalize(side), glm::normalize(up))) < 1e-4f &&
+                          glm::dot(up, worldUp) > 0.0f;
+    scene_.camera.up = unrolled ? worldUp : glm::normalize(up);
     scene_.camera.yfov = float(yfov);
   }
 

@@ -105,12 +105,14 @@ std::uint32_t toneMapId(ToneMap toneMap) {
 }
 
 void blit(VkCommandBuffer cmd, const Display& display, VkImage source, glm::uvec2 sourceSize, VkImage target,
-          glm::uvec2 targetSize) {
+          glm::uvec2 targetSize, glm::ivec2 targetOffset = glm::ivec2(0)) {
   VkImageBlit region{};
   region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.srcOffsets[1] = {static_cast<std::int32_t>(sourceSize.x), static_cast<std::int32_t>(sourceSize.y), 1};
   region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.dstOffsets[1] = {static_cast<std::int32_t>(targetSize.x), static_cast<std::int32_t>(targetSize.y), 1};
+  region.dstOffsets[0] = {targetOffset.x, targetOffset.y, 0};
+  region.dstOffsets[1] = {targetOffset.x + static_cast<std::int32_t>(targetSize.x),
+                          targetOffset.y + static_cast<std::int32_t>(targetSize.y), 1};
   vkCmdBlitImage(cmd, source, kRestingLayout, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region,
                  display.linearBlit ? VK_FILTER_LINEAR : VK_FILTER_NEAREST);
 }
@@ -208,19 +210,29 @@ void recordPreviewToRefined(VkCommandBuffer cmd, const Display& display, glm::uv
 }
 
 void recordToSwapchain(VkCommandBuffer cmd, const Display& display, const DisplayImage& source, glm::uvec2 size,
-                       VkImage target, VkExtent2D targetExtent) {
+                       VkImage target, VkRect2D area) {
   // The acquire semaphore orders this after the presentation engine's read; UNDEFINED drops the old content.
   imageBarrier(cmd, target, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_ACCESS_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-  const glm::uvec2 targetSize(targetExtent.width, targetExtent.height);
+  if (area.offset.x > 0 || area.offset.y > 0) {
+    // The panel's strip: a dark grey the panel is drawn on, so that nothing undefined shows through.
+    const VkClearColorValue grey{{0.08f, 0.08f, 0.09f, 1.0f}};
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &grey, 1, &range);
+    imageBarrier(cmd, target, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                 VK_ACCESS_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+  }
+  const glm::uvec2 targetSize(area.extent.width, area.extent.height);
   if (size == targetSize) {
     VkImageCopy region{};
     region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.dstOffset = {area.offset.x, area.offset.y, 0};
     region.extent = {size.x, size.y, 1};
     vkCmdCopyImage(cmd, source.image, kRestingLayout, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   } else {
-    blit(cmd, display, source.image, size, target, targetSize);
+    blit(cmd, display, source.image, size, target, targetSize, glm::ivec2(area.offset.x, area.offset.y));
   }
 }
 

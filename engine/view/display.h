@@ -65,9 +65,10 @@ void recordDisplayRegions(VkCommandBuffer cmd, const Display& display, const Dis
                           const DisplaySettings& settings, std::span<const Tile> regions);
 // Stretches the preview's top-left `previewSize` texels over the whole refined image.
 void recordPreviewToRefined(VkCommandBuffer cmd, const Display& display, glm::uvec2 previewSize);
-// Puts the top-left `size` texels of `source` over the whole swapchain image (a copy at equal sizes, else a
-// stretching blit), leaving the swapchain image in TRANSFER_DST_OPTIMAL; its previous content is discarded.
+// Puts the top-left `size` texels of `source` over `area` of the swapchain image (a copy at equal sizes, else a
+// stretching blit) and clears the rest (the panel's strip), leaving the swapchain image in TRANSFER_DST_OPTIMAL;
+// its previous content is discarded.
 void recordToSwapchain(VkCommandBuffer cmd, const Display& display, const DisplayImage& source, glm::uvec2 size,
-                       VkImage target, VkExtent2D targetExtent);
+                       VkImage target, VkRect2D area);
 
 }  // namespace raylab

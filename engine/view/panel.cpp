@@ -99,11 +99,15 @@ std::string statusLine(const PanelStatus& status) {
 }
 
 PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selection, const PanelStatus& status,
-                     float sceneSize) {
+                     float sceneSize, float height) {
   PanelEdits edits;
-  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("raylab", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  // Docked to the left edge, beside the image: a floating panel hid a third of a 960x540 window.
+  ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), height), ImGuiCond_Always);
+  ImGui::Begin("raylab", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PushItemWidth(-130.0f);  // room for the longest label ("resolution scale") right of every widget
   ImGui::TextUnformatted(statusLine(status).c_str());
   if (status.compiling) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "compiling kernel...");
   if (!status.message.empty()) ImGui::TextWrapped("%s", status.message.c_str());
@@ -114,7 +118,7 @@ PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selec
       settings.maxDepth = static_cast<std::uint32_t>(depth);
       edits.maxDepth = true;
     }
-    ImGui::SliderFloat("exposure", &settings.exposure, -10.0f, 10.0f, "%.2f stops", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderFloat("exposure", &settings.exposure, -20.0f, 20.0f, "%.2f stops", ImGuiSliderFlags_AlwaysClamp);
     const char* curves[] = {"clamp", "reinhard", "aces"};
     int curve = static_cast<int>(settings.toneMap);
     if (ImGui::Combo("tone curve", &curve, curves, 3)) settings.toneMap = static_cast<ToneMap>(curve);
@@ -122,7 +126,8 @@ PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selec
                            ImGuiSliderFlags_AlwaysClamp)) {
       edits.resolutionScale = true;
     }
-    ImGui::SliderFloat("target frame", &settings.targetMs, 16.0f, 200.0f, "%.0f ms", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderFloat("target frame", &settings.targetMs, 5.0f, 1000.0f, "%.0f ms",
+                       ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
     if (ImGui::Button("reset view (R)")) edits.resetView = true;
     ImGui::SameLine();
     if (ImGui::Button("screenshot (F12)")) edits.screenshot = true;
@@ -168,6 +173,7 @@ PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selec
         "R / Home: reset view    F1 / Tab: panel\n"
         "F12 / P: screenshot     Esc: quit");
   }
+  ImGui::PopItemWidth();
   ImGui::End();
   return edits;
 }

@@ -49,8 +49,12 @@ struct PanelEdits {
 
 // Builds the panel for this ImGui frame: lists of the materials and lights, and editors for the selected
 // ones. `sceneSize` (the scene's diagonal) sets how fast lights drag.
+// The panel is a strip of this width on the window's left, the full height, beside the image (never over it).
+inline constexpr std::uint32_t kPanelWidth = 320;
+
+// Draws the panel in the strip [0, kPanelWidth) x [0, height); it scrolls when taller than the window.
 PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selection, const PanelStatus& status,
-                     float sceneSize);
+                     float sceneSize, float height);
 
 // "12 spp  640x360  48.2 ms/frame  3.1 Mrays/s" (also printed by automation runs).
 std::string statusLine(const PanelStatus& status);

@@ -66,10 +66,11 @@ glm::uvec2 fullExtentFor(VkExtent2D window, float scale, std::uint64_t maxPixels
 }
 
 struct Viewer {
-  Viewer(const Scene& s, const ViewerOptions& o) : options(o), scene(s) {}
+  Viewer(const Scene& s, const ViewerOptions& o) : options(o), scene(s), panelShown(o.panel) {}
 
   const ViewerOptions& options;
   Scene scene;  // edited live by the panel and the script
+  bool panelShown = true;  // the panel's strip beside the image (F1 toggles it)
   bool windowSystem = false;
   Instance instance;
   Window window;
@@ -92,7 +93,7 @@ struct Viewer {
   bool freshKernel = true;    // the pipeline's next dispatch is its first: the driver compiles, do not time it
   bool changed = true;        // the accumulation is stale: the next plan resets it
   bool swapchainStale = false;
-  bool extentStale = false;   // the resolution scale changed
+  bool extentStale = false;   // the resolution scale changed, or the panel was shown or hidden
   bool displayStale = true;   // the display images were cleared: the next display pass covers everything
   DisplaySettings lastDisplay;
   bool showingPreview = false;  // the window shows the preview image (else the refined one)
@@ -132,7 +133,9 @@ void openWindowAndDevice(Viewer& v) {
   InstanceOptions instanceOptions;
   instanceOptions.extensions = windowInstanceExtensions();
   v.instance = createInstance(instanceOptions);
-  v.window = createWindow(v.instance.handle, v.options.width, v.options.height, "raylab view: " + v.scene.name);
+  // --width and --height are the image's size; the panel's strip is added beside it.
+  v.window = createWindow(v.instance.handle, v.options.width + (v.options.panel ? kPanelWidth : 0u), v.options.height,
+                          "raylab view: " + v.scene.name);
   const std::vector<DeviceReport> reports = surveyDevices(v.instance, v.window.surface);
   const DeviceReport& chosen = reports[chooseDevice(reports, v.options.device)];
   if (!v.options.quiet) {
@@ -141,6 +144,13 @@ void openWindowAndDevice(Viewer& v) {
   v.device = createDevice(v.instance, chosen, v.window.surface);
   v.report.device = chosen.name;
   v.report.driver = chosen.driver;
+}
+
+// Where the image goes in the window: right of the panel's strip while the panel shows, else everywhere.
+VkRect2D imageArea(const Viewer& v) {
+  const VkExtent2D window = v.swapchain.extent;
+  const std::uint32_t left = v.panelShown ? std::min(kPanelWidth, window.width > 8 ? window.width - 8 : 0u) : 0u;
+  return {{std::int32_t(left), 0}, {window.width - left, window.height}};
 }
 
 void setUp(Viewer& v) {
@@ -152,7 +162,7 @@ void setUp(Viewer& v) {
   if (!v.options.windowCapture.empty() && !(v.swapchain.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT)) {
     throw Error("--capture-window: this window system does not let raylab read the window's images back");
   }
-  const glm::uvec2 full = fullExtentFor(v.swapchain.extent, v.settings.resolutionScale, maxImagePixels(v.device));
+  const glm::uvec2 full = fullExtentFor(imageArea(v).extent, v.settings.resolutionScale, maxImagePixels(v.device));
   RenderSettings renderSettings = v.options.render;
   renderSettings.width = full.x;
   renderSettings.height = full.y;
@@ -163,7 +173,7 @@ void setUp(Viewer& v) {
   bindAccumulation(v.device, v.display, v.renderer.accumulation.handle);
   submitAndWait(v.device, [&](VkCommandBuffer cmd) { recordClearDisplay(cmd, v.display); });
   v.ui = createUi(v.instance, v.device, v.window, v.swapchain);
-  v.ui.visible = v.options.panel;
+  v.ui.visible = v.panelShown;
   for (FrameSlot& slot : v.slots) slot = createFrameSlot(v.device);
 
   v.scheduler.settings.targetFrameSeconds = v.options.targetMs / 1000.0;
@@ -367,7 +377,9 @@ void applyScriptEvents(Viewer& v) {
         v.settings.maxDepth = static_cast<std::uint32_t>(event.value.x);
         break;
       case ScriptAction::kResize:
-        if (!requestWindowSize(v.window, std::uint32_t(event.value.x), std::uint32_t(event.value.y), kResizeTimeout)) {
+        // The size of the image, as --width/--height: the panel's strip comes on top.
+        if (!requestWindowSize(v.window, std::uint32_t(event.value.x) + (v.panelShown ? kPanelWidth : 0u),
+                               std::uint32_t(event.value.y), kResizeTimeout)) {
           throw Error(event.where + ": the window system did not resize the window within " +
                       std::to_string(int(kResizeTimeout)) + " s");
         }
@@ -388,7 +400,7 @@ void applyScriptEvents(Viewer& v) {
 }
 
 void updateFullExtent(Viewer& v) {
-  const glm::uvec2 full = fullExtentFor(v.swapchain.extent, v.settings.resolutionScale, maxImagePixels(v.device));
+  const glm::uvec2 full = fullExtentFor(imageArea(v).extent, v.settings.resolutionScale, maxImagePixels(v.device));
   v.extentStale = false;
   if (full == v.scheduler.fullExtent) return;
   waitForFrames(v);
@@ -418,7 +430,11 @@ void handleHotKeys(Viewer& v, const WindowInput& input) {
   if (uiWantsKeyboard()) return;
   for (int key : input.keysPressed) {
     if (key == GLFW_KEY_ESCAPE) requestWindowClose(v.window);
-    if (key == GLFW_KEY_F1 || key == GLFW_KEY_TAB) v.ui.visible = !v.ui.visible;
+    if (key == GLFW_KEY_F1 || key == GLFW_KEY_TAB) {
+      v.panelShown = !v.panelShown;
+      v.ui.visible = v.panelShown;
+      v.extentStale = true;  // the image takes the panel's strip, or gives it back
+    }
     if (key == GLFW_KEY_F12 || key == GLFW_KEY_P) {
       const std::string path = timestampedScreenshotPath();
       saveScreenshot(v, path, screenshotPaths(path, "").png);
@@ -534,9 +550,9 @@ void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, slot.timestamps, kDisplayEnd);
   const VkImage image = v.swapchain.images[imageIndex];
   if (v.showingPreview) {
-    recordToSwapchain(cmd, v.display, v.display.preview, v.previewSize, image, v.swapchain.extent);
+    recordToSwapchain(cmd, v.display, v.display.preview, v.previewSize, image, imageArea(v));
   } else {
-    recordToSwapchain(cmd, v.display, v.display.refined, v.display.extent, image, v.swapchain.extent);
+    recordToSwapchain(cmd, v.display, v.display.refined, v.display.extent, image, imageArea(v));
   }
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, slot.timestamps, kBlitEnd);
   recordUi(cmd, v.ui, v.swapchain, imageIndex);
@@ -580,7 +596,8 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
   PanelEdits edits;
   if (v.ui.visible) {
     updateStatus(v);
-    edits = drawPanel(v.scene, v.settings, v.selection, v.status, v.controller.sceneSize);
+    edits = drawPanel(v.scene, v.settings, v.selection, v.status, v.controller.sceneSize,
+                      float(v.swapchain.extent.height));
   }
   if (updateCamera(v.controller, v.camera, v.window, input, !uiWantsMouse(), !uiWantsKeyboard(),
                    now - v.lastCameraUpdate)) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "scene/gltf_test_support.h"
 #include "scene/scene.h"
 #include "util/error.h"
 #include "view/camera_controller.h"
@@ -320,6 +321,62 @@ TEST(CameraTest, PanZoomLookAndFly) {
   EXPECT_GT(camera.target.y, camera.position.y) << "positive pitch looks up";
   flyCamera(camera, {0.0f, 0.0f, 1.0f});
   EXPECT_NEAR(glm::length(camera.position - position), 1.0f, 1e-5f);
+}
+
+// Where `point` lands in the image of `camera` (aspect 16:9): normalised device coordinates, and whether it is
+// in front of the camera.
+std::pair<glm::vec2, bool> project(const Camera& camera, glm::vec3 point) {
+  const glm::vec3 w = glm::normalize(camera.target - camera.position);
+  const glm::vec3 u = glm::normalize(glm::cross(w, camera.up));
+  const glm::vec3 v = glm::cross(u, w);
+  const glm::vec3 d = point - camera.position;
+  const float depth = glm::dot(d, w);
+  const float tanHalf = std::tan(0.5f * camera.yfov);
+  return {glm::vec2(glm::dot(d, u) / (depth * tanHalf * 16.0f / 9.0f), glm::dot(d, v) / (depth * tanHalf)),
+          depth > 0.0f};
+}
+
+glm::vec3 boundsCentre(const Scene& scene) {
+  glm::vec3 low(1e30f), high(-1e30f);
+  for (const MeshInstance& instance : scene.instances) {
+    for (const glm::vec3& p : scene.meshes[instance.mesh].positions) {
+      const glm::vec3 world(instance.transform * glm::vec4(p, 1.0f));
+      low = glm::min(low, world);
+      high = glm::max(high, world);
+    }
+  }
+  for (const Sphere& sphere : scene.spheres) {
+    low = glm::min(low, sphere.center - sphere.radius);
+    high = glm::max(high, sphere.center + sphere.radius);
+  }
+  return 0.5f * (low + high);
+}
+
+// Issue 9: the orbit pivot was 1 unit in front of the glTF camera, so a 20 degree orbit slid every committed
+// scene out of frame and 90 degrees showed empty sky. It is now where the view ray meets the scene.
+TEST(CameraTest, OrbitingEveryCommittedSceneKeepsItsCentreInFrame) {
+  WarningCapture quiet;
+  for (const std::filesystem::path& file : assetFiles()) {
+    const Scene scene = loadGltfFile(file.string(), {});
+    const glm::vec3 centre = boundsCentre(scene);
+    for (float yaw : {90.0f, 180.0f, -90.0f}) {
+      Camera camera = scene.camera;
+      orbitCamera(camera, glm::radians(yaw), 0.0f);
+      const auto [ndc, inFront] = project(camera, centre);
+      EXPECT_TRUE(inFront && std::abs(ndc.x) < 1.0f && std::abs(ndc.y) < 1.0f)
+          << file.filename() << " orbited " << yaw << " degrees: the scene's centre is at (" << ndc.x << ", "
+          << ndc.y << ")" << (inFront ? "" : " behind the camera");
+      // Orbiting by yaw turns about the vertical: the camera keeps its height (it used to end under the floor).
+      EXPECT_NEAR(camera.position.y, scene.camera.position.y, 1e-3f * glm::length(scene.camera.position - centre))
+          << file.filename() << " orbited " << yaw << " degrees";
+    }
+    // The wheel zooms in proportion to the distance to the scene: ten steps in get much closer than 1 unit.
+    Camera camera = scene.camera;
+    const float before = glm::length(camera.target - camera.position);
+    for (int i = 0; i < 10; ++i) zoomCamera(camera, 0.9f, 1e-4f);
+    EXPECT_NEAR(glm::length(camera.target - camera.position), before * std::pow(0.9f, 10.0f), 1e-3f * before)
+        << file.filename();
+  }
 }
 
 }  // namespace
