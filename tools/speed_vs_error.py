@@ -20,7 +20,7 @@ process (lavapipe's worker threads included), which varies far less than wall-cl
 separately. Test renders use seed 0 and the reference seed 1000, so their samples are independent.
 
 Writes OUT/speed_vs_error.csv, OUT/summary.md (the table of docs/performance.md), OUT/run.json (machine and
-load) and one log-log plot per scene, OUT/speed_vs_error_<scene>.png, copied to docs/images/performance/.
+load) and one log-log plot per scene, OUT/speed_vs_error_<scene>.png (with --docs docs/images/performance, copied there to update the docs).
 
     .venv/bin/python tools/speed_vs_error.py              # about 7 minutes on 2 cores; 2.5 with cached references
     .venv/bin/python tools/speed_vs_error.py --quick      # smoke test: one scene, 64x36, two points
@@ -127,9 +127,10 @@ def parse_args() -> argparse.Namespace:
                                      epilog="\n\n".join(__doc__.split("\n\n")[1:]))
     parser.add_argument("--out", type=Path, default=None,
                         help="output directory (default out/speed_vs_error, or out/speed_vs_error_quick)")
-    parser.add_argument("--docs", type=Path, default=REPO / "docs" / "images" / "performance",
-                        help="where the plots are copied (default docs/images/performance)")
-    parser.add_argument("--no-docs", action="store_true", help="do not copy the plots into the docs")
+    parser.add_argument("--docs", type=Path, default=None, metavar="DIR",
+                        help="also copy the plots here (e.g. docs/images/performance, to update the tracked "
+                             "figures); by default they stay in --out")
+    parser.add_argument("--no-docs", action="store_true", help="(the default) do not copy the plots anywhere")
     parser.add_argument("--quick", action="store_true",
                         help="smoke test: cornell_box only, 64x36, 1 and 16 spp, a 256-spp reference, no docs")
     parser.add_argument("--scenes", default=None, metavar="LIST",
@@ -174,7 +175,7 @@ def settings_from(args: argparse.Namespace) -> Settings:
         raise ToolError("--width, --height: must be positive")
     spps = [2 ** k for k in range(int(math.log2(args.max_spp)) + 1)]
     out = (args.out or REPO / "out" / "speed_vs_error").resolve()
-    docs = None if args.no_docs else args.docs.resolve()
+    docs = None if args.no_docs or args.docs is None else args.docs.resolve()
     return Settings(args.width, args.height, spps, args.reference_spp, pick(args.scenes, SCENES, "scenes"),
                     pick(args.variants, VARIANTS, "variants"), out, docs, args.fresh_reference, args.clock)
 

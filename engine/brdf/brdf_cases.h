@@ -1,4 +1,4 @@
-// The CSV files of `raylab brdf eval` (../shared/BRDF_SPEC.md, "raylab brdf eval CSV"): cases in, values out.
+// The CSV files of `raylab brdf eval` (docs/brdf_contract.md, "raylab brdf eval CSV"): cases in, values out.
 //   in:  id,model,params,wi,wo,n,t       params "k=v;k=v" (RGB "r/g/b"), vectors "x y z"; glass may leave wo, t empty
 //   out: id,model,params,wi,wo,n,t,quantity,value
 // Parameters a row does not name take the defaults of engine/scene/material_params.cpp; a single number sets

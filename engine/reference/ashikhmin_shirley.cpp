@@ -1,4 +1,4 @@
-// Ashikhmin & Shirley, "An Anisotropic Phong BRDF Model", JGT 5(2), 2000 (../shared/BRDF_SPEC.md):
+// Ashikhmin & Shirley, "An Anisotropic Phong BRDF Model", JGT 5(2), 2000 (docs/brdf_contract.md):
 //   spec = sqrt((nu+1)(nv+1)) / (8 pi) (N.H)^k / ((H.L) max(cos_i, cos_o)) F,  F = Rs + (1 - Rs)(1 - H.L)^5,
 //   diff = 28 Rd / (23 pi) (1 - Rs) (1 - (1 - cos_i/2)^5) (1 - (1 - cos_o/2)^5),  f = spec + diff,
 // with k = (nu h_x^2 + nv h_y^2) / (h_x^2 + h_y^2) and H.L = V.H = (wo.h)/|h| (the contract's one definition).

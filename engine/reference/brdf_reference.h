@@ -1,5 +1,5 @@
 // The double-precision CPU reference of raylab's BRDF library, written from the formulas of
-// ../shared/BRDF_SPEC.md for clarity (never by including the GLSL: identical source could not catch a
+// docs/brdf_contract.md for clarity (never by including the GLSL: identical source could not catch a
 // wrong formula). Names follow the contract and the GLSL: wi towards the light, wo towards the viewer, both
 // in the local shading frame (z = shading normal), f excluding the cosine. The per-model functions and the
 // shared terms (D_Beckmann, F_Schlick, ...) are in models.h and terms.h; albedo.h integrates f cos_i.
@@ -73,7 +73,7 @@ double pdf(const Material& material, const dvec3& wi, const dvec3& wo);
 double specularProbability(const Material& material);
 
 // Smooth dielectric (model glass). eta = n_inside / n_outside, n the outward normal; wi in the same space as
-// n (not necessarily local). See ../shared/BRDF_SPEC.md for which side is which. eta = 1 is no interface at all:
+// n (not necessarily local). See docs/brdf_contract.md for which side is which. eta = 1 is no interface at all:
 // F_exact = 0, no TIR and refracted = -wi, even at cos_i = 0 where Snell's sin^2 reaches 1.
 struct GlassResult {
   double fresnelExact = 0.0;        // F_exact

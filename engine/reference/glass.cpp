@@ -1,4 +1,4 @@
-// The smooth dielectric of ../shared/BRDF_SPEC.md ("Glass"): which side the light comes from, mirror
+// The smooth dielectric of docs/brdf_contract.md ("Glass"): which side the light comes from, mirror
 // reflection, Snell refraction with total internal reflection, and three Fresnel factors (the exact
 // unpolarised one the renderer uses and two Schlick forms for comparison).
 #include <cmath>

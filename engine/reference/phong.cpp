@@ -1,4 +1,4 @@
-// Lambert, Phong and Blinn-Phong (../shared/BRDF_SPEC.md, "Formulas").
+// Lambert, Phong and Blinn-Phong (docs/brdf_contract.md, "Formulas").
 //   Lambert (1760): f = rho_d / pi.
 //   Phong, "Illumination for Computer Generated Pictures", CACM 18(6), 1975, in the energy-normalised form of
 //   Lewis, "Making Shaders More Physically Plausible", CGF 13(2), 1994: + rho_s (s+2)/(2 pi) max(0, R.wo)^s.

@@ -1,4 +1,4 @@
-// The shared terms of the BRDF models of ../shared/BRDF_SPEC.md, in double precision, each a small function
+// The shared terms of the BRDF models of docs/brdf_contract.md, in double precision, each a small function
 // that cites its source. Half-vector quantities take the unnormalised h = wi + wo of the contract and are
 // computed from its components, which is exact for any length of h and keeps full relative accuracy where
 // 1 - cos^2 would cancel (the peak of a sharp lobe).

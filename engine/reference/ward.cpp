@@ -1,4 +1,4 @@
-// The three Ward variants (../shared/BRDF_SPEC.md), f = rho_d/pi + rho_s spec with the exponent
+// The three Ward variants (docs/brdf_contract.md), f = rho_d/pi + rho_s spec with the exponent
 // e = ((h_x/ax)^2 + (h_y/ay)^2) / h_z^2 of the unnormalised h:
 //   ward: Ward, "Measuring and Modeling Anisotropic Reflection", SIGGRAPH 1992:
 //     spec = exp(-e) / (4 pi ax ay sqrt(cos_i cos_o));

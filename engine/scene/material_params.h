@@ -1,4 +1,4 @@
-// The models and parameters of ../shared/BRDF_SPEC.md by name: the one table that the CSV evaluator, glTF
+// The models and parameters of docs/brdf_contract.md by name: the one table that the CSV evaluator, glTF
 // materials, the viewer's sliders and `raylab sweep` all read, so that names, ranges and defaults agree.
 #pragma once
 

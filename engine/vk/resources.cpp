@@ -1,7 +1,9 @@
 #include "vk/resources.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
+#include <string>
 
 #include "util/error.h"
 #include "vk/commands.h"
@@ -48,7 +50,16 @@ Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags 
   allocateInfo.pNext = (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) ? &flags : nullptr;
   allocateInfo.allocationSize = requirements.size;
   allocateInfo.memoryTypeIndex = typeIndex;
-  VK_CHECK(vkAllocateMemory(device.handle, &allocateInfo, nullptr, &buffer.memory));
+  // Running out of memory is the input's size, not a bug: say what was being allocated and how much.
+  const VkResult allocated = vkAllocateMemory(device.handle, &allocateInfo, nullptr, &buffer.memory);
+  if (allocated == VK_ERROR_OUT_OF_DEVICE_MEMORY || allocated == VK_ERROR_OUT_OF_HOST_MEMORY) {
+    vkDestroyBuffer(device.handle, buffer.handle, nullptr);
+    char size[32];
+    std::snprintf(size, sizeof size, "%.1f MiB", double(requirements.size) / (1024.0 * 1024.0));
+    throw Error(std::string("the Vulkan device is out of memory: allocating ") + size + " for the " + name +
+                " buffer failed; render a smaller image or scene");
+  }
+  VK_CHECK(allocated);
   VK_CHECK(vkBindBufferMemory(device.handle, buffer.handle, buffer.memory, 0));
 
   const VkMemoryPropertyFlags properties = device.memory.memoryTypes[typeIndex].propertyFlags;

@@ -2,7 +2,7 @@
 // | parameter | range  | default | meaning                  |
 // |-----------|--------|---------|--------------------------|
 // | rho_d     | [0, 1] | 0.5     | diffuse reflectance, RGB |
-// Lambert, "Photometria", 1760. f = rho_d / pi (../shared/BRDF_SPEC.md); sampled cosine-weighted.
+// Lambert, "Photometria", 1760. f = rho_d / pi (docs/brdf_contract.md); sampled cosine-weighted.
 #ifndef RAYLAB_BRDF_LAMBERT_GLSL
 #define RAYLAB_BRDF_LAMBERT_GLSL
 

@@ -1,4 +1,4 @@
-// The half vector and the microfacet terms shared by the models, each from its components (../shared/BRDF_SPEC.md).
+// The half vector and the microfacet terms shared by the models, each from its components (docs/brdf_contract.md).
 //   D_Beckmann:        Beckmann & Spizzichino, "The Scattering of Electromagnetic Waves from Rough Surfaces",
 //                      1963, in the form of Cook & Torrance, "A Reflectance Model for Computer Graphics",
 //                      ACM TOG 1(1), 1982.

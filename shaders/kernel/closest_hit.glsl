@@ -1,4 +1,4 @@
-// closestHit of the direct integrator (equation 2 of the original slides, ../shared/BRDF_SPEC.md):
+// closestHit of the direct integrator (equation 2 of the original slides, docs/brdf_contract.md):
 //   L_o = delta L_i(x, w_r) + (1 - delta) sum_k f_r(w_k, w_o) E_k,   E_k = V_k I_k cos(theta_k) / r_k^2.
 // The delta term continues the path along the mirror direction. Glass splits into Fresnel-weighted
 // reflection and refraction (exact Fresnel, total internal reflection, optional tint). The raygen loops over

@@ -33,7 +33,7 @@ struct SphereRecord {
 };
 RL_CHECK_SIZE(SphereRecord, 20);
 
-// MaterialRecord.model: the BRDF models of ../shared/BRDF_SPEC.md.
+// MaterialRecord.model: the BRDF models of docs/brdf_contract.md.
 RL_CONST uint kModelLambert = 0;
 RL_CONST uint kModelPhong = 1;
 RL_CONST uint kModelBlinnPhong = 2;

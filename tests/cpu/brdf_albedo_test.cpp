@@ -1,5 +1,5 @@
 // Directional albedo a(wo) = integral of f(wi, wo) cos_i dwi for every model, by the lobe-following cubature of
-// engine/reference/albedo.h, and the facts of ../shared/BRDF_SPEC.md about it. The quadrature is first checked
+// engine/reference/albedo.h, and the facts of docs/brdf_contract.md about it. The quadrature is first checked
 // against closed forms, an independent integration over the plain hemisphere and its own refinement; then one
 // sweep over incident angles (up to 89.9 deg) and parameters (both ends of every range, rho_s = 1 and
 // rho_d = 0 for the specular facts) prints the table quoted by docs/brdfs.md and asserts:

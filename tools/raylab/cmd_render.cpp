@@ -149,11 +149,11 @@ int runRender(int argc, char** argv) {
   args.option("--camera", &o.camera, "NAME", "the glTF camera (or its node) to render from (default: the first)");
   args.flag("--allow-outside-uris", &o.allowOutsideUris,
             "let the scene's buffers and images lie outside its directory (only for files you trust)");
-  args.option("--width", &o.settings.width, "image width in pixels", 1, 16384);
-  args.option("--height", &o.settings.height, "image height in pixels", 1, 16384);
-  args.option("--spp", &o.spp, "samples per pixel", 1, 1u << 20);
-  args.option("--seed", &o.settings.seed, "random seed of the sample pattern", 0, UINT32_MAX);
-  args.option("--max-depth", &o.settings.maxDepth, "bounces after the primary hit (mirror, glass)", 0, 64);
+  args.option("--width", &o.settings.width, "image width in pixels (default 640)", 1, kMaxImageSide);
+  args.option("--height", &o.settings.height, "image height in pixels (default 360)", 1, kMaxImageSide);
+  args.option("--spp", &o.spp, "samples per pixel (default 16)", 1, 1u << 20);
+  args.option("--seed", &o.settings.seed, "random seed of the sample pattern (default 0)", 0, UINT32_MAX);
+  args.option("--max-depth", &o.settings.maxDepth, "bounces after the primary hit (mirror, glass; default 8)", 0, 64);
   args.flag("--no-aa", &o.noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
   args.option("--out", &o.exrPath, "FILE.exr",
               "write the linear image here (OpenEXR, float32 RGBA; default out/<scene>.exr)");
@@ -162,7 +162,7 @@ int runRender(int argc, char** argv) {
   args.flag("--no-png", &o.noPng, "write no PNG image");
   args.option("--report", &o.reportPath, "FILE.json",
               "also write the printed figures (times, rays, kernel, device) here as JSON, for scripts");
-  args.option("--exposure", &o.exposure, "exposure of the PNG in stops", -20.0f, 20.0f);
+  args.option("--exposure", &o.exposure, "exposure of the PNG in stops (default 0)", -20.0f, 20.0f);
   args.choice("--tonemap", &o.toneMap, {"clamp", "reinhard", "aces"}, "tone curve of the PNG (default clamp)");
   args.flag("--stats", &o.stats, "print which BRDF models and features the kernel was compiled with");
   args.flag("--all-features", &o.allFeatures, "compile every model and feature in, not only what the scene uses");
@@ -234,9 +234,10 @@ int runRender(int argc, char** argv) {
     const double raysPerSecond = steadySamples > 0 && steadySeconds > 0.0
                                      ? steadyRays / steadySeconds
                                      : renderer.rays.total() / std::max(firstSampleSeconds, 1e-9);
-    std::printf("scene: %s, %ux%u, %u spp, %llu triangles, %u spheres, %u lights\n", scene.name.c_str(),
+    std::printf("scene: %s, %ux%u, %u spp, %llu triangles, %u sphere%s, %u light%s\n", scene.name.c_str(),
                 o.settings.width, o.settings.height, o.spp,
-                static_cast<unsigned long long>(gpuScene.triangleCount), gpuScene.sphereCount, gpuScene.lightCount);
+                static_cast<unsigned long long>(gpuScene.triangleCount), gpuScene.sphereCount,
+                gpuScene.sphereCount == 1 ? "" : "s", gpuScene.lightCount, gpuScene.lightCount == 1 ? "" : "s");
     std::printf("acceleration structures: %s\n", formatSeconds(gpuScene.accelerationBuildSeconds).c_str());
     if (o.stats) std::printf("kernel: %s\n", describe(renderer.kernel).c_str());
     std::printf("first sample: %s (kernel compilation included)\n", formatSeconds(firstSampleSeconds).c_str());
