@@ -1,15 +1,23 @@
 #include "scene/load_scene.h"
 
 #include <filesystem>
+#include <new>
 
 #include "scene/default_scene.h"
 #include "scene/gltf_loader.h"
+#include "util/error.h"
 
 namespace raylab {
 
 Scene loadScene(const SceneRequest& request) {
   if (request.path.empty()) return makeDefaultScene(request.camera);
-  return loadGltfFile(request.path, GltfOptions{request.camera, request.allowOutsideUris});
+  try {
+    return loadGltfFile(request.path, GltfOptions{request.camera, request.allowOutsideUris});
+  } catch (const std::bad_alloc&) {
+    // The limits of docs/scenes.md should stop this first; if not, still say which file asked for too much.
+    throw Error(request.path + ": out of memory while loading the scene (it asks for more than this machine has; "
+                               "see the limits in docs/scenes.md)");
+  }
 }
 
 std::string sceneName(const SceneRequest& request) {
