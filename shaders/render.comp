@@ -18,6 +18,7 @@ layout(set = 0, binding = kBindingAccumulation, scalar) buffer Accumulation { ve
 layout(set = 0, binding = kBindingRayStats, scalar) buffer Stats { RayStats stats; };
 
 #include "kernel/closest_hit.glsl"
+#include "kernel/path_hit.glsl"
 #include "kernel/miss.glsl"
 
 // Continuations waiting their turn after glass split a path. Deeper splits than this are resolved by
@@ -79,8 +80,13 @@ vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
   while (true) {
     Hit hit;
     segments += 1u;
-    if (traceClosest(p.origin, p.direction, 0.0, kRayTMax, hit)) closestHit(hit, p);
-    else miss(p);
+    // The integrator is a specialization constant: each kernel keeps one of these calls.
+    if (traceClosest(p.origin, p.direction, 0.0, kRayTMax, hit)) {
+      if (kIntegrator == kIntegratorPath) closestHitPath(hit, p);
+      else closestHit(hit, p);
+    } else {
+      miss(p);
+    }
     if (p.split) keepSplit(p, pending, pendingCount);
     if (p.done) {
       if (pendingCount == 0u) break;
@@ -100,19 +106,31 @@ void main() {
   const uvec2 pixel = params.tileOrigin + gl_GlobalInvocationID.xy;
   const bool inside = pixel.x < params.width && pixel.y < params.height;
   uvec3 rays = uvec3(0u);
+  uint dropped = 0u;
 
   if (inside) {
     // Samples are added one at a time, in order, exactly as separate dispatches would add them: the sum, and
     // so the image, does not depend on how many samples a dispatch carries.
     const uint index = pixel.y * params.width + pixel.x;
     vec4 sum = accumulation[index];
-    for (uint i = 0u; i < params.sampleCount; ++i) sum += vec4(traceSample(pixel, params.sampleIndex + i, rays), 1.0);
+    for (uint i = 0u; i < params.sampleCount; ++i) {
+      const vec3 radiance = traceSample(pixel, params.sampleIndex + i, rays);
+      // A NaN or Inf sample is a defect somewhere: it is dropped (the pixel's count says how many it has) and
+      // counted, never spread over the image.
+      if (any(isnan(radiance)) || any(isinf(radiance))) {
+        dropped += 1u;
+      } else {
+        sum += vec4(radiance, 1.0);
+      }
+    }
     accumulation[index] = sum;
   }
 
   // One atomic per subgroup rather than per invocation.
   const uvec3 total = subgroupAdd(rays);
+  const uint totalDropped = subgroupAdd(dropped);
   if (subgroupElect()) {
+    if (totalDropped > 0u) atomicAdd(stats.droppedSamples, totalDropped);
     atomicAdd(stats.primaryRays, total.x);
     atomicAdd(stats.shadowRays, total.y);
     atomicAdd(stats.secondaryRays, total.z);

@@ -12,12 +12,21 @@ struct KernelFeatures {
   std::uint32_t models = 0;    // bit (1 << gpu::kModel...) per model compiled in
   std::uint32_t features = 0;  // gpu::kFeature... bits
   bool schlickFresnel = false; // glass uses Schlick's approximation instead of the exact Fresnel term
+  std::uint32_t integrator = 0;  // gpu::kIntegrator...; each integrator is its own kernel
 
   bool operator==(const KernelFeatures&) const = default;
 };
 
 // Exactly what `scene` uses: unused models, glass, the mirror loop, absent light types and textures compile away.
 KernelFeatures featuresOf(const Scene& scene);
+
+enum class IntegratorChoice { kAuto, kSlides, kPath };
+
+// The integrator a render runs: `auto` takes the path tracer when the scene has an emissive surface (the
+// slides' equation cannot show one lighting anything), the slides' integrator otherwise.
+std::uint32_t chooseIntegrator(const Scene& scene, IntegratorChoice choice);
+// "slides" or "path".
+const char* integratorName(std::uint32_t integrator);
 
 // Everything compiled in (the unspecialised kernel, for comparisons and for the viewer's model switching).
 KernelFeatures allFeatures();

@@ -22,6 +22,7 @@ SpecializationConstants specializationFor(const KernelFeatures& kernel) {
   SpecializationConstants constants;
   constants.set(gpu::kSpecEnabledModels, kernel.models).set(gpu::kSpecFeatures, kernel.features);
   constants.set(gpu::kSpecGlassFresnel, kernel.schlickFresnel ? gpu::kFresnelSchlick : gpu::kFresnelExact);
+  constants.set(gpu::kSpecIntegrator, kernel.integrator);
   return constants;
 }
 
@@ -224,6 +225,7 @@ void collectRayStats(Renderer& renderer) {
   renderer.rays.primary += stats->primaryRays;
   renderer.rays.shadow += stats->shadowRays;
   renderer.rays.secondary += stats->secondaryRays;
+  renderer.droppedSamples += stats->droppedSamples;
 }
 
 Image readImage(const Device& device, const Renderer& renderer) {

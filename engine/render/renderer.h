@@ -44,6 +44,7 @@ struct Renderer {
   gpu::FrameParams params{};
   std::uint32_t samplesDone = 0;
   RayCounts rays;
+  std::uint64_t droppedSamples = 0;  // NaN or Inf samples the kernel left out (0 on every committed scene)
 };
 
 // The most pixels an image may have on `device`: its accumulation buffer must fit one storage-buffer binding.

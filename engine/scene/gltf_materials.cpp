@@ -41,6 +41,35 @@ float checkedFactor(double value, double low, double high, const std::string& wh
   return static_cast<float>(value);
 }
 
+// L_e = emissiveFactor x KHR_materials_emissive_strength.emissiveStrength (default 1), linear RGB. Checked as the
+// float the kernel uses: finite, >= 0, and at most kMaxEmission so that shading stays finite.
+glm::vec3 emittedRadiance(const tinygltf::Material& material, const json& materialJson, const std::string& where) {
+  constexpr double kMaxEmission = 1e20;
+  glm::dvec3 factor(0.0);
+  if (material.emissiveFactor.size() == 3) {
+    factor = glm::dvec3(material.emissiveFactor[0], material.emissiveFactor[1], material.emissiveFactor[2]);
+  }
+  double strength = 1.0;
+  if (const json* value = findPath(materialJson, {"extensions", "KHR_materials_emissive_strength", "emissiveStrength"})) {
+    if (!value->is_number()) throw Error(where + ": emissiveStrength must be a number, found " + quote(*value));
+    strength = value->get<double>();
+  }
+  if (!(strength >= 0.0) || !std::isfinite(strength)) {
+    throw Error(where + ": emissiveStrength " + formatNumber(strength) + " must be finite and >= 0");
+  }
+  for (int c = 0; c < 3; ++c) {
+    if (!(factor[c] >= 0.0) || !std::isfinite(factor[c])) {
+      throw Error(where + ": emissiveFactor must be three finite numbers >= 0");
+    }
+  }
+  const glm::dvec3 radiance = factor * strength;
+  if (std::max({radiance.r, radiance.g, radiance.b}) > kMaxEmission) {
+    throw Error(where + ": emissiveFactor x emissiveStrength = " + formatNumber(std::max({radiance.r, radiance.g, radiance.b})) +
+                " is over raylab's limit of 1e+20 (docs/scenes.md, Limits)");
+  }
+  return glm::vec3(radiance);
+}
+
 std::uint32_t wrapMode(int glMode, const std::string& where) {
   switch (glMode) {
     case TINYGLTF_TEXTURE_WRAP_REPEAT: return gpu::kWrapRepeat;
@@ -255,10 +284,8 @@ void convertMaterials(Document& document, Scene& scene) {
         material.occlusionTexture.index >= 0 || material.emissiveTexture.index >= 0) {
       document.ignore("textures other than base colour");
     }
-    const bool emissive = material.emissiveFactor.size() == 3 &&
-                          (material.emissiveFactor[0] > 0.0 || material.emissiveFactor[1] > 0.0 ||
-                           material.emissiveFactor[2] > 0.0);
-    if (emissive) document.ignore("emission");
+    record.emission = emittedRadiance(material, materialJson, document.label + ": " +
+                                                                  describe("material", int(i), material.name));
     if (!material.alphaMode.empty() && material.alphaMode != "OPAQUE") {
       document.ignore("alpha modes MASK and BLEND (surfaces are opaque)");
     }

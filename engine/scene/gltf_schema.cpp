@@ -59,12 +59,14 @@ const Shape kOcclusionTextureInfo{{required(index("index")), index("texCoord"), 
 const Shape kPbr{{numbers("baseColorFactor", 4), object("baseColorTexture", kTextureInfo), number("metallicFactor"),
                   number("roughnessFactor"), object("metallicRoughnessTexture", kTextureInfo)}};
 const Shape kIor{{number("ior")}};
+const Shape kEmissiveStrength{{number("emissiveStrength")}};
 const Shape kTransmission{{number("transmissionFactor"), object("transmissionTexture", kTextureInfo)}};
 const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                        object("normalTexture", kNormalTextureInfo), object("occlusionTexture", kOcclusionTextureInfo),
                        object("emissiveTexture", kTextureInfo), numbers("emissiveFactor", 3), string("alphaMode"),
                        number("alphaCutoff"), boolean("doubleSided")},
-                      {object("KHR_materials_ior", kIor), object("KHR_materials_transmission", kTransmission)}};
+                      {object("KHR_materials_ior", kIor), object("KHR_materials_emissive_strength", kEmissiveStrength),
+                       object("KHR_materials_transmission", kTransmission)}};
 const Shape kPrimitive{{required(indexMap("attributes")), index("indices"), index("material"), index("mode"),
                         indexMaps("targets")}};
 const Shape kMesh{{string("name"), required(objects("primitives", kPrimitive)), numbers("weights")}};

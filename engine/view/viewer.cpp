@@ -43,7 +43,8 @@ constexpr double kIdleWaitSeconds = 0.5;    // idle: the status line still refre
 constexpr double kBuildPollSeconds = 0.05;  // a kernel build's end is noticed within this
 
 bool covers(const KernelFeatures& kernel, const KernelFeatures& needed) {
-  return (needed.models & ~kernel.models) == 0 && (needed.features & ~kernel.features) == 0;
+  return (needed.models & ~kernel.models) == 0 && (needed.features & ~kernel.features) == 0 &&
+         needed.integrator == kernel.integrator;
 }
 
 std::string timestampedScreenshotPath() {
@@ -71,6 +72,7 @@ struct Viewer {
   const ViewerOptions& options;
   Scene scene;  // edited live by the panel and the script
   bool panelShown = true;  // the panel's strip beside the image (F1 toggles it)
+  std::uint32_t integrator = chooseIntegrator(scene, options.integrator);
   bool windowSystem = false;
   Instance instance;
   Window window;
@@ -146,6 +148,14 @@ void openWindowAndDevice(Viewer& v) {
   v.report.driver = chosen.driver;
 }
 
+// What the scene needs compiled in, with the integrator chosen once at start-up (switching it would change
+// what every pixel means mid-refinement).
+KernelFeatures neededKernel(const Viewer& v) {
+  KernelFeatures needed = featuresOf(v.scene);
+  needed.integrator = v.integrator;
+  return needed;
+}
+
 // Where the image goes in the window: right of the panel's strip while the panel shows, else everywhere.
 VkRect2D imageArea(const Viewer& v) {
   const VkExtent2D window = v.swapchain.extent;
@@ -166,8 +176,9 @@ void setUp(Viewer& v) {
   RenderSettings renderSettings = v.options.render;
   renderSettings.width = full.x;
   renderSettings.height = full.y;
+  v.needed = neededKernel(v);
+  renderSettings.kernel = v.needed;
   v.renderer = createRenderer(v.device, v.gpuScene, v.scene, renderSettings);
-  v.needed = featuresOf(v.scene);
 
   v.display = createDisplay(v.device, v.swapchain.format, full);
   bindAccumulation(v.device, v.display, v.renderer.accumulation.handle);
@@ -313,8 +324,9 @@ void installKernel(Viewer& v) {
 // the viewer traces nothing and keeps showing the last image.
 void ensureKernel(Viewer& v) {
   if (covers(v.renderer.kernel, v.needed) || v.build) return;  // a running build is re-checked when it lands
-  const KernelFeatures wanted{v.renderer.kernel.models | v.needed.models,
-                              v.renderer.kernel.features | v.needed.features};
+  KernelFeatures wanted = v.needed;
+  wanted.models |= v.renderer.kernel.models;
+  wanted.features |= v.renderer.kernel.features;
   v.build = startKernelBuild(v.instance, v.device, v.renderer, wanted);
   if (v.automation) installKernel(v);  // automation is deterministic: the frame waits for its kernel
 }
@@ -324,7 +336,7 @@ void uploadSceneEdits(Viewer& v, bool materials, bool lights) {
   waitForFrames(v);  // on a CPU device the buffers are host memory that running frames read
   if (materials) updateMaterials(v.device, v.gpuScene, v.scene.materials);
   if (lights) updateLights(v.device, v.gpuScene, v.scene.lights);
-  v.needed = featuresOf(v.scene);
+  v.needed = neededKernel(v);
   ensureKernel(v);
   v.changed = true;
 }

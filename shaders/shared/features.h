@@ -11,6 +11,7 @@ RL_NAMESPACE_BEGIN
 RL_CONST uint kSpecEnabledModels = 0;  // bit (1 << kModel...) per model compiled in
 RL_CONST uint kSpecFeatures = 1;       // kFeature... bits
 RL_CONST uint kSpecGlassFresnel = 2;   // kFresnel...: which Fresnel term glass uses
+RL_CONST uint kSpecIntegrator = 3;     // kIntegrator...: which estimator the raygen runs
 
 // kSpecFeatures bits.
 RL_CONST uint kFeatureGlass = 1;             // glass materials: reflection and refraction
@@ -23,6 +24,10 @@ RL_CONST uint kFeatureTextures = 32;         // base-colour textures
 // kSpecGlassFresnel values. Exact is the contract's; Schlick trades accuracy for speed (docs/performance.md).
 RL_CONST uint kFresnelExact = 0;
 RL_CONST uint kFresnelSchlick = 1;
+
+// kSpecIntegrator values (docs/integrators.md).
+RL_CONST uint kIntegratorSlides = 0;  // equation 2 of the slides: delta-weighted mirror plus direct light
+RL_CONST uint kIntegratorPath = 1;    // the rendering equation: a path tracer
 
 RL_CONST uint kAllModels = 0xFFFFFFFFu;
 RL_CONST uint kAllFeatures = 0xFFFFFFFFu;

@@ -34,7 +34,7 @@ struct RayStats {
   uint primaryRays;
   uint shadowRays;
   uint secondaryRays;
-  uint reserved;
+  uint droppedSamples;  // NaN or Inf samples left out of the image
 };
 RL_CHECK_SIZE(RayStats, 16);
 

@@ -61,8 +61,10 @@ struct MaterialRecord {
   float nv;     // ashikhmin_shirley exponent along the bitangent
   int baseColorTexture;  // -1: none; else multiplies rhoD
   uint reserved;
+  vec3 emission;  // emitted radiance L_e (linear RGB) from the front face; the path integrator shows it
+  uint reserved2;
 };
-RL_CHECK_SIZE(MaterialRecord, 80);
+RL_CHECK_SIZE(MaterialRecord, 96);
 
 // TextureRecord.wrap: bits 0-1 for s (u), bits 2-3 for t (v), as glTF samplers define them.
 RL_CONST uint kWrapRepeat = 0;

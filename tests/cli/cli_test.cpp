@@ -45,6 +45,7 @@ TEST(CliTest, UsageErrorsExitTwoAndNameTheOption) {
       {{"render", "--height"}, "--height"},
       {{"render", "--out", "image.png"}, "--out"},
       {{"render", "--tonemap", "filmic"}, "--tonemap"},
+      {{"render", "--integrator", "bidir"}, "--integrator"},
       {{"frobnicate"}, "frobnicate"},
       {{}, "Usage"},
   };

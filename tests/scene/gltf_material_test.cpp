@@ -254,5 +254,27 @@ TEST(GltfMaterial, AnUndecodableImageIsAnError) {
   EXPECT_NE(error.find("image"), std::string::npos) << error;
 }
 
+// emissiveFactor x KHR_materials_emissive_strength is the emitted radiance; bad values name the material.
+TEST(GltfMaterial, EmissionIsTheFactorTimesTheStrength) {
+  GltfBuilder b;
+  const int material = b.addMaterial({{"name", "lamp"},
+                                      {"emissiveFactor", {1.0, 0.5, 0.25}},
+                                      {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}}});
+  b.doc()["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+  b.addNode({{"mesh", b.addQuad(material)}});
+  const Scene scene = b.load();
+  EXPECT_EQ(scene.materials[0].record.emission, glm::vec3(4.0f, 2.0f, 1.0f));
+
+  for (const json& strength : {json(-1.0), json(1e30)}) {
+    GltfBuilder bad;
+    const int m = bad.addMaterial({{"emissiveFactor", {1.0, 1.0, 1.0}},
+                                   {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", strength}}}}}});
+    bad.addNode({{"mesh", bad.addQuad(m)}});
+    const std::string error = errorOf([&] { bad.load(); });
+    EXPECT_NE(error.find("test: material 0"), std::string::npos) << error;
+    EXPECT_NE(error.find("emissive"), std::string::npos) << error;
+  }
+}
+
 }  // namespace
 }  // namespace raylab::test

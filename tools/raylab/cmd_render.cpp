@@ -43,8 +43,15 @@ struct RenderOptions {
   bool stats = false;
   bool allFeatures = false;
   std::string fresnel = "exact";
+  std::string integrator = "auto";
   std::optional<std::uint32_t> device;
 };
+
+IntegratorChoice parseIntegrator(const std::string& name) {
+  if (name == "slides") return IntegratorChoice::kSlides;
+  if (name == "path") return IntegratorChoice::kPath;
+  return IntegratorChoice::kAuto;
+}
 
 ToneMap parseToneMap(const std::string& name) {
   if (name == "aces") return ToneMap::kAces;
@@ -73,6 +80,8 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
       {"seed", o.settings.seed},
       {"max_depth", o.settings.maxDepth},
       {"fresnel", o.fresnel},
+      {"integrator", integratorName(renderer.kernel.integrator)},
+      {"dropped_samples", renderer.droppedSamples},
       {"all_features", o.allFeatures},
       {"kernel", describe(renderer.kernel)},
       {"device", device.report.name},
@@ -164,6 +173,9 @@ int runRender(int argc, char** argv) {
               "also write the printed figures (times, rays, kernel, device) here as JSON, for scripts");
   args.option("--exposure", &o.exposure, "exposure of the PNG in stops (default 0)", -20.0f, 20.0f);
   args.choice("--tonemap", &o.toneMap, {"clamp", "reinhard", "aces"}, "tone curve of the PNG (default clamp)");
+  args.choice("--integrator", &o.integrator, {"auto", "slides", "path"},
+              "slides: equation 2 of the slides (mirror weight, direct light); path: the rendering equation; "
+              "auto (default): path when the scene has an emissive surface");
   args.flag("--stats", &o.stats, "print which BRDF models and features the kernel was compiled with");
   args.flag("--all-features", &o.allFeatures, "compile every model and feature in, not only what the scene uses");
   args.choice("--fresnel", &o.fresnel, {"exact", "schlick"},
@@ -193,6 +205,7 @@ int runRender(int argc, char** argv) {
   Scene scene = loadScene(request);
   KernelFeatures kernel = o.allFeatures ? allFeatures() : featuresOf(scene);
   kernel.schlickFresnel = o.fresnel == "schlick";
+  kernel.integrator = chooseIntegrator(scene, parseIntegrator(o.integrator));
   o.settings.kernel = kernel;
 
   GpuSession gpu(o.device);
@@ -240,6 +253,9 @@ int runRender(int argc, char** argv) {
                 gpuScene.sphereCount == 1 ? "" : "s", gpuScene.lightCount, gpuScene.lightCount == 1 ? "" : "s");
     std::printf("acceleration structures: %s\n", formatSeconds(gpuScene.accelerationBuildSeconds).c_str());
     if (o.stats) std::printf("kernel: %s\n", describe(renderer.kernel).c_str());
+    if (o.stats || renderer.droppedSamples > 0) {
+      std::printf("dropped samples (NaN or Inf): %llu\n", static_cast<unsigned long long>(renderer.droppedSamples));
+    }
     std::printf("first sample: %s (kernel compilation included)\n", formatSeconds(firstSampleSeconds).c_str());
     std::printf("per sample: %s\n", formatSeconds(perSample).c_str());
     std::printf("rays: %s (primary %s, shadow %s, secondary %s), %s\n",

@@ -40,6 +40,7 @@ int runView(int argc, char** argv) {
   std::string camera;
   std::string scriptPath;
   std::string toneMap = "clamp";
+  std::string integrator = "auto";
   float targetMs = 50.0f;
   bool noAntialiasing = false;
   bool allowOutsideUris = false;
@@ -60,6 +61,8 @@ int runView(int argc, char** argv) {
   args.option("--height", &o.height, "window height in pixels", 8, 16384);
   args.option("--seed", &o.render.seed, "random seed of the sample pattern", 0, UINT32_MAX);
   args.option("--max-depth", &o.render.maxDepth, "bounces after the primary hit (mirror, glass)", 0, 64);
+  args.choice("--integrator", &integrator, {"auto", "slides", "path"},
+              "as raylab render: slides, path, or auto (default: path when the scene has an emissive surface)");
   args.flag("--no-aa", &noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
   args.option("--target-ms", &targetMs, "frame time to hold while the view changes", 5.0f, 1000.0f);
   args.option("--spp-limit", &o.sppLimit, "stop refining at this many samples per pixel; 0: never", 0, 1u << 20);
@@ -92,6 +95,9 @@ int runView(int argc, char** argv) {
   o.targetMs = targetMs;
   o.toneMap = parseToneMap(toneMap);
   o.render.jitter = !noAntialiasing;
+  o.integrator = integrator == "path" ? IntegratorChoice::kPath
+                 : integrator == "slides" ? IntegratorChoice::kSlides
+                                          : IntegratorChoice::kAuto;
   o.panel = !noPanel;
   if (!scriptPath.empty()) o.script = loadScript(scriptPath);
   // With --frames N the viewer exits after frame N - 1: a later event would never happen.

@@ -1,0 +1,103 @@
+// closestHit of the path integrator: one vertex of a path tracer that solves the rendering equation
+// (Kajiya 1986, equation 1 of the slides):
+//   L_o(x, wo) = L_e(x, wo) + integral f(wi, wo) L_i(x, wi) cos(theta_i) dwi.
+// At each vertex: the emission seen along the path, next event estimation of the punctual lights (delta
+// lights, so no MIS is needed for them), then one continuation chosen by the BSDF's own sampler
+// (bsdfSample), with the mirror weight delta as a mixture f = (1 - delta) f_r + delta mirror and glass as a
+// smooth dielectric whose branch is chosen with probability equal to its Fresnel weight. Emitters and the
+// background reached by a continuation are counted at full weight: the only estimator of them here is BSDF
+// sampling. Russian roulette after kRouletteDepth bounces keeps the estimator unbiased (docs/integrators.md).
+// Depth: --max-depth D allows D + 1 continuations after the camera ray, so a path has at most D + 2 segments
+// (Mitsuba 3's max_depth = D + 2); D = 0 is direct lighting only.
+#ifndef RAYLAB_KERNEL_PATH_HIT_GLSL
+#define RAYLAB_KERNEL_PATH_HIT_GLSL
+
+#include "kernel/closest_hit.glsl"
+
+// Bounces before Russian roulette may end a path; after them a path survives with probability equal to its
+// largest throughput channel (at most kRouletteMax), and survivors are weighted up by its inverse.
+const uint kRouletteDepth = 3u;
+const float kRouletteMax = 0.95;
+
+// Sets up the continuation (origin, direction, weight) or ends the path; applies Russian roulette.
+void continueOrEnd(inout Payload p, vec3 origin, vec3 direction, vec3 throughput) {
+  p.done = true;
+  if (!(maxComponent(throughput) > 0.0)) return;
+  if (p.depth >= kRouletteDepth) {
+    const float survive = min(maxComponent(throughput), kRouletteMax);
+    if (rngNext4(p.rng).x >= survive) return;
+    throughput /= survive;
+  }
+  p.origin = origin;
+  p.direction = direction;
+  p.throughput = throughput;
+  p.depth += 1u;
+  p.done = false;
+}
+
+// Glass as a smooth dielectric: reflect with probability delta + (1 - delta) F, else refract (weight tint on
+// the way in). The probabilities equal the weights, so the throughput keeps its value.
+void glassVertex(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
+  const GlassEvent event = glassEvent(material.eta, wo, s.shadingNormal);
+  const float fresnel = kGlassFresnel == kFresnelSchlick ? event.fresnelSchlick : event.fresnelExact;
+  const float reflectProbability = event.tir ? 1.0 : material.delta + (1.0 - material.delta) * fresnel;
+  const bool entering = dot(wo, s.geometricNormal) > 0.0;
+  const vec3 ngOutside = s.geometricNormal;
+  const bool reflect = rngNext4(p.rng).x < reflectProbability;
+  const vec3 direction = reflect ? event.reflected : event.refracted;
+  // Each continuation leaves from the side of the geometric surface it travels into.
+  const vec3 side = (reflect == entering) ? ngOutside : -ngOutside;
+  if (!(dot(direction, side) > 0.0)) {
+    p.done = true;
+    return;
+  }
+  const vec3 weight = (!reflect && entering) ? material.tint : vec3(1.0);
+  continueOrEnd(p, offsetRayOrigin(s.position, side), direction, p.throughput * weight);
+}
+
+void closestHitPath(Hit hit, inout Payload p) {
+  const Surface s = surfaceAt(hit);
+  MaterialRecord material = materials[s.material];
+  const vec3 wo = -p.direction;
+  p.done = true;
+  p.split = false;
+
+  // Emission from the front face only, the side the counter-clockwise winding's normal points to.
+  if (s.frontFace) p.radiance += p.throughput * material.emission;
+  if (p.depth > params.maxDepth) return;  // the segment that reached here was the last one allowed
+
+  if (featureEnabled(kFeatureGlass) && material.model == kModelGlass) {
+    glassVertex(s, material, wo, p);
+    return;
+  }
+  if (featureEnabled(kFeatureTextures) && material.baseColorTexture >= 0) {
+    material.rhoD *= sampleTexture(uint(material.baseColorTexture), s.uv).rgb;
+  }
+  const vec3 ng = s.frontFace ? s.geometricNormal : -s.geometricNormal;
+  vec3 ns = s.frontFace ? s.shadingNormal : -s.shadingNormal;
+  if (dot(ns, wo) <= 0.0) ns = ng;
+  const ShadingFrame frame = makeShadingFrame(ns, s.tangent);
+  const vec3 woLocal = toLocal(frame, wo);
+  const float delta = featureEnabled(kFeatureMirror) ? material.delta : 0.0;
+
+  // Next event estimation of the punctual lights: the (1 - delta) f_r part of the mixture sees them.
+  if (delta < 1.0 && params.lightCount > 0u) {
+    p.radiance += p.throughput * (1.0 - delta) * directLighting(s.position, ng, frame, woLocal, material, p);
+  }
+
+  // The continuation: the mirror with probability delta, else a sample of f_r (weight f cos / pdf).
+  const vec4 u = rngNext4(p.rng);
+  if (u.w < delta) {
+    const vec3 mirror = reflect(p.direction, ns);
+    if (dot(mirror, ng) > 0.0) continueOrEnd(p, offsetRayOrigin(s.position, ng), mirror, p.throughput);
+    return;
+  }
+  const BsdfSample b = bsdfSample(material, woLocal, u.xyz);
+  if (!(b.pdf > 0.0)) return;
+  const vec3 wi = toWorld(frame, b.wi);
+  // A shading-normal sample below the geometric surface cannot leave this side.
+  if (!(dot(wi, ng) > 0.0)) return;
+  continueOrEnd(p, offsetRayOrigin(s.position, ng), wi, p.throughput * b.f * (b.wi.z / b.pdf));
+}
+
+#endif

@@ -1,0 +1,209 @@
+// The path integrator on scenes with known answers: a white furnace (a sphere of every energy-conserving model
+// under a uniform environment renders its directional albedo), a Lambert plane under a uniform sky, an
+// emitter seen directly, and D = 0 agreeing with the slides' direct integrator where both compute direct light.
+//
+// Statistics. Furnace pixels are grouped into four bins of cos(theta_o); in each bin the mean of (image -
+// albedo) over its pixels is compared with zero by a z-test whose standard error comes from the spread of those
+// differences (pixels are independent: the RNG is keyed by pixel). |z| < 4 per bin: a false-alarm rate of
+// 6.3e-5 per bin, about 1.5e-3 for the whole test; the seed is fixed, so a run is deterministic.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "reference/albedo.h"
+#include "render/kernel_features.h"
+#include "render/renderer.h"
+#include "scene/material_params.h"
+#include "scene/shapes.h"
+#include "shared/features.h"
+#include "support/analytic.h"
+#include "support/gpu_test.h"
+
+namespace raylab::test {
+namespace {
+
+class PathIntegratorTest : public GpuTest {};
+
+RenderSettings pathSettings(std::uint32_t size, std::uint32_t maxDepth, const Scene& scene) {
+  RenderSettings settings = pixelCentres(size, size);
+  settings.maxDepth = maxDepth;
+  KernelFeatures kernel = featuresOf(scene);
+  kernel.integrator = gpu::kIntegratorPath;
+  settings.kernel = kernel;
+  return settings;
+}
+
+// A unit sphere at the origin seen from +z, under a uniform environment of radiance `background`.
+Scene furnace(const gpu::MaterialRecord& material, glm::vec3 background) {
+  Scene scene;
+  scene.materials.push_back({"sphere", material});
+  scene.spheres.push_back({glm::vec3(0.0f), 1.0f, 0});
+  scene.background = background;
+  scene.camera.position = {0.0f, 0.0f, 4.0f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  scene.camera.yfov = glm::radians(35.0f);
+  return scene;
+}
+
+gpu::MaterialRecord material(const char* model, std::vector<std::pair<const char*, float>> params) {
+  gpu::MaterialRecord record = defaultRecord(findModel(model)->id);
+  for (const auto& [name, value] : params) setParam(record, name, glm::vec3(value), "test");
+  return record;
+}
+
+struct FurnaceCase {
+  const char* label;
+  gpu::MaterialRecord material;
+};
+
+// Every model that conserves energy, with reflectance 1 in the lobe that carries it; isotropic parameters, so
+// that the albedo depends on theta_o alone.
+std::vector<FurnaceCase> furnaceCases() {
+  return {
+      {"lambert", material("lambert", {{"rho_d", 1.0f}})},
+      {"phong s=20", material("phong", {{"rho_d", 0.0f}, {"rho_s", 1.0f}, {"s", 20.0f}})},
+      {"cooktorrance m=0.3", material("cooktorrance", {{"rho_d", 0.0f}, {"rho_s", 1.0f}, {"m", 0.3f}})},
+      {"ward_gmd 0.3", material("ward_gmd", {{"rho_d", 0.0f}, {"rho_s", 1.0f}, {"alpha_x", 0.3f}, {"alpha_y", 0.3f}})},
+      {"ashikhmin_shirley 100", material("ashikhmin_shirley", {{"Rd", 0.0f}, {"Rs", 1.0f}, {"nu", 100.0f}, {"nv", 100.0f}})},
+      {"lambert+cooktorrance", material("cooktorrance", {{"rho_d", 0.5f}, {"rho_s", 0.5f}, {"m", 0.1f}})},
+  };
+}
+
+TEST_F(PathIntegratorTest, WhiteFurnaceRendersEachModelsDirectionalAlbedo) {
+  constexpr std::uint32_t kSize = 40, kSpp = 128;
+  for (const FurnaceCase& c : furnaceCases()) {
+    const Scene scene = furnace(c.material, glm::vec3(1.0f));
+    const Image image = renderImage(device(), scene, pathSettings(kSize, 0, scene), kSpp);
+    const gpu::FrameParams params = frameFor(scene, kSize, kSize);
+    const reference::Material reference = reference::fromRecord(c.material);
+    // The reference albedo on a table in cos(theta_o), linear between entries: the albedo is smooth in cos, and
+    // the interpolation error (below 1e-5 here) is far under the noise the z-test resolves.
+    constexpr int kTable = 65;
+    std::vector<double> table(kTable);
+    for (int i = 0; i < kTable; ++i) {
+      const double cosine = std::max(1e-3, double(i) / (kTable - 1));
+      table[i] = reference::directionalAlbedo(reference, reference::directionFromAngles(std::acos(cosine), 0.0),
+                                              {1e-7, 20000}).value.g;
+    }
+    const auto albedoAt = [&](double cosine) {
+      const double at = std::clamp(cosine, 0.0, 1.0) * (kTable - 1);
+      const int i = std::min(kTable - 2, int(at));
+      return table[i] + (at - i) * (table[i + 1] - table[i]);
+    };
+    double sum[4] = {}, sumSquares[4] = {};
+    int count[4] = {};
+    double worstLambert = 0.0;
+    for (std::uint32_t y = 0; y < kSize; ++y) {
+      for (std::uint32_t x = 0; x < kSize; ++x) {
+        const Ray ray = pixelCenterRay(params, x, y);
+        double line = 0.0;
+        const auto t = hitSphere(ray, glm::dvec3(0.0), 1.0, &line);
+        if (!t || line > 0.97) continue;  // silhouette pixels: float hit points too close to grazing
+        const glm::dvec3 n = glm::normalize(ray.origin + *t * ray.direction);
+        const double cosO = glm::dot(n, -ray.direction);
+        // Isotropic lobes (below): the albedo depends on theta_o only, whatever tangent the sphere has.
+        const double measured = image.at(x, y).g;
+        const double d = measured - albedoAt(cosO);
+        const int bin = std::min(3, int(cosO * 4.0));
+        sum[bin] += d;
+        sumSquares[bin] += d * d;
+        count[bin] += 1;
+        if (std::string(c.label) == "lambert") worstLambert = std::max(worstLambert, std::abs(measured - 1.0));
+      }
+    }
+    for (int bin = 0; bin < 4; ++bin) {
+      if (count[bin] < 8) continue;
+      const double mean = sum[bin] / count[bin];
+      const double variance = std::max(sumSquares[bin] / count[bin] - mean * mean, 1e-14);
+      const double z = mean / std::sqrt(variance / count[bin]);
+      EXPECT_LT(std::abs(z), 4.0) << c.label << ", cos(theta_o) in [" << bin * 0.25 << ", " << (bin + 1) * 0.25
+                                  << "): mean error " << mean << " over " << count[bin] << " pixels";
+    }
+    // f cos / pdf is exactly rho_d for cosine-sampled Lambert: no noise at all.
+    if (std::string(c.label) == "lambert") EXPECT_LT(worstLambert, 1e-5);
+  }
+}
+
+// Lambert rho under a uniform sky of radiance L: every bounce ray escapes, so each sample is rho L exactly.
+TEST_F(PathIntegratorTest, LambertPlaneUnderAUniformSkyIsRhoTimesTheSky) {
+  Scene scene;
+  scene.materials.push_back({"ground", lambertMaterial(glm::vec3(0.5f, 0.25f, 0.75f))});
+  scene.meshes.push_back(makeGroundPlane(50.0f, 0.0f));
+  scene.instances.push_back({0, glm::mat4(1.0f), 0});
+  scene.background = glm::vec3(2.0f);
+  scene.camera.position = {0.0f, 2.0f, 3.0f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  for (std::uint32_t depth : {0u, 8u}) {
+    const Image image = renderImage(device(), scene, pathSettings(32, depth, scene), 4);
+    int plane = 0;
+    for (std::uint32_t y = 0; y < 32; ++y) {
+      for (std::uint32_t x = 0; x < 32; ++x) {
+        const glm::vec4 v = image.at(x, y);
+        if (v.g == 2.0f) continue;  // the sky itself
+        ++plane;
+        EXPECT_NEAR(v.r, 1.0f, 1e-5f);
+        EXPECT_NEAR(v.g, 0.5f, 1e-5f);
+        EXPECT_NEAR(v.b, 1.5f, 1e-5f);
+      }
+    }
+    EXPECT_GT(plane, 400) << "the camera does not see the plane";
+  }
+}
+
+TEST_F(PathIntegratorTest, AnEmitterSeenDirectlyShowsItsRadianceFromTheFrontOnly) {
+  gpu::MaterialRecord emitter = lambertMaterial(glm::vec3(0.0f));
+  emitter.emission = glm::vec3(2.0f, 1.0f, 0.5f);
+  Scene scene = furnace(emitter, glm::vec3(0.0f));
+  const Image image = renderImage(device(), scene, pathSettings(24, 4, scene), 2);
+  const gpu::FrameParams params = frameFor(scene, 24, 24);
+  int seen = 0;
+  for (std::uint32_t y = 0; y < 24; ++y) {
+    for (std::uint32_t x = 0; x < 24; ++x) {
+      const bool hits = hitSphere(pixelCenterRay(params, x, y), glm::dvec3(0.0), 1.0).has_value();
+      const glm::vec4 v = image.at(x, y);
+      if (!hits) {
+        EXPECT_EQ(v.r, 0.0f);
+        continue;
+      }
+      ++seen;
+      EXPECT_EQ(glm::vec3(v), emitter.emission) << x << ", " << y;
+    }
+  }
+  EXPECT_GT(seen, 50);
+
+  // From inside the sphere the camera sees its back faces, which emit nothing.
+  scene.camera.position = {0.0f, 0.0f, 0.5f};
+  const Image inside = renderImage(device(), scene, pathSettings(8, 4, scene), 1);
+  for (float value : inside.rgba) {
+    if (value != 1.0f) EXPECT_EQ(value, 0.0f);  // alpha is 1
+  }
+}
+
+// With punctual lights only, a black background, no mirror and no glass, both integrators compute direct
+// lighting at D = 0: the same next event estimation, so the same image to float precision.
+TEST_F(PathIntegratorTest, AtDepthZeroThePathIntegratorEqualsTheSlidesDirectLighting) {
+  Scene scene;
+  scene.materials.push_back({"ground", lambertMaterial(glm::vec3(0.6f))});
+  scene.materials.push_back({"ball", material("cooktorrance", {{"rho_d", 0.3f}, {"rho_s", 0.6f}, {"m", 0.2f}})});
+  scene.meshes.push_back(makeGroundPlane(20.0f, 0.0f));
+  scene.instances.push_back({0, glm::mat4(1.0f), 0});
+  scene.spheres.push_back({glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, 1});
+  scene.lights.push_back({"key", pointLight(glm::vec3(2.0f, 5.0f, 3.0f), glm::vec3(40.0f))});
+  scene.camera.position = {0.0f, 2.0f, 6.0f};
+  scene.camera.target = {0.0f, 0.8f, 0.0f};
+  RenderSettings slides = pixelCentres(48, 48);
+  slides.maxDepth = 0;
+  const Image direct = renderImage(device(), scene, slides, 1);
+  const Image path = renderImage(device(), scene, pathSettings(48, 0, scene), 1);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < direct.rgba.size(); ++i) {
+    worst = std::max(worst, double(std::abs(direct.rgba[i] - path.rgba[i])) / std::max(1e-3, double(direct.rgba[i])));
+  }
+  EXPECT_LT(worst, 1e-6) << "path at D = 0 and slides differ";
+}
+
+}  // namespace
+}  // namespace raylab::test
