@@ -72,6 +72,9 @@ vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
   p.done = false;
   p.split = false;
   p.shadowRays = 0u;
+  p.lastPosition = p.origin;
+  p.lastPdf = 0.0;
+  p.lastSpecular = true;
   Pending pending[kMaxPending];
   uint pendingCount = 0u;
   uint segments = 0u;

@@ -13,6 +13,7 @@ struct KernelFeatures {
   std::uint32_t features = 0;  // gpu::kFeature... bits
   bool schlickFresnel = false; // glass uses Schlick's approximation instead of the exact Fresnel term
   std::uint32_t integrator = 0;  // gpu::kIntegrator...; each integrator is its own kernel
+  std::uint32_t sampling = 0;    // gpu::kSampling...: MIS, or BSDF or light sampling alone (path integrator)
 
   bool operator==(const KernelFeatures&) const = default;
 };

@@ -23,6 +23,7 @@ SpecializationConstants specializationFor(const KernelFeatures& kernel) {
   constants.set(gpu::kSpecEnabledModels, kernel.models).set(gpu::kSpecFeatures, kernel.features);
   constants.set(gpu::kSpecGlassFresnel, kernel.schlickFresnel ? gpu::kFresnelSchlick : gpu::kFresnelExact);
   constants.set(gpu::kSpecIntegrator, kernel.integrator);
+  constants.set(gpu::kSpecSampling, kernel.sampling);
   return constants;
 }
 
@@ -91,6 +92,7 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   params.background = scene.background;
   params.maxDepth = settings.maxDepth;
   params.lightCount = gpuScene.lightCount;
+  params.emitterCount = gpuScene.emitterCount;
   params.flags = settings.jitter ? gpu::kFrameJitter : 0u;
   params.throughputCutoff = settings.throughputCutoff;
   applyCamera(params, scene.camera, settings.width, settings.height);

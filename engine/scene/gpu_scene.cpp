@@ -96,6 +96,44 @@ std::vector<gpu::LightRecord> lightRecords(std::span<const Light> lights) {
   return records;
 }
 
+float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+bool emits(const Scene& scene, std::uint32_t material) {
+  const glm::vec3 e = scene.materials[material].record.emission;
+  return e.r > 0.0f || e.g > 0.0f || e.b > 0.0f;
+}
+
+// The emitting triangles of one instance, in world space, appended to `emitters` (pmf and cdf come later).
+void addTriangleEmitters(const Scene& scene, const MeshInstance& instance, std::vector<gpu::EmitterRecord>& emitters) {
+  const Mesh& mesh = scene.meshes[instance.mesh];
+  const glm::vec3 radiance = scene.materials[instance.material].record.emission;
+  for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+    gpu::EmitterRecord e{};
+    e.kind = gpu::kEmitterTriangle;
+    e.p0 = glm::vec3(instance.transform * glm::vec4(mesh.positions[mesh.indices[i]], 1.0f));
+    e.p1 = glm::vec3(instance.transform * glm::vec4(mesh.positions[mesh.indices[i + 1]], 1.0f));
+    e.p2 = glm::vec3(instance.transform * glm::vec4(mesh.positions[mesh.indices[i + 2]], 1.0f));
+    e.radiance = radiance;
+    e.area = 0.5f * glm::length(glm::cross(e.p1 - e.p0, e.p2 - e.p0));
+    emitters.push_back(e);
+  }
+}
+
+// Emitters are picked in proportion to their power, luminance(L_e) x area (the factor pi of a Lambertian
+// emitter is common to all). The cdf is inclusive; the last entry is exactly 1.
+void normaliseEmitters(std::vector<gpu::EmitterRecord>& emitters) {
+  double total = 0.0;
+  for (const gpu::EmitterRecord& e : emitters) total += double(luminance(e.radiance)) * e.area;
+  double running = 0.0;
+  for (gpu::EmitterRecord& e : emitters) {
+    const double power = total > 0.0 ? double(luminance(e.radiance)) * e.area / total : 0.0;
+    running += power;
+    e.pmf = float(power);
+    e.cdf = float(running);
+  }
+  if (!emitters.empty()) emitters.back().cdf = 1.0f;
+}
+
 std::string mebibytes(std::uint64_t bytes) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
@@ -129,6 +167,11 @@ void checkDeviceLimits(const Device& device, const Scene& scene) {
   checkBuffer("texture texels (" + std::to_string(texels) + ")", texels * sizeof(std::uint32_t));
   checkBuffer("spheres (" + std::to_string(scene.spheres.size()) + ")",
               scene.spheres.size() * sizeof(gpu::SphereRecord));
+  std::uint64_t emitting = scene.spheres.size();
+  for (const MeshInstance& instance : scene.instances) {
+    if (emits(scene, instance.material)) emitting += scene.meshes[instance.mesh].indices.size() / 3;
+  }
+  checkBuffer("emitting primitives (" + std::to_string(emitting) + ")", emitting * sizeof(gpu::EmitterRecord));
   if (scene.spheres.size() > device.maxPrimitiveCount) {
     throw Error("the scene has " + std::to_string(scene.spheres.size()) +
                 " spheres, over this device's maxPrimitiveCount of " + std::to_string(device.maxPrimitiveCount));
@@ -209,9 +252,15 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
 
   std::vector<gpu::InstanceRecord> instanceRecords;
   std::vector<TlasInstance> tlasInstances;
+  std::vector<gpu::EmitterRecord> emitters;
   for (const MeshInstance& instance : scene.instances) {
     if (meshBlas[instance.mesh] == UINT32_MAX) continue;
     gpu::InstanceRecord record{};
+    record.firstEmitter = gpu::kNoEmitter;
+    if (emits(scene, instance.material)) {
+      record.firstEmitter = static_cast<std::uint32_t>(emitters.size());
+      addTriangleEmitters(scene, instance, emitters);
+    }
     record.geometryKind = gpu::kGeometryTriangles;
     record.material = instance.material;
     record.firstIndex = packed.firstIndex[instance.mesh];
@@ -229,6 +278,22 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
     gpu::InstanceRecord record{};
     record.geometryKind = gpu::kGeometrySpheres;
     record.firstSphere = 0;
+    record.firstEmitter = gpu::kNoEmitter;
+    bool anyEmits = false;
+    for (const Sphere& sphere : scene.spheres) anyEmits |= emits(scene, sphere.material);
+    if (anyEmits) {
+      // One entry per sphere (pmf 0 for those that do not emit), so that entry = firstEmitter + primitive.
+      record.firstEmitter = static_cast<std::uint32_t>(emitters.size());
+      for (const Sphere& sphere : scene.spheres) {
+        gpu::EmitterRecord e{};
+        e.kind = gpu::kEmitterSphere;
+        e.p0 = sphere.center;
+        e.p1 = glm::vec3(sphere.radius, 0.0f, 0.0f);
+        e.radiance = scene.materials[sphere.material].record.emission;
+        e.area = 4.0f * 3.14159265f * sphere.radius * sphere.radius;
+        emitters.push_back(e);
+      }
+    }
     TlasInstance tlasInstance;
     tlasInstance.blas = sphereBlas;
     copyTransform(glm::mat4(1.0f), tlasInstance.transform);
@@ -252,6 +317,9 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
   packTextures(scene, textureRecords, texels);
   gpuScene.textures = createBufferWithData<gpu::TextureRecord>(device, textureRecords, kStorage, "textures");
   gpuScene.texels = createBufferWithData<std::uint32_t>(device, texels, kStorage, "texels");
+  normaliseEmitters(emitters);
+  gpuScene.emitters = createBufferWithData<gpu::EmitterRecord>(device, emitters, kStorage, "emitters");
+  gpuScene.emitterCount = static_cast<std::uint32_t>(emitters.size());
   return gpuScene;
 }
 
@@ -260,7 +328,7 @@ void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
   for (AccelerationStructure& blas : gpuScene.blases) destroyAccelerationStructure(device, blas);
   for (Buffer* buffer : {&gpuScene.instances, &gpuScene.positions, &gpuScene.normals, &gpuScene.uvs,
                          &gpuScene.indices, &gpuScene.spheres, &gpuScene.sphereAabbs, &gpuScene.materials,
-                         &gpuScene.lights, &gpuScene.textures, &gpuScene.texels}) {
+                         &gpuScene.lights, &gpuScene.textures, &gpuScene.texels, &gpuScene.emitters}) {
     destroyBuffer(device, *buffer);
   }
   gpuScene = {};
@@ -291,6 +359,7 @@ std::vector<DescriptorBinding> sceneBindings() {
       {gpu::kBindingLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingTextures, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingTexels, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingEmitters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   };
 }
 
@@ -306,6 +375,7 @@ void writeSceneDescriptors(const Device& device, VkDescriptorSet set, const GpuS
   writeStorageBuffer(device, set, gpu::kBindingLights, gpuScene.lights.handle);
   writeStorageBuffer(device, set, gpu::kBindingTextures, gpuScene.textures.handle);
   writeStorageBuffer(device, set, gpu::kBindingTexels, gpuScene.texels.handle);
+  writeStorageBuffer(device, set, gpu::kBindingEmitters, gpuScene.emitters.handle);
 }
 
 }  // namespace raylab

@@ -26,9 +26,11 @@ struct GpuScene {
   Buffer lights;
   Buffer textures;  // TextureRecord[]
   Buffer texels;    // RGBA8 sRGB texels of every texture
+  Buffer emitters;  // EmitterRecord[]: emissive triangles and spheres in world space
   std::vector<AccelerationStructure> blases;
   AccelerationStructure tlas;
   std::uint32_t lightCount = 0;
+  std::uint32_t emitterCount = 0;  // emitting primitives (0: nothing for the path integrator to sample)
   std::uint32_t materialCount = 0;
   std::uint64_t triangleCount = 0;
   std::uint32_t sphereCount = 0;

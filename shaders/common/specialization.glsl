@@ -9,6 +9,7 @@ layout(constant_id = kSpecEnabledModels) const uint kEnabledModels = kAllModels;
 layout(constant_id = kSpecFeatures) const uint kFeatures = kAllFeatures;
 layout(constant_id = kSpecGlassFresnel) const uint kGlassFresnel = kFresnelExact;
 layout(constant_id = kSpecIntegrator) const uint kIntegrator = kIntegratorSlides;
+layout(constant_id = kSpecSampling) const uint kSampling = kSamplingMis;
 
 // After specialization these fold to constants and the driver removes the code they guard.
 bool modelEnabled(uint model) { return (kEnabledModels & (1u << model)) != 0u; }

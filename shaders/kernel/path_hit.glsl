@@ -6,18 +6,49 @@
 // (bsdfSample), with the mirror weight delta as a mixture f = (1 - delta) f_r + delta mirror and glass as a
 // smooth dielectric whose branch is chosen with probability equal to its Fresnel weight. Emitters and the
 // background reached by a continuation are counted at full weight: the only estimator of them here is BSDF
-// sampling. Russian roulette after kRouletteDepth bounces keeps the estimator unbiased (docs/integrators.md).
+// sampling, or, for emitting triangles and spheres, by next event estimation too (sampleEmitter), the two
+// combined by multiple importance sampling with the power heuristic (Veach 1997); kSampling selects one strategy
+// alone for studies. Russian roulette after kRouletteDepth bounces keeps the estimator unbiased
+// (docs/integrators.md).
 // Depth: --max-depth D allows D + 1 continuations after the camera ray, so a path has at most D + 2 segments
 // (Mitsuba 3's max_depth = D + 2); D = 0 is direct lighting only.
 #ifndef RAYLAB_KERNEL_PATH_HIT_GLSL
 #define RAYLAB_KERNEL_PATH_HIT_GLSL
 
 #include "kernel/closest_hit.glsl"
+#include "kernel/emitters.glsl"
 
 // Bounces before Russian roulette may end a path; after them a path survives with probability equal to its
 // largest throughput channel (at most kRouletteMax), and survivors are weighted up by its inverse.
 const uint kRouletteDepth = 3u;
 const float kRouletteMax = 0.95;
+
+// The weight of emission that a continuation reached, against next event estimation of the same point.
+float emissionWeight(Hit hit, Surface s, Payload p) {
+  if (p.lastSpecular || kSampling == kSamplingBsdf || params.emitterCount == 0u) return 1.0;
+  if (kSampling == kSamplingLight) return 0.0;
+  const uint first = instances[hit.instance].firstEmitter;
+  if (first == kNoEmitter) return 1.0;
+  const float lightPdf = emitterPdf(first + hit.primitive, p.lastPosition, s.position, s.geometricNormal);
+  return powerHeuristic(p.lastPdf, lightPdf);
+}
+
+// Next event estimation of one emitter point, MIS-weighted against sampling the BSDF's (1 - delta) part.
+vec3 sampleEmitterLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material, float delta,
+                        inout Payload p) {
+  const EmitterSample e = sampleEmitter(s.position, rngNext4(p.rng).xyz);
+  if (!(e.pdf > 0.0) || !(dot(e.wi, ng) > 0.0)) return vec3(0.0);
+  const vec3 wiLocal = toLocal(frame, e.wi);
+  const vec3 f = (1.0 - delta) * bsdfEval(material, wiLocal, woLocal);
+  const vec3 contribution = f * e.radiance * (max(wiLocal.z, 0.0) / e.pdf);
+  if (!(maxComponent(contribution) > 0.0)) return vec3(0.0);
+  const float weight =
+      kSampling == kSamplingMis ? powerHeuristic(e.pdf, (1.0 - delta) * bsdfPdf(material, wiLocal, woLocal)) : 1.0;
+  p.shadowRays += 1u;
+  // Stop short of the emitter, which is scene geometry too.
+  if (!traceVisibility(offsetRayOrigin(s.position, ng), e.wi, e.distance * (1.0 - 1e-4))) return vec3(0.0);
+  return weight * contribution;
+}
 
 // Sets up the continuation (origin, direction, weight) or ends the path; applies Russian roulette.
 void continueOrEnd(inout Payload p, vec3 origin, vec3 direction, vec3 throughput) {
@@ -52,6 +83,7 @@ void glassVertex(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
     return;
   }
   const vec3 weight = (!reflect && entering) ? material.tint : vec3(1.0);
+  p.lastSpecular = true;
   continueOrEnd(p, offsetRayOrigin(s.position, side), direction, p.throughput * weight);
 }
 
@@ -63,7 +95,9 @@ void closestHitPath(Hit hit, inout Payload p) {
   p.split = false;
 
   // Emission from the front face only, the side the counter-clockwise winding's normal points to.
-  if (s.frontFace) p.radiance += p.throughput * material.emission;
+  if (s.frontFace && maxComponent(material.emission) > 0.0) {
+    p.radiance += p.throughput * material.emission * emissionWeight(hit, s, p);
+  }
   if (p.depth > params.maxDepth) return;  // the segment that reached here was the last one allowed
 
   if (featureEnabled(kFeatureGlass) && material.model == kModelGlass) {
@@ -84,11 +118,16 @@ void closestHitPath(Hit hit, inout Payload p) {
   if (delta < 1.0 && params.lightCount > 0u) {
     p.radiance += p.throughput * (1.0 - delta) * directLighting(s.position, ng, frame, woLocal, material, p);
   }
+  if (kSampling != kSamplingBsdf && delta < 1.0 && params.emitterCount > 0u) {
+    p.radiance += p.throughput * sampleEmitterLight(s, ng, frame, woLocal, material, delta, p);
+  }
+  p.lastPosition = s.position;
 
   // The continuation: the mirror with probability delta, else a sample of f_r (weight f cos / pdf).
   const vec4 u = rngNext4(p.rng);
   if (u.w < delta) {
     const vec3 mirror = reflect(p.direction, ns);
+    p.lastSpecular = true;
     if (dot(mirror, ng) > 0.0) continueOrEnd(p, offsetRayOrigin(s.position, ng), mirror, p.throughput);
     return;
   }
@@ -97,6 +136,8 @@ void closestHitPath(Hit hit, inout Payload p) {
   const vec3 wi = toWorld(frame, b.wi);
   // A shading-normal sample below the geometric surface cannot leave this side.
   if (!(dot(wi, ng) > 0.0)) return;
+  p.lastSpecular = false;
+  p.lastPdf = (1.0 - delta) * b.pdf;
   continueOrEnd(p, offsetRayOrigin(s.position, ng), wi, p.throughput * b.f * (b.wi.z / b.pdf));
 }
 

@@ -23,6 +23,12 @@ struct Payload {
   vec3 splitThroughput;
   Rng rng;
   uint shadowRays;
+  // The path integrator's last scattering vertex, for MIS of the emitter a continuation reaches: where it was,
+  // the solid-angle density with which the continuation was sampled, and whether that was a delta event
+  // (camera ray, mirror, glass), which light sampling cannot produce.
+  vec3 lastPosition;
+  float lastPdf;
+  bool lastSpecular;
 };
 
 // What the traversal knows about the committed hit (OptiX: attributes and built-ins).

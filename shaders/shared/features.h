@@ -12,6 +12,7 @@ RL_CONST uint kSpecEnabledModels = 0;  // bit (1 << kModel...) per model compile
 RL_CONST uint kSpecFeatures = 1;       // kFeature... bits
 RL_CONST uint kSpecGlassFresnel = 2;   // kFresnel...: which Fresnel term glass uses
 RL_CONST uint kSpecIntegrator = 3;     // kIntegrator...: which estimator the raygen runs
+RL_CONST uint kSpecSampling = 4;       // kSampling...: how the path integrator estimates emitted light
 
 // kSpecFeatures bits.
 RL_CONST uint kFeatureGlass = 1;             // glass materials: reflection and refraction
@@ -28,6 +29,12 @@ RL_CONST uint kFresnelSchlick = 1;
 // kSpecIntegrator values (docs/integrators.md).
 RL_CONST uint kIntegratorSlides = 0;  // equation 2 of the slides: delta-weighted mirror plus direct light
 RL_CONST uint kIntegratorPath = 1;    // the rendering equation: a path tracer
+
+// kSpecSampling values: multiple importance sampling of emitters by light and BSDF sampling (the default), or
+// one strategy alone, for studies. All three converge to the same image.
+RL_CONST uint kSamplingMis = 0;
+RL_CONST uint kSamplingBsdf = 1;
+RL_CONST uint kSamplingLight = 2;
 
 RL_CONST uint kAllModels = 0xFFFFFFFFu;
 RL_CONST uint kAllFeatures = 0xFFFFFFFFu;

@@ -27,8 +27,9 @@ struct FrameParams {
   float throughputCutoff;  // a path whose throughput drops below this stops
   uvec2 tileOrigin;  // first pixel of this dispatch; tiles are multiples of the 8x8 workgroup
   uint sampleCount;  // samples sampleIndex, sampleIndex + 1, ... this dispatch adds to each pixel
+  uint emitterCount; // EmitterRecords the path integrator samples
 };
-RL_CHECK_SIZE(FrameParams, 104);
+RL_CHECK_SIZE(FrameParams, 108);
 
 struct RayStats {
   uint primaryRays;

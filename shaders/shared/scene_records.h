@@ -22,8 +22,29 @@ struct InstanceRecord {
   uint firstVertex;  // triangles: added to every index of this mesh
   uint firstSphere;  // spheres: record of primitive 0
   uint vertexFlags;
+  uint firstEmitter;  // EmitterRecord of primitive 0 when the instance emits, else kNoEmitter
 };
-RL_CHECK_SIZE(InstanceRecord, 24);
+RL_CHECK_SIZE(InstanceRecord, 28);
+
+RL_CONST uint kNoEmitter = 0xFFFFFFFFu;
+
+// EmitterRecord.kind
+RL_CONST uint kEmitterTriangle = 0;
+RL_CONST uint kEmitterSphere = 1;
+
+// One emitting primitive in world space, for next event estimation: emitters are picked in proportion to
+// their power (luminance of L_e times area) by the inclusive `cdf`; `pmf` is the probability of this one.
+struct EmitterRecord {
+  vec3 p0;        // triangle: first vertex (counter-clockwise front); sphere: centre
+  uint kind;
+  vec3 p1;        // triangle: second vertex; sphere: (radius, 0, 0)
+  float pmf;
+  vec3 p2;        // triangle: third vertex
+  float cdf;
+  vec3 radiance;  // L_e
+  float area;
+};
+RL_CHECK_SIZE(EmitterRecord, 64);
 
 // An analytic sphere in the object space of its instance.
 struct SphereRecord {

@@ -18,6 +18,7 @@
 #include "scene/load_scene.h"
 #include "scene/gpu_scene.h"
 #include "util/error.h"
+#include "shared/features.h"
 #include "util/atomic_file.h"
 #include "util/progress.h"
 #include "util/timer.h"
@@ -44,6 +45,7 @@ struct RenderOptions {
   bool allFeatures = false;
   std::string fresnel = "exact";
   std::string integrator = "auto";
+  std::string sampling = "mis";
   std::optional<std::uint32_t> device;
 };
 
@@ -81,6 +83,7 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
       {"max_depth", o.settings.maxDepth},
       {"fresnel", o.fresnel},
       {"integrator", integratorName(renderer.kernel.integrator)},
+      {"sampling", o.sampling},
       {"dropped_samples", renderer.droppedSamples},
       {"all_features", o.allFeatures},
       {"kernel", describe(renderer.kernel)},
@@ -176,6 +179,8 @@ int runRender(int argc, char** argv) {
   args.choice("--integrator", &o.integrator, {"auto", "slides", "path"},
               "slides: equation 2 of the slides (mirror weight, direct light); path: the rendering equation; "
               "auto (default): path when the scene has an emissive surface");
+  args.choice("--sampling", &o.sampling, {"mis", "bsdf", "light"},
+              "path integrator: how emitters are estimated, MIS of light and BSDF sampling (default) or one alone");
   args.flag("--stats", &o.stats, "print which BRDF models and features the kernel was compiled with");
   args.flag("--all-features", &o.allFeatures, "compile every model and feature in, not only what the scene uses");
   args.choice("--fresnel", &o.fresnel, {"exact", "schlick"},
@@ -206,6 +211,7 @@ int runRender(int argc, char** argv) {
   KernelFeatures kernel = o.allFeatures ? allFeatures() : featuresOf(scene);
   kernel.schlickFresnel = o.fresnel == "schlick";
   kernel.integrator = chooseIntegrator(scene, parseIntegrator(o.integrator));
+  kernel.sampling = o.sampling == "bsdf" ? gpu::kSamplingBsdf : o.sampling == "light" ? gpu::kSamplingLight : gpu::kSamplingMis;
   o.settings.kernel = kernel;
 
   GpuSession gpu(o.device);
