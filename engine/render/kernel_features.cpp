@@ -26,24 +26,10 @@ KernelFeatures featuresOf(const Scene& scene) {
 
 KernelFeatures allFeatures() { return {gpu::kAllModels, gpu::kAllFeatures}; }
 
-bool hasEmitters(const Scene& scene) {
-  const auto emits = [&](std::uint32_t material) {
-    const glm::vec3 e = scene.materials[material].record.emission;
-    return e.r > 0.0f || e.g > 0.0f || e.b > 0.0f;
-  };
-  for (const MeshInstance& instance : scene.instances) {
-    if (emits(instance.material)) return true;
-  }
-  for (const Sphere& sphere : scene.spheres) {
-    if (emits(sphere.material)) return true;
-  }
-  return false;
-}
-
 std::uint32_t chooseIntegrator(const Scene& scene, IntegratorChoice choice) {
   if (choice == IntegratorChoice::kSlides) return gpu::kIntegratorSlides;
   if (choice == IntegratorChoice::kPath) return gpu::kIntegratorPath;
-  return hasEmitters(scene) ? gpu::kIntegratorPath : gpu::kIntegratorSlides;
+  return hasEmissiveGeometry(scene) ? gpu::kIntegratorPath : gpu::kIntegratorSlides;
 }
 
 const char* integratorName(std::uint32_t integrator) {

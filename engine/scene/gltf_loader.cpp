@@ -97,7 +97,7 @@ class SceneBuilder {
     warnIfBeyondFloatPrecision();
     chooseCamera();
     // A scene lit by its own emitters needs no stand-in light (it would add light the file does not have).
-    if (scene_.lights.empty() && !hasEmissiveGeometry()) addDefaultLight();
+    if (scene_.lights.empty() && !hasEmissiveGeometry(scene_)) addDefaultLight();
     document_.reportIgnored();
   }
 
@@ -472,20 +472,6 @@ class SceneBuilder {
     scene_.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
     scene_.camera.yfov = kDefaultYfov;
     document_.warnOnce("no camera", "has no perspective camera; framing the scene's bounds from +Z (docs/scenes.md)");
-  }
-
-  bool hasEmissiveGeometry() const {
-    const auto emits = [&](std::uint32_t material) {
-      const glm::vec3 e = scene_.materials[material].record.emission;
-      return e.r > 0.0f || e.g > 0.0f || e.b > 0.0f;
-    };
-    for (const MeshInstance& instance : scene_.instances) {
-      if (emits(instance.material)) return true;
-    }
-    for (const Sphere& sphere : scene_.spheres) {
-      if (emits(sphere.material)) return true;
-    }
-    return false;
   }
 
   // A white point light above and to the left of the camera, bright enough that white Lambert at the

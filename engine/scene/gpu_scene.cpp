@@ -98,11 +98,6 @@ std::vector<gpu::LightRecord> lightRecords(std::span<const Light> lights) {
 
 float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
-bool emits(const Scene& scene, std::uint32_t material) {
-  const glm::vec3 e = scene.materials[material].record.emission;
-  return e.r > 0.0f || e.g > 0.0f || e.b > 0.0f;
-}
-
 // The emitting triangles of one instance, in world space, appended to `emitters` (pmf and cdf come later).
 void addTriangleEmitters(const Scene& scene, const MeshInstance& instance, std::vector<gpu::EmitterRecord>& emitters) {
   const Mesh& mesh = scene.meshes[instance.mesh];

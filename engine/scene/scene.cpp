@@ -29,4 +29,19 @@ std::uint64_t triangleCount(const Scene& scene) {
   return count;
 }
 
+bool emits(const Scene& scene, std::uint32_t material) {
+  const glm::vec3 e = scene.materials[material].record.emission;
+  return e.r > 0.0f || e.g > 0.0f || e.b > 0.0f;
+}
+
+bool hasEmissiveGeometry(const Scene& scene) {
+  for (const MeshInstance& instance : scene.instances) {
+    if (emits(scene, instance.material)) return true;
+  }
+  for (const Sphere& sphere : scene.spheres) {
+    if (emits(scene, sphere.material)) return true;
+  }
+  return false;
+}
+
 }  // namespace raylab

@@ -75,6 +75,10 @@ struct Scene {
 
 gpu::MaterialRecord lambertMaterial(glm::vec3 rhoD, float delta = 0.0f);
 
+// True when some mesh instance or sphere has a material with emission > 0 (the path integrator's emitters).
+bool emits(const Scene& scene, std::uint32_t material);
+bool hasEmissiveGeometry(const Scene& scene);
+
 gpu::LightRecord pointLight(glm::vec3 position, glm::vec3 intensity);
 
 std::uint64_t triangleCount(const Scene& scene);

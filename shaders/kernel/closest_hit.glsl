@@ -87,6 +87,31 @@ void glassHit(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
   }
 }
 
+// The base-colour texture, which multiplies rho_d.
+void applyTextures(inout MaterialRecord material, Surface s) {
+  if (featureEnabled(kFeatureTextures) && material.baseColorTexture >= 0) {
+    material.rhoD *= sampleTexture(uint(material.baseColorTexture), s.uv).rgb;
+  }
+}
+
+// The side of the surface the ray arrived on, which the one-sided BRDFs shade: its geometric normal ng, the
+// shading normal ns and the local frame around ns.
+struct ShadingSide {
+  vec3 ng;
+  vec3 ns;
+  ShadingFrame frame;
+};
+
+ShadingSide shadingSide(Surface s, vec3 wo) {
+  ShadingSide side;
+  side.ng = s.frontFace ? s.geometricNormal : -s.geometricNormal;
+  side.ns = s.frontFace ? s.shadingNormal : -s.shadingNormal;
+  // Interpolated normals can face away from the viewer near silhouettes; the true surface cannot.
+  if (dot(side.ns, wo) <= 0.0) side.ns = side.ng;
+  side.frame = makeShadingFrame(side.ns, s.tangent);
+  return side;
+}
+
 void closestHit(Hit hit, inout Payload p) {
   const Surface s = surfaceAt(hit);
   MaterialRecord material = materials[s.material];
@@ -101,16 +126,11 @@ void closestHit(Hit hit, inout Payload p) {
     }
     return;
   }
-  if (featureEnabled(kFeatureTextures) && material.baseColorTexture >= 0) {
-    material.rhoD *= sampleTexture(uint(material.baseColorTexture), s.uv).rgb;
-  }
-
-  // The BRDFs are one-sided: shade the side the ray arrived on.
-  const vec3 ng = s.frontFace ? s.geometricNormal : -s.geometricNormal;
-  vec3 ns = s.frontFace ? s.shadingNormal : -s.shadingNormal;
-  // Interpolated normals can face away from the viewer near silhouettes; the true surface cannot.
-  if (dot(ns, wo) <= 0.0) ns = ng;
-  const ShadingFrame frame = makeShadingFrame(ns, s.tangent);
+  applyTextures(material, s);
+  const ShadingSide side = shadingSide(s, wo);
+  const vec3 ng = side.ng;
+  const vec3 ns = side.ns;
+  const ShadingFrame frame = side.frame;
 
   const float delta = featureEnabled(kFeatureMirror) ? material.delta : 0.0;
   if (delta < 1.0) {

@@ -104,13 +104,11 @@ void closestHitPath(Hit hit, inout Payload p) {
     glassVertex(s, material, wo, p);
     return;
   }
-  if (featureEnabled(kFeatureTextures) && material.baseColorTexture >= 0) {
-    material.rhoD *= sampleTexture(uint(material.baseColorTexture), s.uv).rgb;
-  }
-  const vec3 ng = s.frontFace ? s.geometricNormal : -s.geometricNormal;
-  vec3 ns = s.frontFace ? s.shadingNormal : -s.shadingNormal;
-  if (dot(ns, wo) <= 0.0) ns = ng;
-  const ShadingFrame frame = makeShadingFrame(ns, s.tangent);
+  applyTextures(material, s);
+  const ShadingSide side = shadingSide(s, wo);
+  const vec3 ng = side.ng;
+  const vec3 ns = side.ns;
+  const ShadingFrame frame = side.frame;
   const vec3 woLocal = toLocal(frame, wo);
   const float delta = featureEnabled(kFeatureMirror) ? material.delta : 0.0;
 

@@ -418,17 +418,14 @@ def showcase():
     return g
 
 
-def cornell_box():
-    """A Cornell-style box (red left, green right, open towards the camera) with a mirror and a glass sphere
-    under a point light below the ceiling."""
-    g = Gltf("cornell_box")
+def cornell_room(g):
+    """The box of both Cornell scenes: x in [-w, w], y in [0, 2], z in [-1, 1], as wide as a 16:9 frame of its
+    opening, every wall facing the inside, with a mirror and a glass sphere."""
     white = g.material("white", {"model": "lambert", "rho_d": [0.73, 0.73, 0.73]}, (0.73, 0.73, 0.73))
     red = g.material("red", {"model": "lambert", "rho_d": [0.63, 0.065, 0.05]}, (0.63, 0.065, 0.05))
     green = g.material("green", {"model": "lambert", "rho_d": [0.14, 0.45, 0.09]}, (0.14, 0.45, 0.09))
     mirror = g.material("mirror", {"model": "lambert", "rho_d": [0.9, 0.9, 0.9], "delta": 0.95}, (0.9, 0.9, 0.9))
     glass = g.material("glass", {"model": "glass", "eta": 1.5}, (0.95, 0.95, 1.0))
-    # The box spans x in [-w, w], y in [0, 2] and z in [-1, 1], as wide as a 16:9 frame of its opening;
-    # every wall faces the inside.
     w = 1.75
     add_quad(g, "floor", [-w, 0.0, 1.0], [2 * w, 0.0, 0.0], [0.0, 0.0, -2.0], white)
     add_quad(g, "ceiling", [-w, 2.0, -1.0], [2 * w, 0.0, 0.0], [0.0, 0.0, 2.0], white)
@@ -437,6 +434,13 @@ def cornell_box():
     add_quad(g, "right wall", [w, 0.0, -1.0], [0.0, 0.0, 2.0], [0.0, 2.0, 0.0], green)
     g.sphere("mirror sphere", [-0.6, 0.45, -0.3], 0.45, mirror)
     g.sphere("glass sphere", [0.65, 0.45, 0.3], 0.45, glass)
+
+
+def cornell_box():
+    """A Cornell-style box (red left, green right, open towards the camera) with a mirror and a glass sphere
+    under a point light below the ceiling."""
+    g = Gltf("cornell_box")
+    cornell_room(g)
     # The opening (z = 1) just fills the frame's height.
     g.camera("camera", [0.0, 1.0, 4.2], [0.0, 1.0, 0.0], 34.0)
     g.point_light("lamp", [0.0, 1.7, 0.2], 6.0, (1.0, 0.95, 0.85))
@@ -447,25 +451,13 @@ def cornell_box_area():
     """The Cornell box lit the way the original is: a quad light in the ceiling (glTF emissiveFactor x
     KHR_materials_emissive_strength), no punctual light, so `raylab render` picks the path integrator."""
     g = Gltf("cornell_box_area")
-    white = g.material("white", {"model": "lambert", "rho_d": [0.73, 0.73, 0.73]}, (0.73, 0.73, 0.73))
-    red = g.material("red", {"model": "lambert", "rho_d": [0.63, 0.065, 0.05]}, (0.63, 0.065, 0.05))
-    green = g.material("green", {"model": "lambert", "rho_d": [0.14, 0.45, 0.09]}, (0.14, 0.45, 0.09))
-    mirror = g.material("mirror", {"model": "lambert", "rho_d": [0.9, 0.9, 0.9], "delta": 0.95}, (0.9, 0.9, 0.9))
-    glass = g.material("glass", {"model": "glass", "eta": 1.5}, (0.95, 0.95, 1.0))
+    cornell_room(g)
     lamp = g.material("lamp", {"model": "lambert", "rho_d": [0.0, 0.0, 0.0]}, (0.0, 0.0, 0.0))
     g.doc["materials"][lamp]["emissiveFactor"] = [1.0, 0.85, 0.6]
     g.doc["materials"][lamp]["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": 12.0}}
     g.doc.setdefault("extensionsUsed", []).append("KHR_materials_emissive_strength")
-    w = 1.75
-    add_quad(g, "floor", [-w, 0.0, 1.0], [2 * w, 0.0, 0.0], [0.0, 0.0, -2.0], white)
-    add_quad(g, "ceiling", [-w, 2.0, -1.0], [2 * w, 0.0, 0.0], [0.0, 0.0, 2.0], white)
-    add_quad(g, "back wall", [-w, 0.0, -1.0], [2 * w, 0.0, 0.0], [0.0, 2.0, 0.0], white)
-    add_quad(g, "left wall", [-w, 0.0, 1.0], [0.0, 0.0, -2.0], [0.0, 2.0, 0.0], red)
-    add_quad(g, "right wall", [w, 0.0, -1.0], [0.0, 0.0, 2.0], [0.0, 2.0, 0.0], green)
     # Just below the ceiling, facing down (the counter-clockwise normal of u x v points to -y).
     add_quad(g, "light", [-0.45, 1.995, -0.35], [0.9, 0.0, 0.0], [0.0, 0.0, 0.7], lamp)
-    g.sphere("mirror sphere", [-0.6, 0.45, -0.3], 0.45, mirror)
-    g.sphere("glass sphere", [0.65, 0.45, 0.3], 0.45, glass)
     g.camera("camera", [0.0, 1.0, 4.2], [0.0, 1.0, 0.0], 34.0)
     return g
 
