@@ -110,10 +110,9 @@ ParityCase canonicalCase(const gpu::MaterialRecord& material, const dvec3& wi, c
   return c;
 }
 
-// The same local directions seen through a random frame (world-space inputs, tangent not orthogonal to n).
-ParityCase framedCase(const gpu::MaterialRecord& material, const dvec3& wi, const dvec3& wo, Random& random) {
-  const dvec3 n = random.unitVector();
-  const dvec3 tHint = random.unitVector();
+// Local wi and wo seen through the frame of normal n and tangent hint tHint, as world-space inputs.
+ParityCase caseInFrame(const gpu::MaterialRecord& material, const dvec3& wi, const dvec3& wo, const dvec3& n,
+                       const dvec3& tHint) {
   const reference::Frame frame = reference::makeFrame(n, tHint);
   const auto toWorld = [&](const dvec3& v) { return v.x * frame.t + v.y * frame.b + v.z * frame.n; };
   ParityCase c;
@@ -126,25 +125,23 @@ ParityCase framedCase(const gpu::MaterialRecord& material, const dvec3& wi, cons
   return c;
 }
 
+// The same local directions seen through a random frame (world-space inputs, tangent not orthogonal to n).
+ParityCase framedCase(const gpu::MaterialRecord& material, const dvec3& wi, const dvec3& wo, Random& random) {
+  const dvec3 n = random.unitVector();
+  const dvec3 tHint = random.unitVector();
+  return caseInFrame(material, wi, wo, n, tHint);
+}
+
 // A case near the specular peak in a random frame whose tangent hint is `degrees` away from n.
 ParityCase leaningFrameCase(const gpu::MaterialRecord& material, Random& random, double degrees) {
   const dvec3 n = random.unitVector();
   const dvec3 side = glm::normalize(glm::cross(n, random.unitVector()));
   const double angle = degrees * M_PI / 180.0;
   const dvec3 tHint = std::cos(angle) * n + std::sin(angle) * side;
-  const reference::Frame frame = reference::makeFrame(n, tHint);
-  const auto toWorld = [&](const dvec3& v) { return v.x * frame.t + v.y * frame.b + v.z * frame.n; };
   const dvec3 wo = spherical(random.uniform(0.3, 1.0), random.uniform(0.0, 2.0 * M_PI));
   const dvec3 mirror(-wo.x, -wo.y, wo.z);
   const dvec3 wi = glm::normalize(mirror + random.unitVector() * (lobeWidth(material) * random.uniform()));
-  ParityCase c;
-  c.input.material = material;
-  c.input.wi = vec3(toWorld(wi));
-  c.input.wo = vec3(toWorld(wo));
-  c.input.n = vec3(n);
-  c.input.t = vec3(tHint);
-  c.canonicalFrame = false;
-  return c;
+  return caseInFrame(material, wi, wo, n, tHint);
 }
 
 // Random materials and directions: half uniform over the hemisphere, half aimed at the specular lobe.

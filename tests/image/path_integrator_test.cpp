@@ -10,8 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -125,7 +123,9 @@ TEST_F(PathIntegratorTest, WhiteFurnaceRendersEachModelsDirectionalAlbedo) {
                                   << "): mean error " << mean << " over " << count[bin] << " pixels";
     }
     // f cos / pdf is exactly rho_d for cosine-sampled Lambert: no noise at all.
-    if (std::string(c.label) == "lambert") EXPECT_LT(worstLambert, 1e-5);
+    if (std::string(c.label) == "lambert") {
+      EXPECT_LT(worstLambert, 1e-5);
+    }
   }
 }
 
@@ -180,7 +180,9 @@ TEST_F(PathIntegratorTest, AnEmitterSeenDirectlyShowsItsRadianceFromTheFrontOnly
   scene.camera.position = {0.0f, 0.0f, 0.5f};
   const Image inside = renderImage(device(), scene, pathSettings(8, 4, scene), 1);
   for (float value : inside.rgba) {
-    if (value != 1.0f) EXPECT_EQ(value, 0.0f);  // alpha is 1
+    if (value != 1.0f) {
+      EXPECT_EQ(value, 0.0f);  // alpha is 1
+    }
   }
 }
 
@@ -273,8 +275,11 @@ double worstRegionT(const Device& device, const Scene& scene, std::uint32_t samp
     // Differences below 1e-5 of the image's brightness are float rounding, not bias: the black sky corners
     // differ by 7e-7 between strategies (a few grazing floor pixels at the horizon), a few ulps of their values.
     const double excess = std::max(0.0, std::abs(mean) - 1e-5 * level);
-    if (standardError > 0.0) worst = std::max(worst, excess / standardError);
-    else EXPECT_EQ(mean, 0.0);  // a region the strategies estimate identically (the sky)
+    if (standardError > 0.0) {
+      worst = std::max(worst, excess / standardError);
+    } else {
+      EXPECT_EQ(mean, 0.0);  // a region the strategies estimate identically (the sky)
+    }
   }
   return worst;
 }
