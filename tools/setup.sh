@@ -30,6 +30,8 @@ packages=(
   libgtest-dev libembree-dev
   xvfb xauth assimp-testmodels
   python3 python3-venv
+  blender-data  # CC0 HDR worlds that light the environment scenes (copied beside them, see environments)
+  libllvm19     # Mitsuba 3's LLVM backend (the independent reference renderer, tools/requirements.txt)
 )
 # lavapipe gained ray queries in Mesa 24.1; bookworm itself has 22.3, bookworm-backports has 25.x.
 mesa_minimum=24.1
@@ -97,6 +99,17 @@ python_tools() {
   cp tools/requirements.txt "$stamp"
 }
 
+# The HDR worlds that committed scenes name (assets/scenes/environments/*.exr): Blender's CC0 studio-light
+# worlds from Debian's blender-data, copied beside the scenes because a scene may read only files inside its own
+# folder. Copies, never committed (.gitignore).
+environments() {
+  local source=/usr/share/blender/datafiles/studiolights/world target=assets/scenes/environments
+  mkdir -p "$target"
+  for file in "$source"/*.exr "$source"/license.txt; do
+    cmp -s "$file" "$target/$(basename "$file")" || cp "$file" "$target/"
+  done
+}
+
 build() {
   if [[ ! -f build/release/build.ninja ]]; then cmake --preset release >/dev/null; fi
   cmake --build --preset release
@@ -105,6 +118,7 @@ build() {
 install_packages
 if [[ $mode == deps ]]; then exit 0; fi
 python_tools
+environments
 build
 case "$mode" in
   render)

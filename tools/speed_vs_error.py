@@ -47,7 +47,7 @@ try:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     import numpy as np
-    import OpenEXR
+    from image_io import read_exr
 except ImportError as missing:
     sys.exit(f"{Path(sys.argv[0]).name}: error: {venv_hint(missing.name)}")
 
@@ -190,23 +190,6 @@ def render(raylab: Path, scene: Scene, settings: Settings, options: tuple[str, .
                 "--seed", str(seed), *options, "--out", str(exr), "--report", str(report)]
     run_raylab(raylab, command, f"rendering {scene.name}")
     return json.loads(report.read_text())
-
-
-def read_exr(path: Path) -> np.ndarray:
-    """The linear R, G, B channels, H x W x 3, float64."""
-    with OpenEXR.File(str(path)) as file:  # the channels are released when the file closes: copy them first
-        channels = file.channels()
-        packed = next((name for name in ("RGBA", "RGB") if name in channels), None)
-        if packed is not None:
-            image = np.array(channels[packed].pixels[..., :3], dtype=np.float64)
-        elif all(c in channels for c in "RGB"):
-            image = np.stack([np.array(channels[c].pixels, dtype=np.float64) for c in "RGB"], axis=-1)
-        else:
-            raise ToolError(f"{path}: expected R, G, B channels, found {', '.join(channels) or 'none'}")
-    bad = int(np.count_nonzero(~np.isfinite(image)))
-    if bad:
-        print(f"warning: {path} has {bad} NaN or infinite values: its errors will be NaN", file=sys.stderr)
-    return image
 
 
 def scene_digest(scene: Scene) -> str:

@@ -11,6 +11,7 @@
 #include "image/image.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/files.h"
 
 namespace raylab {
 
@@ -47,12 +48,22 @@ void writeExr(const std::string& path, const Image& image) {
 }
 
 
-Image readExr(const std::string& path) {
+Image readExr(const std::string& path) { return decodeExr(readTextFile(path), path); }
+
+Image decodeExr(const std::string& bytes, const std::string& label, std::uint64_t maxPixels) {
   try {
-    Imf::InputFile file(path.c_str());
+    Imf::StdISStream input;
+    input.str(bytes);
+    Imf::InputFile file(input);
     const Imath::Box2i window = file.header().dataWindow();
-    Image image(static_cast<std::uint32_t>(window.max.x - window.min.x + 1),
-                static_cast<std::uint32_t>(window.max.y - window.min.y + 1));
+    const std::int64_t width = std::int64_t(window.max.x) - window.min.x + 1;
+    const std::int64_t height = std::int64_t(window.max.y) - window.min.y + 1;
+    // The header is checked before anything is allocated: a small file may claim any size.
+    if (width <= 0 || height <= 0 || std::uint64_t(width) * std::uint64_t(height) > maxPixels) {
+      throw Error(label + ": OpenEXR image of " + std::to_string(width) + "x" + std::to_string(height) +
+                  " pixels, over the limit of " + std::to_string(maxPixels) + " pixels");
+    }
+    Image image(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height));
     Imf::FrameBuffer frameBuffer;
     char* base = reinterpret_cast<char*>(image.rgba.data()) -
                  (std::ptrdiff_t(window.min.x) + std::ptrdiff_t(window.min.y) * image.width) * 4 * sizeof(float);
@@ -64,8 +75,10 @@ Image readExr(const std::string& path) {
     file.setFrameBuffer(frameBuffer);
     file.readPixels(window.min.y, window.max.y);
     return image;
+  } catch (const Error&) {
+    throw;
   } catch (const std::exception& e) {
-    throw Error(path + ": cannot read OpenEXR file: " + e.what());
+    throw Error(label + ": cannot read OpenEXR file: " + e.what());
   }
 }
 

@@ -37,6 +37,10 @@ enum class ToneMap {
 // created. Errors name the file.
 void writeExr(const std::string& path, const Image& image);
 Image readExr(const std::string& path);
+// An OpenEXR file held in memory; `label` (its path) starts every error. An image of more than `maxPixels`
+// pixels is refused from its header, before anything is allocated.
+Image decodeExr(const std::string& bytes, const std::string& label,
+                std::uint64_t maxPixels = std::uint64_t(1) << 31);
 // `exposure` in stops: values are scaled by 2^exposure before the tone curve and the sRGB transfer function.
 void writePng(const std::string& path, const Image& image, float exposure, ToneMap toneMap);
 

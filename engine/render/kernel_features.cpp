@@ -13,6 +13,7 @@ KernelFeatures featuresOf(const Scene& scene) {
     if (material.record.delta > 0.0f) f.features |= gpu::kFeatureMirror;
     if (material.record.baseColorTexture >= 0) f.features |= gpu::kFeatureTextures;
   }
+  if (scene.environment.hasImage()) f.features |= gpu::kFeatureEnvironment;
   for (const Light& light : scene.lights) {
     switch (light.record.type) {
       case gpu::kLightPoint: f.features |= gpu::kFeaturePointLights; break;
@@ -29,7 +30,7 @@ KernelFeatures allFeatures() { return {gpu::kAllModels, gpu::kAllFeatures}; }
 std::uint32_t chooseIntegrator(const Scene& scene, IntegratorChoice choice) {
   if (choice == IntegratorChoice::kSlides) return gpu::kIntegratorSlides;
   if (choice == IntegratorChoice::kPath) return gpu::kIntegratorPath;
-  return hasEmissiveGeometry(scene) ? gpu::kIntegratorPath : gpu::kIntegratorSlides;
+  return hasEmissiveGeometry(scene) || scene.environment.hasImage() ? gpu::kIntegratorPath : gpu::kIntegratorSlides;
 }
 
 const char* integratorName(std::uint32_t integrator) {
@@ -50,7 +51,8 @@ std::string describe(const KernelFeatures& features) {
                               {gpu::kFeaturePointLights, "point lights"},
                               {gpu::kFeatureSpotLights, "spot lights"},
                               {gpu::kFeatureDirectionalLights, "directional lights"},
-                              {gpu::kFeatureTextures, "base-colour textures"}};
+                              {gpu::kFeatureTextures, "base-colour textures"},
+                              {gpu::kFeatureEnvironment, "environment image"}};
   std::string list;
   for (const Named& named : kNames) {
     if (features.features & named.bit) list += (list.empty() ? "" : ", ") + std::string(named.name);

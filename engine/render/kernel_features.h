@@ -18,13 +18,15 @@ struct KernelFeatures {
   bool operator==(const KernelFeatures&) const = default;
 };
 
-// Exactly what `scene` uses: unused models, glass, the mirror loop, absent light types and textures compile away.
+// Exactly what `scene` uses: unused models, glass, the mirror loop, absent light types and textures compile away;
+// the integrator is the one `auto` picks (chooseIntegrator).
 KernelFeatures featuresOf(const Scene& scene);
 
 enum class IntegratorChoice { kAuto, kSlides, kPath };
 
-// The integrator a render runs: `auto` takes the path tracer when the scene has an emissive surface (the
-// slides' equation cannot show one lighting anything), the slides' integrator otherwise.
+// The integrator a render runs: `auto` takes the path tracer when the scene has an emissive surface or an
+// environment image (the slides' equation cannot show either lighting anything), the slides' integrator
+// otherwise.
 std::uint32_t chooseIntegrator(const Scene& scene, IntegratorChoice choice);
 // "slides" or "path".
 const char* integratorName(std::uint32_t integrator);

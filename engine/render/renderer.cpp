@@ -93,6 +93,8 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   params.maxDepth = settings.maxDepth;
   params.lightCount = gpuScene.lightCount;
   params.emitterCount = gpuScene.emitterCount;
+  params.environmentStrength = scene.environment.strength;
+  params.environmentRotation = scene.environment.rotation;
   params.flags = settings.jitter ? gpu::kFrameJitter : 0u;
   params.throughputCutoff = settings.throughputCutoff;
   applyCamera(params, scene.camera, settings.width, settings.height);

@@ -10,8 +10,8 @@ namespace embedded {
 std::string_view showcaseGltf();  // generated from assets/scenes/showcase.gltf by engine/CMakeLists.txt
 }  // namespace embedded
 
-Scene makeDefaultScene(const std::string& camera) {
-  return loadGltfText(std::string(embedded::showcaseGltf()), "", "showcase", GltfOptions{camera});
+Scene makeDefaultScene(const GltfOptions& options) {
+  return loadGltfText(std::string(embedded::showcaseGltf()), "", "showcase", options);
 }
 
 }  // namespace raylab

@@ -4,11 +4,13 @@
 
 #include <string>
 
+#include "scene/gltf_loader.h"
 #include "scene/scene.h"
 
 namespace raylab {
 
-// `camera`: a camera name of the showcase file; empty for its first camera.
-Scene makeDefaultScene(const std::string& camera = "");
+// options.camera: a camera name of the showcase file; empty for its first camera. The environment options
+// apply as to a file.
+Scene makeDefaultScene(const GltfOptions& options = {});
 
 }  // namespace raylab

@@ -179,6 +179,9 @@ Document parseDocument(const std::string& bytes, const std::string& baseDirector
     throw Error(label + ": " + oneLine(errors.empty() ? "tinygltf could not load the file" : errors));
   }
   if (!warnings.empty()) warn(label + ": " + oneLine(warnings));
+  document.baseDirectory = baseDirectory;
+  document.uriPolicy = policy;
+  document.uriPolicy.error.clear();
   return document;
 }
 

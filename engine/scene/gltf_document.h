@@ -11,12 +11,16 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "scene/gltf_files.h"
+
 namespace raylab::gltf {
 
 struct Document {
   std::string label;    // the path, or the scene name of text loaded from memory
   nlohmann::json json;  // the whole glTF JSON, schema-checked (gltf_schema.cpp)
   tinygltf::Model model;
+  std::string baseDirectory;  // external URIs resolve against it, under uriPolicy
+  UriPolicy uriPolicy;
   std::set<std::string> ignored;  // features raylab does not support, reported in one warning at the end
   std::set<std::string> warned;   // keys of warnings already given, so each kind is given once per file
 

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 
 #include "util/error.h"
@@ -140,6 +141,35 @@ void checkJsonDepth(const std::string& text, const std::string& label) {
       --depth;
     }
   }
+}
+
+std::string resolveUri(const std::string& uri, const std::string& baseDirectory, UriPolicy& policy) {
+  std::string decoded;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+      decoded += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      decoded += uri[i];
+    }
+  }
+  // A scheme ("data:", "file:", "https:") is a letter followed by letters, digits, '+', '-' or '.', then ':'.
+  const std::size_t colon = uri.find(':');
+  if (colon != std::string::npos && colon > 0 && std::isalpha(static_cast<unsigned char>(uri[0])) &&
+      std::all_of(uri.begin(), uri.begin() + std::ptrdiff_t(colon), [](unsigned char c) {
+        return std::isalnum(c) || c == '+' || c == '-' || c == '.';
+      })) {
+    throw Error("the URI '" + uri + "' has a scheme; raylab reads only relative file paths here");
+  }
+  if (decoded.empty()) throw Error("the URI is empty");
+  const std::filesystem::path path = std::filesystem::path(decoded).is_absolute()
+                                         ? std::filesystem::path(decoded)
+                                         : std::filesystem::path(baseDirectory.empty() ? "." : baseDirectory) / decoded;
+  policy.error.clear();
+  const std::filesystem::path resolved = admitted(path.string(), policy);
+  if (resolved.empty()) throw Error(policy.error.empty() ? "the URI '" + uri + "' cannot be resolved" : policy.error);
+  return resolved.string();
 }
 
 std::string readSceneFile(const std::string& path, std::uint64_t maxBytes) {

@@ -37,6 +37,10 @@ bool keepEncodedImage(tinygltf::Image* image, int imageIndex, std::string* error
 // destructors downstream recurse once per level.
 void checkJsonDepth(const std::string& text, const std::string& label);
 
+// The path of external file `uri` (relative to `baseDirectory`, percent-encoding decoded) if `policy` admits
+// it; else throws Error saying why (a URI scheme, outside the scene's folder, a scene held in memory).
+std::string resolveUri(const std::string& uri, const std::string& baseDirectory, UriPolicy& policy);
+
 // Reads a scene file the user named: a regular file of at most `maxBytes`. Errors name the path.
 std::string readSceneFile(const std::string& path, std::uint64_t maxBytes);
 

@@ -4,6 +4,7 @@
 // mesh, accessor or material at fault; repairs and ignored features are reported once each through warn().
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "scene/scene.h"
@@ -13,6 +14,8 @@ namespace raylab {
 struct GltfOptions {
   std::string camera;  // --camera NAME: a camera's or its node's name; empty: the first perspective camera
   bool allowOutsideUris = false;  // --allow-outside-uris: buffers and images may lie outside the file's folder
+  std::string environment;  // --env FILE.exr: replaces the file's extras.raylab.environment
+  std::optional<float> environmentStrength;  // --env-strength S: replaces its strength
 };
 
 // Loads the default scene of a .gltf or .glb file (told apart by content). Scene.name is the file's stem.

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "scene/environment_tables.h"
 #include "shared/bindings.h"
 #include "util/error.h"
 #include "util/timer.h"
@@ -167,6 +168,10 @@ void checkDeviceLimits(const Device& device, const Scene& scene) {
     if (emits(scene, instance.material)) emitting += scene.meshes[instance.mesh].indices.size() / 3;
   }
   checkBuffer("emitting primitives (" + std::to_string(emitting) + ")", emitting * sizeof(gpu::EmitterRecord));
+  const std::uint64_t environmentTexels = std::uint64_t(scene.environment.width) * scene.environment.height;
+  checkBuffer("environment image (" + std::to_string(scene.environment.width) + "x" +
+                  std::to_string(scene.environment.height) + ") and its sampling tables",
+              sizeof(gpu::EnvironmentHeader) + (6 * environmentTexels + scene.environment.height) * sizeof(float));
   if (scene.spheres.size() > device.maxPrimitiveCount) {
     throw Error("the scene has " + std::to_string(scene.spheres.size()) +
                 " spheres, over this device's maxPrimitiveCount of " + std::to_string(device.maxPrimitiveCount));
@@ -315,6 +320,8 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
   normaliseEmitters(emitters);
   gpuScene.emitters = createBufferWithData<gpu::EmitterRecord>(device, emitters, kStorage, "emitters");
   gpuScene.emitterCount = static_cast<std::uint32_t>(emitters.size());
+  const std::vector<float> environment = packEnvironment(scene.environment, buildEnvironmentTables(scene.environment));
+  gpuScene.environment = createBufferWithData<float>(device, environment, kStorage, "environment");
   return gpuScene;
 }
 
@@ -323,7 +330,8 @@ void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
   for (AccelerationStructure& blas : gpuScene.blases) destroyAccelerationStructure(device, blas);
   for (Buffer* buffer : {&gpuScene.instances, &gpuScene.positions, &gpuScene.normals, &gpuScene.uvs,
                          &gpuScene.indices, &gpuScene.spheres, &gpuScene.sphereAabbs, &gpuScene.materials,
-                         &gpuScene.lights, &gpuScene.textures, &gpuScene.texels, &gpuScene.emitters}) {
+                         &gpuScene.lights, &gpuScene.textures, &gpuScene.texels, &gpuScene.emitters,
+                         &gpuScene.environment}) {
     destroyBuffer(device, *buffer);
   }
   gpuScene = {};
@@ -355,6 +363,7 @@ std::vector<DescriptorBinding> sceneBindings() {
       {gpu::kBindingTextures, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingTexels, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingEmitters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingEnvironment, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   };
 }
 
@@ -371,6 +380,7 @@ void writeSceneDescriptors(const Device& device, VkDescriptorSet set, const GpuS
   writeStorageBuffer(device, set, gpu::kBindingTextures, gpuScene.textures.handle);
   writeStorageBuffer(device, set, gpu::kBindingTexels, gpuScene.texels.handle);
   writeStorageBuffer(device, set, gpu::kBindingEmitters, gpuScene.emitters.handle);
+  writeStorageBuffer(device, set, gpu::kBindingEnvironment, gpuScene.environment.handle);
 }
 
 }  // namespace raylab

@@ -27,6 +27,7 @@ struct GpuScene {
   Buffer textures;  // TextureRecord[]
   Buffer texels;    // RGBA8 sRGB texels of every texture
   Buffer emitters;  // EmitterRecord[]: emissive triangles and spheres in world space
+  Buffer environment;  // EnvironmentHeader, the environment image and its sampling tables
   std::vector<AccelerationStructure> blases;
   AccelerationStructure tlas;
   std::uint32_t lightCount = 0;

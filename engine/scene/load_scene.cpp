@@ -10,9 +10,11 @@
 namespace raylab {
 
 Scene loadScene(const SceneRequest& request) {
-  if (request.path.empty()) return makeDefaultScene(request.camera);
+  const GltfOptions options{request.camera, request.allowOutsideUris, request.environment,
+                            request.environmentStrength};
+  if (request.path.empty()) return makeDefaultScene(options);
   try {
-    return loadGltfFile(request.path, GltfOptions{request.camera, request.allowOutsideUris});
+    return loadGltfFile(request.path, options);
   } catch (const std::bad_alloc&) {
     // The limits of docs/scenes.md should stop this first; if not, still say which file asked for too much.
     throw Error(request.path + ": out of memory while loading the scene (it asks for more than this machine has; "

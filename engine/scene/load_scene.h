@@ -1,6 +1,7 @@
 // The scene a command was asked for: a glTF file, or the built-in default scene when no path is given.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "scene/scene.h"
@@ -11,6 +12,8 @@ struct SceneRequest {
   std::string path;    // empty: the built-in default scene
   std::string camera;  // --camera NAME; empty: the file's first camera
   bool allowOutsideUris = false;  // --allow-outside-uris (docs/scenes.md)
+  std::string environment;        // --env FILE.exr: replaces the scene's environment image
+  std::optional<float> environmentStrength;  // --env-strength S
 };
 
 Scene loadScene(const SceneRequest& request);

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/environment.h"
 #include "shared/scene_records.h"
 
 namespace raylab {
@@ -70,7 +71,8 @@ struct Scene {
   std::vector<Material> materials;   // MaterialRecord.baseColorTexture indexes `textures`
   std::vector<Texture> textures;
   std::vector<Light> lights;
-  glm::vec3 background{0.0f};  // radiance of rays that leave the scene
+  glm::vec3 background{0.0f};  // radiance of rays that leave the scene, when there is no environment image
+  Environment environment;     // extras.raylab.environment or --env (docs/integrators.md)
 };
 
 gpu::MaterialRecord lambertMaterial(glm::vec3 rhoD, float delta = 0.0f);

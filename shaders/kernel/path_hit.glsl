@@ -17,6 +17,7 @@
 
 #include "kernel/closest_hit.glsl"
 #include "kernel/emitters.glsl"
+#include "kernel/environment.glsl"
 
 // Bounces before Russian roulette may end a path; after them a path survives with probability equal to its
 // largest throughput channel (at most kRouletteMax), and survivors are weighted up by its inverse.
@@ -33,21 +34,36 @@ float emissionWeight(Hit hit, Surface s, Payload p) {
   return powerHeuristic(p.lastPdf, lightPdf);
 }
 
-// Next event estimation of one emitter point, MIS-weighted against sampling the BSDF's (1 - delta) part.
+// What one light sample (direction wi, radiance arriving along it, solid-angle pdf, free distance) brings through
+// the (1 - delta) f_r part of the BSDF, MIS-weighted against sampling that part, if nothing blocks it.
+vec3 lightSampleContribution(vec3 wi, vec3 radiance, float pdf, float distance, Surface s, vec3 ng, ShadingFrame frame,
+                             vec3 woLocal, MaterialRecord material, float delta, inout Payload p) {
+  if (!(pdf > 0.0) || !(dot(wi, ng) > 0.0)) return vec3(0.0);
+  const vec3 wiLocal = toLocal(frame, wi);
+  const vec3 f = (1.0 - delta) * bsdfEval(material, wiLocal, woLocal);
+  const vec3 contribution = f * radiance * (max(wiLocal.z, 0.0) / pdf);
+  if (!(maxComponent(contribution) > 0.0)) return vec3(0.0);
+  const float weight =
+      kSampling == kSamplingMis ? powerHeuristic(pdf, (1.0 - delta) * bsdfPdf(material, wiLocal, woLocal)) : 1.0;
+  p.shadowRays += 1u;
+  if (!traceVisibility(offsetRayOrigin(s.position, ng), wi, distance)) return vec3(0.0);
+  return weight * contribution;
+}
+
+// Next event estimation of one emitter point.
 vec3 sampleEmitterLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material, float delta,
                         inout Payload p) {
   const EmitterSample e = sampleEmitter(s.position, rngNext4(p.rng).xyz);
-  if (!(e.pdf > 0.0) || !(dot(e.wi, ng) > 0.0)) return vec3(0.0);
-  const vec3 wiLocal = toLocal(frame, e.wi);
-  const vec3 f = (1.0 - delta) * bsdfEval(material, wiLocal, woLocal);
-  const vec3 contribution = f * e.radiance * (max(wiLocal.z, 0.0) / e.pdf);
-  if (!(maxComponent(contribution) > 0.0)) return vec3(0.0);
-  const float weight =
-      kSampling == kSamplingMis ? powerHeuristic(e.pdf, (1.0 - delta) * bsdfPdf(material, wiLocal, woLocal)) : 1.0;
-  p.shadowRays += 1u;
-  // Stop short of the emitter, which is scene geometry too.
-  if (!traceVisibility(offsetRayOrigin(s.position, ng), e.wi, e.distance * (1.0 - 1e-4))) return vec3(0.0);
-  return weight * contribution;
+  // The shadow ray stops short of the emitter, which is scene geometry too.
+  return lightSampleContribution(e.wi, e.radiance, e.pdf, e.distance * (1.0 - 1e-4), s, ng, frame, woLocal, material,
+                                 delta, p);
+}
+
+// Next event estimation of the environment image.
+vec3 sampleEnvironmentLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material,
+                            float delta, inout Payload p) {
+  const EnvironmentSample e = sampleEnvironment(rngNext4(p.rng).xy);
+  return lightSampleContribution(e.wi, e.radiance, e.pdf, kRayTMax, s, ng, frame, woLocal, material, delta, p);
 }
 
 // Sets up the continuation (origin, direction, weight) or ends the path; applies Russian roulette.
@@ -118,6 +134,9 @@ void closestHitPath(Hit hit, inout Payload p) {
   }
   if (kSampling != kSamplingBsdf && delta < 1.0 && params.emitterCount > 0u) {
     p.radiance += p.throughput * sampleEmitterLight(s, ng, frame, woLocal, material, delta, p);
+  }
+  if (kSampling != kSamplingBsdf && delta < 1.0 && environmentSamplable()) {
+    p.radiance += p.throughput * sampleEnvironmentLight(s, ng, frame, woLocal, material, delta, p);
   }
   p.lastPosition = s.position;
 

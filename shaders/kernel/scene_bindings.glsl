@@ -17,5 +17,9 @@ layout(set = 0, binding = kBindingLights, scalar) readonly buffer LightBuffer { 
 layout(set = 0, binding = kBindingTextures, scalar) readonly buffer TextureBuffer { TextureRecord textures[]; };
 layout(set = 0, binding = kBindingTexels, scalar) readonly buffer TexelBuffer { uint texels[]; };
 layout(set = 0, binding = kBindingEmitters, scalar) readonly buffer EmitterBuffer { EmitterRecord emitters[]; };
+layout(set = 0, binding = kBindingEnvironment, scalar) readonly buffer EnvironmentBuffer {
+  EnvironmentHeader environment;
+  float environmentData[];
+};
 
 #endif

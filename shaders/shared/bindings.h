@@ -19,6 +19,7 @@ RL_CONST uint kBindingLights = 8;     // LightRecord[]
 RL_CONST uint kBindingTextures = 13;  // TextureRecord[]
 RL_CONST uint kBindingTexels = 14;    // uint[] RGBA8 sRGB texels of every texture, concatenated
 RL_CONST uint kBindingEmitters = 17;  // EmitterRecord[]: emissive triangles and spheres, with their sampling CDF
+RL_CONST uint kBindingEnvironment = 18;  // EnvironmentHeader, then the image and its sampling tables
 
 // Per-kernel outputs.
 RL_CONST uint kBindingAccumulation = 9;  // vec4[] running sum of radiance samples per pixel

@@ -28,8 +28,10 @@ struct FrameParams {
   uvec2 tileOrigin;  // first pixel of this dispatch; tiles are multiples of the 8x8 workgroup
   uint sampleCount;  // samples sampleIndex, sampleIndex + 1, ... this dispatch adds to each pixel
   uint emitterCount; // EmitterRecords the path integrator samples
+  float environmentStrength;  // multiplies the environment image
+  float environmentRotation;  // radians about +Y: the image turned counter-clockwise seen from above
 };
-RL_CHECK_SIZE(FrameParams, 108);
+RL_CHECK_SIZE(FrameParams, 116);
 
 struct RayStats {
   uint primaryRays;

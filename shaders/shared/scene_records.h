@@ -46,6 +46,19 @@ struct EmitterRecord {
 };
 RL_CHECK_SIZE(EmitterRecord, 64);
 
+// The environment image (binding kBindingEnvironment): this header, then `data`, floats in four arrays of the
+// image's texels, rows from the top: linear RGB (3 per texel), then the sampling density f (luminance times
+// sin(theta), 1 per texel), its inclusive cdf along each row normalised to 1 per row (1 per texel), and the
+// inclusive cdf over rows (1 per row). Directions have pdf f / fMean / (2 pi^2 sin theta) per unit solid angle
+// (docs/integrators.md, "Environment light").
+struct EnvironmentHeader {
+  uint width;   // 0: no image (the scene's uniform background)
+  uint height;
+  float fMean;  // mean of f over the texels; 0: nothing to sample
+  uint reserved;
+};
+RL_CHECK_SIZE(EnvironmentHeader, 16);
+
 // An analytic sphere in the object space of its instance.
 struct SphereRecord {
   vec3 center;

@@ -2,7 +2,9 @@
 // that writes readable files.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "image/image.h"
 #include "support/run_command.h"
@@ -46,6 +48,11 @@ TEST(CliTest, UsageErrorsExitTwoAndNameTheOption) {
       {{"render", "--out", "image.png"}, "--out"},
       {{"render", "--tonemap", "filmic"}, "--tonemap"},
       {{"render", "--integrator", "bidir"}, "--integrator"},
+      {{"render", "--sampling", "stratified"}, "--sampling"},
+      {{"render", "--env-strength", "-1"}, "--env-strength"},
+      {{"render", "--env-strength", "nan"}, "--env-strength"},
+      {{"render", "--env-strength", "2"}, "--env-strength: the scene has no environment image"},
+      {{"view", "--env-strength", "inf"}, "--env-strength"},
       {{"frobnicate"}, "frobnicate"},
       {{}, "Usage"},
   };
@@ -53,6 +60,26 @@ TEST(CliTest, UsageErrorsExitTwoAndNameTheOption) {
     const CommandResult result = runRaylab(c.args);
     EXPECT_EQ(result.exitCode, 2) << result.output;
     EXPECT_NE(result.output.find(c.mentions), std::string::npos) << result.output;
+  }
+}
+
+// A missing, unreadable or non-finite environment image: exit 1, a message naming the file, and no output.
+TEST(CliTest, ABadEnvironmentImageExitsOneNamingItAndWritesNothing) {
+  const std::filesystem::path dir = std::filesystem::path(scratchDir()) / "environment";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  Image nan(4, 2);
+  nan.set(3, 1, glm::vec4(1.0f, std::nanf(""), 0.0f, 1.0f));
+  writeExr((dir / "nan.exr").string(), nan);
+  std::ofstream(dir / "text.exr") << "P3 1 1 255 0 0 0";
+  const std::string out = (dir / "image.exr").string();
+  const std::string png = (dir / "image.png").string();
+  for (const std::string& file : {(dir / "missing.exr").string(), (dir / "nan.exr").string(), (dir / "text.exr").string()}) {
+    const CommandResult result = runRaylab({"render", "--env", file, "--out", out, "--png", png, "--spp", "1"});
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("--env: environment image " + file), std::string::npos) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    EXPECT_FALSE(std::filesystem::exists(png));
   }
 }
 

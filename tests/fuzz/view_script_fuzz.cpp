@@ -11,7 +11,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const raylab::Scene scene = [] {
     raylab::setWarningSink([](const std::string&) {});
-    return raylab::makeDefaultScene("");
+    return raylab::makeDefaultScene();
   }();
   try {
     const auto events = raylab::parseScript(std::string(reinterpret_cast<const char*>(data), size), "fuzz.txt");

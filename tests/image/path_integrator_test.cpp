@@ -19,6 +19,7 @@
 #include "scene/material_params.h"
 #include "scene/shapes.h"
 #include "shared/features.h"
+#include "image/path_test_support.h"
 #include "support/analytic.h"
 #include "support/gpu_test.h"
 
@@ -26,15 +27,6 @@ namespace raylab::test {
 namespace {
 
 class PathIntegratorTest : public GpuTest {};
-
-RenderSettings pathSettings(std::uint32_t size, std::uint32_t maxDepth, const Scene& scene) {
-  RenderSettings settings = pixelCentres(size, size);
-  settings.maxDepth = maxDepth;
-  KernelFeatures kernel = featuresOf(scene);
-  kernel.integrator = gpu::kIntegratorPath;
-  settings.kernel = kernel;
-  return settings;
-}
 
 // A unit sphere at the origin seen from +z, under a uniform environment of radiance `background`.
 Scene furnace(const gpu::MaterialRecord& material, glm::vec3 background) {
@@ -46,12 +38,6 @@ Scene furnace(const gpu::MaterialRecord& material, glm::vec3 background) {
   scene.camera.target = {0.0f, 0.0f, 0.0f};
   scene.camera.yfov = glm::radians(35.0f);
   return scene;
-}
-
-gpu::MaterialRecord material(const char* model, std::vector<std::pair<const char*, float>> params) {
-  gpu::MaterialRecord record = defaultRecord(findModel(model)->id);
-  for (const auto& [name, value] : params) setParam(record, name, glm::vec3(value), "test");
-  return record;
 }
 
 struct FurnaceCase {
@@ -209,13 +195,6 @@ TEST_F(PathIntegratorTest, AtDepthZeroThePathIntegratorEqualsTheSlidesDirectLigh
   EXPECT_LT(worst, 1e-6) << "path at D = 0 and slides differ";
 }
 
-RenderSettings samplingSettings(std::uint32_t size, std::uint32_t maxDepth, const Scene& scene, std::uint32_t sampling) {
-  RenderSettings settings = pathSettings(size, maxDepth, scene);
-  settings.kernel->sampling = sampling;
-  settings.jitter = true;
-  return settings;
-}
-
 // A glossy sphere on a Lambert floor under a small bright emissive sphere and a dim emissive quad.
 Scene areaLitScene(float lightRadius, glm::vec3 lightRadiance) {
   Scene scene;
@@ -233,65 +212,15 @@ Scene areaLitScene(float lightRadius, glm::vec3 lightRadiance) {
   return scene;
 }
 
-// Mean of channel g over each of the 4x4 regions of an image.
-std::vector<double> regionMeans(const Image& image) {
-  std::vector<double> means(16, 0.0);
-  std::vector<int> counts(16, 0);
-  for (std::uint32_t y = 0; y < image.height; ++y) {
-    for (std::uint32_t x = 0; x < image.width; ++x) {
-      const int region = int(y * 4 / image.height) * 4 + int(x * 4 / image.width);
-      means[region] += image.at(x, y).g;
-      counts[region] += 1;
-    }
-  }
-  for (int i = 0; i < 16; ++i) means[i] /= counts[i];
-  return means;
-}
-
-// The largest |t| over the 4x4 regions of the difference between two strategies, from kRuns independent pairs of
-// renders (seeds 1..kRuns): the run-to-run spread gives the standard error, heavy-tailed samples included.
-double worstRegionT(const Device& device, const Scene& scene, std::uint32_t samplingA, std::uint32_t samplingB,
-                    std::uint32_t runs, std::uint32_t spp) {
-  std::vector<std::vector<double>> differences(16);
-  double level = 0.0;
-  for (std::uint32_t run = 1; run <= runs; ++run) {
-    RenderSettings a = samplingSettings(56, 3, scene, samplingA);
-    RenderSettings b = samplingSettings(56, 3, scene, samplingB);
-    a.seed = b.seed = run;
-    const std::vector<double> ma = regionMeans(renderImage(device, scene, a, spp));
-    const std::vector<double> mb = regionMeans(renderImage(device, scene, b, spp));
-    for (int i = 0; i < 16; ++i) {
-      differences[i].push_back(ma[i] - mb[i]);
-      level += ma[i] / (16.0 * runs);
-    }
-  }
-  double worst = 0.0;
-  for (const std::vector<double>& d : differences) {
-    double mean = 0.0, squares = 0.0;
-    for (double v : d) mean += v;
-    mean /= d.size();
-    for (double v : d) squares += (v - mean) * (v - mean);
-    const double standardError = std::sqrt(squares / (d.size() - 1) / d.size());
-    // Differences below 1e-5 of the image's brightness are float rounding, not bias: the black sky corners
-    // differ by 7e-7 between strategies (a few grazing floor pixels at the horizon), a few ulps of their values.
-    const double excess = std::max(0.0, std::abs(mean) - 1e-5 * level);
-    if (standardError > 0.0) {
-      worst = std::max(worst, excess / standardError);
-    } else {
-      EXPECT_EQ(mean, 0.0);  // a region the strategies estimate identically (the sky)
-    }
-  }
-  return worst;
-}
-
 // MIS, BSDF sampling alone and light sampling alone are three unbiased estimators of one image. Per region a
 // t-test over 16 independent runs (15 degrees of freedom) of the difference beyond 1e-5 of the image's
 // brightness: |t| < 4.5 has a false-alarm rate of 4e-4 per region, about 1.3% over the 2 x 16 regions.
 TEST_F(PathIntegratorTest, MisBsdfAndLightSamplingConvergeToTheSameImage) {
   const Scene scene = areaLitScene(0.3f, glm::vec3(40.0f));
-  EXPECT_LT(worstRegionT(device(), scene, gpu::kSamplingMis, gpu::kSamplingBsdf, 16, 32), 4.5)
+  const RenderSettings mis = samplingSettings(56, 3, scene, gpu::kSamplingMis);
+  EXPECT_LT(worstRegionT(device(), scene, mis, samplingSettings(56, 3, scene, gpu::kSamplingBsdf), 16, 32), 4.5)
       << "MIS against BSDF sampling";
-  EXPECT_LT(worstRegionT(device(), scene, gpu::kSamplingMis, gpu::kSamplingLight, 16, 32), 4.5)
+  EXPECT_LT(worstRegionT(device(), scene, mis, samplingSettings(56, 3, scene, gpu::kSamplingLight), 16, 32), 4.5)
       << "MIS against light sampling";
 }
 

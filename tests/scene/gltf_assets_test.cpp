@@ -25,6 +25,7 @@ const std::map<std::string, Expected> kExpected = {
     {"cornell_box_area", {2, 0, 6}},  // lit by its emissive quad only: no default light
     {"minimal", {1, 1, 1}},
     {"showcase", {10, 3, 2}},
+    {"showcase_hdri", {10, 0, 2}},  // lit by its environment image only: no default light
     {"sweep_ashikhmin_shirley_nv", {8, 1, 0}},
     {"sweep_blinnphong_s", {8, 1, 0}},
     {"sweep_cooktorrance_eta", {8, 1, 0}},

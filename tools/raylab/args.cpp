@@ -55,21 +55,32 @@ void ArgParser::option(const std::string& name, std::optional<std::uint32_t>* va
                       }});
 }
 
+float ArgParser::parseNumber(const std::string& name, const std::string& text, float min, float max) const {
+  char* end = nullptr;
+  const float parsed = std::strtof(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(parsed)) fail(name + ": expected a finite number, got '" + text + "'");
+  if (parsed < min || parsed > max) {
+    char bounds[64];
+    std::snprintf(bounds, sizeof bounds, "[%g, %g]", min, max);
+    fail(name + ": " + text + " is outside " + bounds);
+  }
+  return parsed;
+}
+
 void ArgParser::option(const std::string& name, float* value, const std::string& help, float min, float max) {
   char range[64];
   std::snprintf(range, sizeof range, " [%g, %g]", min, max);
   options_.push_back({name, "X", help + range, [this, name, value, min, max](const std::string& text) {
-                        char* end = nullptr;
-                        const float parsed = std::strtof(text.c_str(), &end);
-                        if (text.empty() || *end != '\0' || !std::isfinite(parsed)) {
-                          fail(name + ": expected a finite number, got '" + text + "'");
-                        }
-                        if (parsed < min || parsed > max) {
-                          char bounds[64];
-                          std::snprintf(bounds, sizeof bounds, "[%g, %g]", min, max);
-                          fail(name + ": " + text + " is outside " + bounds);
-                        }
-                        *value = parsed;
+                        *value = parseNumber(name, text, min, max);
+                      }});
+}
+
+void ArgParser::option(const std::string& name, std::optional<float>* value, const std::string& help, float min,
+                       float max) {
+  char range[64];
+  std::snprintf(range, sizeof range, " [%g, %g]", min, max);
+  options_.push_back({name, "X", help + range, [this, name, value, min, max](const std::string& text) {
+                        *value = parseNumber(name, text, min, max);
                       }});
 }
 

@@ -22,6 +22,7 @@ class ArgParser {
               std::uint32_t max);
   void option(const std::string& name, std::optional<std::uint32_t>* value, const std::string& help);
   void option(const std::string& name, float* value, const std::string& help, float min, float max);
+  void option(const std::string& name, std::optional<float>* value, const std::string& help, float min, float max);
   // One of `choices`.
   void choice(const std::string& name, std::string* value, const std::vector<std::string>& choices,
               const std::string& help);
@@ -44,6 +45,8 @@ class ArgParser {
     std::string* value;
   };
   [[noreturn]] void fail(const std::string& message) const;
+  // A finite number in [min, max], or fail() naming the option.
+  float parseNumber(const std::string& name, const std::string& text, float min, float max) const;
 
   std::string command_;
   std::string synopsis_;

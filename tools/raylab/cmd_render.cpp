@@ -46,6 +46,8 @@ struct RenderOptions {
   std::string fresnel = "exact";
   std::string integrator = "auto";
   std::string sampling = "mis";
+  std::string environment;
+  std::optional<float> environmentStrength;
   std::optional<std::uint32_t> device;
 };
 
@@ -178,7 +180,11 @@ int runRender(int argc, char** argv) {
   args.choice("--tonemap", &o.toneMap, {"clamp", "reinhard", "aces"}, "tone curve of the PNG (default clamp)");
   args.choice("--integrator", &o.integrator, {"auto", "slides", "path"},
               "slides: equation 2 of the slides (mirror weight, direct light); path: the rendering equation; "
-              "auto (default): path when the scene has an emissive surface");
+              "auto (default): path when the scene has an emissive surface or an environment image");
+  args.option("--env", &o.environment, "FILE.exr",
+              "light the scene with this equirectangular HDR image (+Y up), replacing the scene's own");
+  args.option("--env-strength", &o.environmentStrength, "multiplies the environment image (default: the scene's, or 1)",
+              0.0f, 1e30f);
   args.choice("--sampling", &o.sampling, {"mis", "bsdf", "light"},
               "path integrator: how emitters are estimated, MIS of light and BSDF sampling (default) or one alone");
   args.flag("--stats", &o.stats, "print which BRDF models and features the kernel was compiled with");
@@ -195,7 +201,7 @@ int runRender(int argc, char** argv) {
   if (!o.pngPath.empty()) requireExtension("--png", o.pngPath, ".png");
   if (!o.reportPath.empty()) requireExtension("--report", o.reportPath, ".json");
   // Each output has its own default, so giving one never suppresses the other.
-  const SceneRequest request{o.scene, o.camera, o.allowOutsideUris};
+  const SceneRequest request{o.scene, o.camera, o.allowOutsideUris, o.environment, o.environmentStrength};
   if (o.exrPath.empty() && !o.noExr) o.exrPath = "out/" + sceneName(request) + ".exr";
   if (o.pngPath.empty() && !o.noPng) o.pngPath = "out/" + sceneName(request) + ".png";
   if (o.exrPath.empty() && o.pngPath.empty() && o.reportPath.empty()) {

@@ -41,6 +41,8 @@ int runView(int argc, char** argv) {
   std::string scriptPath;
   std::string toneMap = "clamp";
   std::string integrator = "auto";
+  std::string environment;
+  std::optional<float> environmentStrength;
   float targetMs = 50.0f;
   bool noAntialiasing = false;
   bool allowOutsideUris = false;
@@ -62,7 +64,10 @@ int runView(int argc, char** argv) {
   args.option("--seed", &o.render.seed, "random seed of the sample pattern", 0, UINT32_MAX);
   args.option("--max-depth", &o.render.maxDepth, "bounces after the primary hit (mirror, glass)", 0, 64);
   args.choice("--integrator", &integrator, {"auto", "slides", "path"},
-              "as raylab render: slides, path, or auto (default: path when the scene has an emissive surface)");
+              "as raylab render: slides, path, or auto (default: path when the scene has an emissive surface or "
+              "an environment image)");
+  args.option("--env", &environment, "FILE.exr", "as raylab render: light the scene with this HDR image (+Y up)");
+  args.option("--env-strength", &environmentStrength, "multiplies the environment image", 0.0f, 1e30f);
   args.flag("--no-aa", &noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
   args.option("--target-ms", &targetMs, "frame time to hold while the view changes", 5.0f, 1000.0f);
   args.option("--spp-limit", &o.sppLimit, "stop refining at this many samples per pixel; 0: never", 0, 1u << 20);
@@ -123,7 +128,7 @@ int runView(int argc, char** argv) {
     checkOutputPath(paths.png, event.where);
   }
 
-  const Scene scene = loadScene({scenePath, camera, allowOutsideUris});
+  const Scene scene = loadScene({scenePath, camera, allowOutsideUris, environment, environmentStrength});
   runViewer(scene, o);
   return kExitOk;
 }

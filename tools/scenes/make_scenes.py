@@ -194,6 +194,10 @@ class Gltf:
     def background(self, rgb):
         self.doc["scenes"][0].setdefault("extras", {})["raylab"] = {"background": rounded(list(rgb))}
 
+    def environment(self, uri, strength=1.0):
+        """Lights the scene with an equirectangular EXR beside it (docs/integrators.md)."""
+        self.doc["extras"] = {"raylab": {"environment": {"uri": uri, "strength": strength}}}
+
     def write(self, directory):
         doc = dict(self.doc)
         if self.data:
@@ -382,6 +386,28 @@ def showcase():
     """Every model side by side on a checkerboard, under a warm key, a cool fill and a rim light."""
     g = Gltf("showcase")
     g.background((0.03, 0.035, 0.05))
+    showcase_objects(g)
+    g.point_light("key", [-5.0, 8.0, 6.0], 120.0, (1.0, 0.92, 0.8))
+    g.point_light("fill", [7.0, 4.0, 5.0], 35.0, (0.7, 0.8, 1.0))
+    g.point_light("rim", [2.0, 6.0, -8.0], 60.0, (1.0, 1.0, 1.0))
+    return g
+
+
+def showcase_hdri():
+    """The showcase's spheres lit by a real HDR environment alone (Blender's CC0 studio-light worlds, copied
+    beside the scenes by tools/setup.sh), so that `raylab render` picks the path integrator."""
+    g = Gltf("showcase_hdri")
+    showcase_objects(g)
+    g.environment("environments/%s.exr" % SHOWCASE_HDRI)
+    return g
+
+
+# The world of showcase_hdri.gltf, from /usr/share/blender/datafiles/studiolights/world (Debian blender-data).
+SHOWCASE_HDRI = "sunrise"
+
+
+def showcase_objects(g):
+    """Ten spheres, one per model plus glass and a mirror, in two staggered rows on a checkerboard floor."""
     light = g.material("checker light", {"model": "lambert", "rho_d": [0.7, 0.7, 0.68]}, (0.7, 0.7, 0.68))
     dark = g.material("checker dark", {"model": "lambert", "rho_d": [0.18, 0.18, 0.2]}, (0.18, 0.18, 0.2))
     add_checker(g, "floor", (-10.0, 10.0), (-8.0, 8.0), 0.0, 1.0, (light, dark))
@@ -412,10 +438,6 @@ def showcase():
         preview = params.get("rho_d", params.get("Rd", params.get("tint", [0.8, 0.8, 0.8])))
         g.sphere(name, [x, radius, z], radius, g.material(name, params, preview))
     g.camera("camera", [0.0, 4.2, 9.0], [0.0, 0.3, 0.0], 33.0)
-    g.point_light("key", [-5.0, 8.0, 6.0], 120.0, (1.0, 0.92, 0.8))
-    g.point_light("fill", [7.0, 4.0, 5.0], 35.0, (0.7, 0.8, 1.0))
-    g.point_light("rim", [2.0, 6.0, -8.0], 60.0, (1.0, 1.0, 1.0))
-    return g
 
 
 def cornell_room(g):
@@ -500,7 +522,7 @@ def main():
         return
     os.makedirs(options.directory, exist_ok=True)
     sweeps = [sweep_scene(options.raylab, *sweep) for sweep in SWEEPS]
-    for scene in sweeps + [showcase(), cornell_box(), cornell_box_area(), minimal()]:
+    for scene in sweeps + [showcase(), showcase_hdri(), cornell_box(), cornell_box_area(), minimal()]:
         path = scene.write(options.directory)
         print("wrote %s (%d bytes)" % (os.path.relpath(path), os.path.getsize(path)))
 

@@ -1,0 +1,86 @@
+#include "scene/environment.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "image/image.h"
+#include "scene/gltf_files.h"
+#include "util/error.h"
+#include "util/log.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979323846f;
+
+}  // namespace
+
+void checkEnvironmentStrength(float strength, const std::string& where) {
+  if (!(strength >= 0.0f) || !std::isfinite(strength)) {
+    throw Error(where + ": environment strength must be a finite number >= 0, found " + std::to_string(strength));
+  }
+}
+
+Environment loadEnvironment(const std::string& path, float strength, const std::string& where) {
+  checkEnvironmentStrength(strength, where);
+  const std::string label = where + ": environment image " + path;
+  std::string bytes;
+  try {
+    bytes = gltf::readSceneFile(path, kMaxEnvironmentFileBytes);
+  } catch (const Error& e) {
+    throw Error(where + ": environment image " + e.what());
+  }
+  const Image image = decodeExr(bytes, label, kMaxEnvironmentTexels);
+  Environment environment;
+  environment.path = path;
+  environment.strength = strength;
+  environment.width = image.width;
+  environment.height = image.height;
+  environment.texels.resize(std::size_t(image.width) * image.height);
+  std::uint64_t negative = 0;
+  float mostNegative = 0.0f;
+  double sum = 0.0;
+  for (std::uint32_t y = 0; y < image.height; ++y) {
+    for (std::uint32_t x = 0; x < image.width; ++x) {
+      glm::vec3 texel(image.at(x, y));
+      if (!std::isfinite(texel.r + texel.g + texel.b)) {
+        throw Error(label + ": texel (" + std::to_string(x) + ", " + std::to_string(y) + ") is (" +
+                    std::to_string(texel.r) + ", " + std::to_string(texel.g) + ", " + std::to_string(texel.b) +
+                    "); radiance must be finite");
+      }
+      // Lossy EXR compression leaves small negative values in real HDRIs (Blender's have -4e-6): not radiance.
+      if (texel.r < 0.0f || texel.g < 0.0f || texel.b < 0.0f) {
+        ++negative;
+        mostNegative = std::min({mostNegative, texel.r, texel.g, texel.b});
+        texel = glm::max(texel, glm::vec3(0.0f));
+      }
+      environment.texels[std::size_t(y) * image.width + x] = texel;
+      sum += double(texel.r + texel.g + texel.b) / 3.0;
+    }
+  }
+  // Compression noise (Blender's sunrise.exr: down to -0.004, under 1% of its mean) is zeroed silently;
+  // anything larger is worth a word.
+  const double mean = sum / double(environment.texels.size());
+  if (negative > 0 && double(-mostNegative) > 0.05 * mean) {
+    warn(label + ": " + std::to_string(negative) + " texels had negative values (down to " +
+         std::to_string(mostNegative) + "), read as 0");
+  }
+  return environment;
+}
+
+glm::vec3 environmentDirection(glm::vec2 uv) {
+  const float theta = uv.y * kPi;
+  const float phi = 2.0f * kPi * uv.x;
+  const float sinTheta = std::sin(theta);
+  return {sinTheta * std::sin(phi), std::cos(theta), -sinTheta * std::cos(phi)};
+}
+
+glm::vec2 environmentUv(glm::vec3 d) {
+  float u = std::atan2(d.x, -d.z) / (2.0f * kPi);
+  if (u < 0.0f) u += 1.0f;
+  if (u >= 1.0f) u = 0.0f;
+  return {u, std::acos(std::clamp(d.y, -1.0f, 1.0f)) / kPi};
+}
+
+}  // namespace raylab

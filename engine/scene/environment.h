@@ -1,0 +1,42 @@
+// The environment: an equirectangular HDR image (OpenEXR) around the scene, +Y up, lighting the path
+// integrator and seen by rays that escape. Conventions in docs/integrators.md ("Environment light"): a world
+// direction d looks up u = atan2(d.x, -d.z) / 2pi wrapped to [0, 1), v = acos(d.y) / pi, (0, 0) the top-left
+// corner, bilinear between texel centres (Mitsuba 3's envmap with an identity transform).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace raylab {
+
+struct Environment {
+  std::string path;        // the EXR file, for messages and the viewer's panel
+  float strength = 1.0f;   // multiplies every texel
+  float rotation = 0.0f;   // radians about +Y: the image turned counter-clockwise seen from above
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<glm::vec3> texels;  // linear RGB radiance, rows from the top; empty: no image
+
+  bool hasImage() const { return !texels.empty(); }
+};
+
+// Largest environment image, in texels (16384 x 8192 half-float would be 768 MiB on the device).
+inline constexpr std::uint64_t kMaxEnvironmentTexels = std::uint64_t(1) << 26;
+inline constexpr std::uint64_t kMaxEnvironmentFileBytes = std::uint64_t(1) << 30;
+
+// Reads the image at `path` (a regular OpenEXR file). Errors start with `where` and name the file: missing,
+// not an EXR, too large, or a texel that is NaN or Inf (with its position). Negative values (lossy
+// compression leaves a few) read as 0, with a warning.
+Environment loadEnvironment(const std::string& path, float strength, const std::string& where);
+
+// Throws Error(where: ...) unless strength is finite and >= 0.
+void checkEnvironmentStrength(float strength, const std::string& where);
+
+// The direction of (u, v) in the image's own frame, and back (before the rotation about +Y).
+glm::vec3 environmentDirection(glm::vec2 uv);
+glm::vec2 environmentUv(glm::vec3 direction);
+
+}  // namespace raylab
