@@ -146,12 +146,13 @@ class SceneBuilder {
     }
   }
 
-  // The root's extras.raylab.environment = {"uri": "FILE.exr", "strength": S}, with --env and --env-strength
-  // taking its place (docs/integrators.md, "Environment light").
+  // The root's extras.raylab.environment = {"uri": "FILE.exr", "strength": S, "rotation": degrees}, with --env,
+  // --env-strength and --env-rotation taking its place (docs/integrators.md, "Environment light").
   void readEnvironment() {
     std::string path;
     std::string where = document_.label + ": extras.raylab.environment";
     double strength = 1.0;
+    double rotation = 0.0;  // degrees about +Y
     if (const json* raylab = findPath(document_.json, {"extras", "raylab"})) {
       const std::string root = document_.label + ": extras.raylab";
       if (!raylab->is_object()) throw Error(root + ": expected an object, found " + gltf::quote(*raylab));
@@ -170,11 +171,16 @@ class SceneBuilder {
             if (!(strength >= 0.0) || !(strength <= 3.4e38)) {
               throw Error(where + ".strength: expected a finite number >= 0, found " + gltf::quote(v));
             }
-          } else if (field == "uri" || field == "strength") {
+          } else if (field == "rotation" && v.is_number()) {
+            rotation = v.get<double>();
+            if (!(std::abs(rotation) <= 360.0)) {
+              throw Error(where + ".rotation: expected degrees in [-360, 360], found " + gltf::quote(v));
+            }
+          } else if (field == "uri" || field == "strength" || field == "rotation") {
             throw Error(where + "." + field + ": expected a " + (field == "uri" ? "string" : "number") + ", found " +
                         gltf::quote(v));
           } else {
-            throw Error(where + ": unknown key '" + field + "' (an environment has uri and strength)");
+            throw Error(where + ": unknown key '" + field + "' (an environment has uri, strength and rotation)");
           }
         }
         if (uri.empty() && options_.environment.empty()) throw Error(where + ": has no uri");
@@ -198,7 +204,15 @@ class SceneBuilder {
         throw Error("--env-strength: the scene has no environment image (give one with --env FILE.exr)", kExitUsage);
       }
     }
-    if (!path.empty()) scene_.environment = loadEnvironment(path, float(strength), where);
+    if (options_.environmentRotation) {
+      rotation = *options_.environmentRotation;
+      if (path.empty()) {
+        throw Error("--env-rotation: the scene has no environment image (give one with --env FILE.exr)", kExitUsage);
+      }
+    }
+    if (path.empty()) return;
+    scene_.environment = loadEnvironment(path, float(strength), where);
+    scene_.environment.rotation = glm::radians(float(rotation));
   }
 
   glm::mat4 localTransform(const tinygltf::Node& node, const std::string& where) {

@@ -16,6 +16,7 @@ struct GltfOptions {
   bool allowOutsideUris = false;  // --allow-outside-uris: buffers and images may lie outside the file's folder
   std::string environment;  // --env FILE.exr: replaces the file's extras.raylab.environment
   std::optional<float> environmentStrength;  // --env-strength S: replaces its strength
+  std::optional<float> environmentRotation;  // --env-rotation DEGREES about +Y: replaces its rotation
 };
 
 // Loads the default scene of a .gltf or .glb file (told apart by content). Scene.name is the file's stem.

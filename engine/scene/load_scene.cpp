@@ -11,7 +11,7 @@ namespace raylab {
 
 Scene loadScene(const SceneRequest& request) {
   const GltfOptions options{request.camera, request.allowOutsideUris, request.environment,
-                            request.environmentStrength};
+                            request.environmentStrength, request.environmentRotation};
   if (request.path.empty()) return makeDefaultScene(options);
   try {
     return loadGltfFile(request.path, options);

@@ -14,6 +14,7 @@ struct SceneRequest {
   bool allowOutsideUris = false;  // --allow-outside-uris (docs/scenes.md)
   std::string environment;        // --env FILE.exr: replaces the scene's environment image
   std::optional<float> environmentStrength;  // --env-strength S
+  std::optional<float> environmentRotation;  // --env-rotation DEGREES
 };
 
 Scene loadScene(const SceneRequest& request);

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cfloat>
 #include <cstdio>
+#include <filesystem>
 
 #include "scene/material_params.h"
+#include "shared/features.h"
 #include "util/progress.h"
 #include "view/scene_edits.h"
 
@@ -69,6 +71,25 @@ bool drawMaterial(Material& material) {
   return changed;
 }
 
+// The environment image's strength and rotation about +Y, or the uniform background without an image.
+bool drawEnvironment(Scene& scene) {
+  Environment& environment = scene.environment;
+  if (!environment.hasImage()) {
+    return ImGui::ColorEdit3("background", &scene.background.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+  }
+  const std::string file = std::filesystem::path(environment.path).filename().string();
+  ImGui::Text("%s  %ux%u", file.c_str(), environment.width, environment.height);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", environment.path.c_str());
+  bool changed = ImGui::SliderFloat("strength", &environment.strength, 0.0f, 100.0f, "%.3g",
+                                    ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+  float degrees = glm::degrees(environment.rotation);
+  if (ImGui::SliderFloat("rotation", &degrees, -180.0f, 180.0f, "%.1f deg", ImGuiSliderFlags_AlwaysClamp)) {
+    environment.rotation = glm::radians(degrees);
+    changed = true;
+  }
+  return changed;
+}
+
 bool drawLight(Light& light, float dragSpeed) {
   gpu::LightRecord& record = light.record;
   bool changed = false;
@@ -113,6 +134,12 @@ PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selec
   if (!status.message.empty()) ImGui::TextWrapped("%s", status.message.c_str());
 
   if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const char* integrators[] = {"slides", "path"};
+    int integrator = settings.integrator == gpu::kIntegratorPath ? 1 : 0;
+    if (ImGui::Combo("integrator", &integrator, integrators, 2)) {
+      settings.integrator = integrator == 1 ? gpu::kIntegratorPath : gpu::kIntegratorSlides;
+      edits.integrator = true;
+    }
     int depth = static_cast<int>(settings.maxDepth);
     if (ImGui::SliderInt("max depth", &depth, 0, 64, "%d", ImGuiSliderFlags_AlwaysClamp)) {
       settings.maxDepth = static_cast<std::uint32_t>(depth);
@@ -131,6 +158,12 @@ PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selec
     if (ImGui::Button("reset view (R)")) edits.resetView = true;
     ImGui::SameLine();
     if (ImGui::Button("screenshot (F12)")) edits.screenshot = true;
+  }
+
+  if (ImGui::CollapsingHeader("Environment", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::PushID("environment");
+    edits.environment |= drawEnvironment(scene);
+    ImGui::PopID();
   }
 
   if (ImGui::CollapsingHeader("Materials", ImGuiTreeNodeFlags_DefaultOpen) && !scene.materials.empty()) {

@@ -1,4 +1,4 @@
-// The viewer's ImGui panel: status line, render settings, the materials (model and parameters, driven by the
+// The viewer's ImGui panel: status line, render settings (integrator included), the environment, the materials (model and parameters, driven by the
 // parameter table of scene/material_params.h) and the lights. It edits plain values and reports what changed;
 // the viewer uploads and resets.
 #pragma once
@@ -15,6 +15,7 @@ namespace raylab {
 
 // What the panel edits besides the scene.
 struct ViewSettings {
+  std::uint32_t integrator = 0;  // gpu::kIntegrator...
   std::uint32_t maxDepth = 8;
   float exposure = 0.0f;
   ToneMap toneMap = ToneMap::kClamp;
@@ -42,6 +43,8 @@ struct PanelEdits {
   bool materials = false;
   bool lights = false;
   bool maxDepth = false;
+  bool integrator = false;
+  bool environment = false;  // strength, rotation or the uniform background
   bool resolutionScale = false;
   bool resetView = false;
   bool screenshot = false;

@@ -123,7 +123,9 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
     // Events of frame N apply before frame N is traced: at frame 0 nothing has been traced yet.
     if (event.frame == 0) throw Error(where + ": a screenshot at frame 0 would be black (nothing traced yet); use 1 or later");
   } else if (action == "set") {
-    if (words.size() < 5) throw Error(where + ": expected 'at <frame> set material|light|exposure|max-depth ...'");
+    if (words.size() < 5) {
+      throw Error(where + ": expected 'at <frame> set material|light|exposure|max-depth|integrator|environment ...'");
+    }
     const std::string& what = words[3];
     if (what == "material") {
       if (words.size() != 7 && words.size() != 9) {
@@ -172,8 +174,27 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
       event.value.x = float(parseCount(words[4], where, "the depth"));
       event.valueCount = 1;
       if (event.value.x > 64.0f) throw Error(where + ": max-depth must be within 0..64");
+    } else if (what == "integrator") {
+      expectWords(words, 5, where, "at <frame> set integrator slides|path");
+      event.action = ScriptAction::kSetIntegrator;
+      event.param = words[4];
+      if (event.param != "slides" && event.param != "path") {
+        throw Error(where + ": the integrator is slides or path, not '" + event.param + "'");
+      }
+    } else if (what == "environment") {
+      expectWords(words, 6, where, "at <frame> set environment strength|rotation <value>");
+      const std::string& property = words[4];
+      if (property == "strength") event.action = ScriptAction::kSetEnvironmentStrength;
+      else if (property == "rotation") event.action = ScriptAction::kSetEnvironmentRotation;
+      else throw Error(where + ": an environment has strength and rotation, not '" + property + "'");
+      readValues(event, words, 5, "an environment value");
+      if (!finiteInFloat(event.value) || (property == "strength" && event.value.x < 0.0f)) {
+        throw Error(where + ": the environment's " + property + " must be finite" +
+                    (property == "strength" ? " and >= 0" : ""));
+      }
     } else {
-      throw Error(where + ": 'set' takes material, light, exposure or max-depth, not '" + what + "'");
+      throw Error(where + ": 'set' takes material, light, exposure, max-depth, integrator or environment, not '" +
+                  what + "'");
     }
   } else {
     throw Error(where + ": unknown action '" + action +

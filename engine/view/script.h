@@ -12,6 +12,9 @@
 //   at <frame> set light <name> cone <inner> <outer>    spot lights, degrees from the axis
 //   at <frame> set exposure <stops>
 //   at <frame> set max-depth <bounces>
+//   at <frame> set integrator slides|path
+//   at <frame> set environment strength <S>        the environment image's; S >= 0
+//   at <frame> set environment rotation <degrees>  about +Y
 //   at <frame> model <material> <model>
 //   at <frame> resize <width> <height>
 //   at <frame> screenshot <file.exr|file.png>      also writes the other beside it; frame >= 1
@@ -41,6 +44,9 @@ enum class ScriptAction {
   kSetLightCone,
   kSetExposure,
   kSetMaxDepth,
+  kSetIntegrator,            // param: "slides" or "path"
+  kSetEnvironmentStrength,
+  kSetEnvironmentRotation,   // value.x in degrees
   kModel,
   kResize,
   kScreenshot,

@@ -14,6 +14,7 @@
 
 #include "render/kernel_features.h"
 #include "scene/gpu_scene.h"
+#include "shared/features.h"
 #include "shared/frame.h"
 #include "util/error.h"
 #include "util/files.h"
@@ -148,8 +149,7 @@ void openWindowAndDevice(Viewer& v) {
   v.report.driver = chosen.driver;
 }
 
-// What the scene needs compiled in, with the integrator chosen once at start-up (switching it would change
-// what every pixel means mid-refinement).
+// What the scene needs compiled in, with the integrator of the panel (chosen at start-up by --integrator).
 KernelFeatures neededKernel(const Viewer& v) {
   KernelFeatures needed = featuresOf(v.scene);
   needed.integrator = v.integrator;
@@ -193,6 +193,7 @@ void setUp(Viewer& v) {
   v.controller = makeCameraController(v.scene);
   v.camera = v.scene.camera;
   v.settings.maxDepth = v.options.render.maxDepth;
+  v.settings.integrator = v.integrator;
   v.settings.exposure = v.options.exposure;
   v.settings.toneMap = v.options.toneMap;
   v.settings.targetMs = static_cast<float>(v.options.targetMs);
@@ -331,6 +332,15 @@ void ensureKernel(Viewer& v) {
   if (v.automation) installKernel(v);  // automation is deterministic: the frame waits for its kernel
 }
 
+// The integrator of v.settings: a kernel of its own, built in the background like a new model's.
+void switchIntegrator(Viewer& v) {
+  if (v.integrator == v.settings.integrator) return;
+  v.integrator = v.settings.integrator;
+  v.needed = neededKernel(v);
+  ensureKernel(v);
+  v.changed = true;
+}
+
 void uploadSceneEdits(Viewer& v, bool materials, bool lights) {
   if (!materials && !lights) return;
   waitForFrames(v);  // on a CPU device the buffers are host memory that running frames read
@@ -387,6 +397,18 @@ void applyScriptEvents(Viewer& v) {
         break;
       case ScriptAction::kSetMaxDepth:
         v.settings.maxDepth = static_cast<std::uint32_t>(event.value.x);
+        break;
+      case ScriptAction::kSetIntegrator:
+        v.settings.integrator = event.param == "path" ? gpu::kIntegratorPath : gpu::kIntegratorSlides;
+        switchIntegrator(v);
+        break;
+      case ScriptAction::kSetEnvironmentStrength:
+      case ScriptAction::kSetEnvironmentRotation:
+        if (!v.scene.environment.hasImage()) {
+          throw Error(event.where + ": the scene has no environment image (give one with --env FILE.exr)");
+        }
+        if (event.action == ScriptAction::kSetEnvironmentStrength) v.scene.environment.strength = event.value.x;
+        else v.scene.environment.rotation = glm::radians(event.value.x);
         break;
       case ScriptAction::kResize:
         // The size of the image, as --width/--height: the panel's strip comes on top.
@@ -621,7 +643,8 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
     v.camera = v.controller.home;
     v.changed = true;
   }
-  if (edits.maxDepth) v.changed = true;
+  if (edits.maxDepth || edits.environment) v.changed = true;
+  if (edits.integrator) switchIntegrator(v);
   if (edits.resolutionScale) v.extentStale = true;
   uploadSceneEdits(v, edits.materials, edits.lights);
   if (edits.screenshot) {
@@ -642,6 +665,9 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
     v.renderer.params.width = plan.traceExtent.x;
     v.renderer.params.height = plan.traceExtent.y;
     v.renderer.params.maxDepth = v.settings.maxDepth;
+    v.renderer.params.environmentStrength = v.scene.environment.strength;
+    v.renderer.params.environmentRotation = v.scene.environment.rotation;
+    v.renderer.params.background = v.scene.background;
     setCamera(v.renderer, v.camera);
   }
 

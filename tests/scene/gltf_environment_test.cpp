@@ -51,12 +51,13 @@ TEST(GltfEnvironment, TheFileNamesItsImageAndStrengthAndTheCommandLineReplacesTh
   const fs::path dir = freshDir("names");
   writeEnvironment(dir / "sky.exr", 8, 4, gradient);
   writeEnvironment(dir / "other.exr", 4, 2, gradient);
-  const fs::path path = writeScene(dir, {{"environment", {{"uri", "sky.exr"}, {"strength", 2.5}}}});
+  const fs::path path = writeScene(dir, {{"environment", {{"uri", "sky.exr"}, {"strength", 2.5}, {"rotation", 90.0}}}});
   const Scene scene = loadGltfFile(path.string(), {});
   ASSERT_TRUE(scene.environment.hasImage());
   EXPECT_EQ(scene.environment.width, 8u);
   EXPECT_EQ(scene.environment.height, 4u);
   EXPECT_EQ(scene.environment.strength, 2.5f);
+  EXPECT_FLOAT_EQ(scene.environment.rotation, 3.14159265f / 2.0f);
   EXPECT_EQ(scene.environment.texels[1 * 8 + 3], glm::vec3(0.3f, 1.0f, 0.2f));
   EXPECT_TRUE(scene.lights.empty()) << "an environment lights the scene: no default light";
 
@@ -95,7 +96,8 @@ TEST(GltfEnvironment, BadEnvironmentsAreRefusedNamingTheFieldOrFile) {
       {{{"environment", {{"uri", "sky.exr"}, {"strength", "2"}}}}, "environment.strength: expected a number"},
       {{{"environment", {{"uri", 3}}}}, "environment.uri: expected a string"},
       {{{"environment", {{"strength", 1.0}}}}, "environment: has no uri"},
-      {{{"environment", {{"uri", "sky.exr"}, {"rotation", 1.0}}}}, "unknown key 'rotation'"},
+      {{{"environment", {{"uri", "sky.exr"}, {"turn", 1.0}}}}, "unknown key 'turn'"},
+      {{{"environment", {{"uri", "sky.exr"}, {"rotation", 400.0}}}}, "environment.rotation: expected degrees"},
       {{{"environment", "sky.exr"}}, "extras.raylab.environment: expected {"},
       {{{"background", {1, 1, 1}}}, "unknown key 'background'"},
       {{{"environment", {{"uri", "data:image/x-exr;base64,AAAA"}}}}, "has a scheme"},

@@ -174,9 +174,12 @@ TEST(ScriptTest, ParsesEveryActionSortedByFrame) {
       "at 1 zoom 0.5\n"
       "at 1 pan 0.1 0\n"
       "at 7 set exposure -1.5\n"
-      "at 7 set max-depth 3\n",
+      "at 7 set max-depth 3\n"
+      "at 8 set integrator path\n"
+      "at 8 set environment strength 2.5\n"
+      "at 8 set environment rotation -45\n",
       "s.txt");
-  ASSERT_EQ(events.size(), 10u);
+  ASSERT_EQ(events.size(), 13u);
   EXPECT_EQ(events[0].action, ScriptAction::kZoom);
   EXPECT_EQ(events[1].action, ScriptAction::kPan);
   EXPECT_EQ(events[2].action, ScriptAction::kSetMaterial);
@@ -196,6 +199,13 @@ TEST(ScriptTest, ParsesEveryActionSortedByFrame) {
   EXPECT_FALSE(resetsAccumulation(events[8]));
   EXPECT_EQ(events[9].action, ScriptAction::kSetMaxDepth);
   EXPECT_TRUE(resetsAccumulation(events[9]));
+  EXPECT_EQ(events[10].action, ScriptAction::kSetIntegrator);
+  EXPECT_EQ(events[10].param, "path");
+  EXPECT_EQ(events[11].action, ScriptAction::kSetEnvironmentStrength);
+  EXPECT_EQ(events[11].value.x, 2.5f);
+  EXPECT_EQ(events[12].action, ScriptAction::kSetEnvironmentRotation);
+  EXPECT_EQ(events[12].value.x, -45.0f);
+  EXPECT_TRUE(resetsAccumulation(events[12]));
 }
 
 TEST(ScriptTest, ErrorsNameTheFileAndLine) {
@@ -216,6 +226,10 @@ TEST(ScriptTest, ErrorsNameTheFileAndLine) {
       {"at 1 set light key direction 0 0 0", "non-zero"},
       {"at 1 set light key intensity 1e39 1 1", "number"},
       {"orbit 1 2", "at <frame>"},
+      {"at 1 set integrator bidir", "slides or path"},
+      {"at 1 set environment strength -1", ">= 0"},
+      {"at 1 set environment exposure 1", "strength and rotation"},
+      {"at 1 set environment rotation nan", "number"},
   };
   for (const auto& [line, mentions] : cases) {
     try {

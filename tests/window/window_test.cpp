@@ -244,6 +244,33 @@ TEST(WindowTest, SwitchingToAModelTheKernelLacksRebuildsTheKernelAndRendersIt) {
   EXPECT_GT(glassSum / count, 1e-3) << "the glass ball is black: its kernel does not refract";
 }
 
+// The panel's integrator and environment controls, as a script drives them: switching from slides to path and
+// turning and dimming the environment gives, after N still frames, the image `raylab render` computes with the
+// same options and N samples.
+TEST(WindowTest, SwitchingToThePathIntegratorAndEditingTheEnvironmentEqualsRenderWithTheSameOptions) {
+  const std::string dir = scratchDir();
+  const std::string environment = std::string(RAYLAB_SOURCE_DIR) + "/assets/scenes/environments/courtyard.exr";
+  ASSERT_TRUE(fs::exists(environment)) << environment << " is missing: tools/setup.sh copies Blender's HDR worlds";
+  const std::string exr = dir + "/environment_view.exr";
+  const std::string script = writeScript("environment.txt",
+                                         "at 1 set integrator path\n"
+                                         "at 1 set environment rotation 90\n"
+                                         "at 1 set environment strength 0.5\n");
+  const CommandResult result =
+      runView({kMinimalScene, "--env", environment, "--integrator", "slides", "--width", "96", "--height", "64",
+               "--seed", "3", "--frames", "6", "--script", script, "--screenshot", exr});
+  expectCleanRun(result);
+  EXPECT_NE(result.output.find("integrator: path"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("4 spp"), std::string::npos) << result.output;
+  const Image view = readExr(exr);
+  const Image reference = renderReference({kMinimalScene, "--env", environment, "--env-strength", "0.5",
+                                           "--env-rotation", "90", "--integrator", "path", "--width", "96",
+                                           "--height", "64", "--seed", "3", "--spp", "4"},
+                                          dir + "/environment_render.exr");
+  expectSameImage(view, reference, "viewer after the switch against raylab render");
+  EXPECT_GT(meanLuminance(view), 0.05) << "the environment lights nothing";
+}
+
 TEST(WindowTest, ResizingMidRunKeepsRenderingAtTheNewSize) {
   const std::string dir = scratchDir();
   const std::string exr = dir + "/resized.exr";

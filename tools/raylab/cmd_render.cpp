@@ -48,6 +48,7 @@ struct RenderOptions {
   std::string sampling = "mis";
   std::string environment;
   std::optional<float> environmentStrength;
+  std::optional<float> environmentRotation;
   std::optional<std::uint32_t> device;
 };
 
@@ -185,6 +186,9 @@ int runRender(int argc, char** argv) {
               "light the scene with this equirectangular HDR image (+Y up), replacing the scene's own");
   args.option("--env-strength", &o.environmentStrength, "multiplies the environment image (default: the scene's, or 1)",
               0.0f, 1e30f);
+  args.option("--env-rotation", &o.environmentRotation,
+              "turns the environment image about +Y, degrees counter-clockwise seen from above (default: the scene's, or 0)",
+              -360.0f, 360.0f);
   args.choice("--sampling", &o.sampling, {"mis", "bsdf", "light"},
               "path integrator: how emitters are estimated, MIS of light and BSDF sampling (default) or one alone");
   args.flag("--stats", &o.stats, "print which BRDF models and features the kernel was compiled with");
@@ -201,7 +205,8 @@ int runRender(int argc, char** argv) {
   if (!o.pngPath.empty()) requireExtension("--png", o.pngPath, ".png");
   if (!o.reportPath.empty()) requireExtension("--report", o.reportPath, ".json");
   // Each output has its own default, so giving one never suppresses the other.
-  const SceneRequest request{o.scene, o.camera, o.allowOutsideUris, o.environment, o.environmentStrength};
+  const SceneRequest request{o.scene, o.camera, o.allowOutsideUris, o.environment, o.environmentStrength,
+                             o.environmentRotation};
   if (o.exrPath.empty() && !o.noExr) o.exrPath = "out/" + sceneName(request) + ".exr";
   if (o.pngPath.empty() && !o.noPng) o.pngPath = "out/" + sceneName(request) + ".png";
   if (o.exrPath.empty() && o.pngPath.empty() && o.reportPath.empty()) {

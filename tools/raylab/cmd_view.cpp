@@ -43,6 +43,7 @@ int runView(int argc, char** argv) {
   std::string integrator = "auto";
   std::string environment;
   std::optional<float> environmentStrength;
+  std::optional<float> environmentRotation;
   float targetMs = 50.0f;
   bool noAntialiasing = false;
   bool allowOutsideUris = false;
@@ -68,6 +69,7 @@ int runView(int argc, char** argv) {
               "an environment image)");
   args.option("--env", &environment, "FILE.exr", "as raylab render: light the scene with this HDR image (+Y up)");
   args.option("--env-strength", &environmentStrength, "multiplies the environment image", 0.0f, 1e30f);
+  args.option("--env-rotation", &environmentRotation, "turns the environment image about +Y, degrees", -360.0f, 360.0f);
   args.flag("--no-aa", &noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
   args.option("--target-ms", &targetMs, "frame time to hold while the view changes", 5.0f, 1000.0f);
   args.option("--spp-limit", &o.sppLimit, "stop refining at this many samples per pixel; 0: never", 0, 1u << 20);
@@ -128,7 +130,8 @@ int runView(int argc, char** argv) {
     checkOutputPath(paths.png, event.where);
   }
 
-  const Scene scene = loadScene({scenePath, camera, allowOutsideUris, environment, environmentStrength});
+  const Scene scene = loadScene({scenePath, camera, allowOutsideUris, environment, environmentStrength,
+                                 environmentRotation});
   runViewer(scene, o);
   return kExitOk;
 }
