@@ -90,9 +90,11 @@ vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
     } else {
       miss(p);
     }
-    if (p.split) keepSplit(p, pending, pendingCount);
+    // Only the slides' integrator splits paths (the path integrator chooses one glass branch at random): in a
+    // path kernel the queue is dead code and the driver drops it with its registers.
+    if (kIntegrator == kIntegratorSlides && p.split) keepSplit(p, pending, pendingCount);
     if (p.done) {
-      if (pendingCount == 0u) break;
+      if (kIntegrator == kIntegratorPath || pendingCount == 0u) break;
       pendingCount -= 1u;
       p.origin = pending[pendingCount].origin;
       p.direction = pending[pendingCount].direction;

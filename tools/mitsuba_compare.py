@@ -170,7 +170,7 @@ def write_obj(quad: Quad, path: Path) -> None:
     path.write_text("\n".join(lines) + "\n")
 
 
-def mitsuba_scene(case: Case, directory: Path, width: int, height: int, spp: int) -> dict:
+def mitsuba_scene(case: Case, directory: Path, width: int, height: int, spp: int, sampler: str) -> dict:
     T = mi.ScalarTransform4f
     position, target, yfov = case.camera
     bsdfs = {}
@@ -191,7 +191,7 @@ def mitsuba_scene(case: Case, directory: Path, width: int, height: int, spp: int
             "to_world": T().look_at(origin=list(position), target=list(target), up=[0.0, 1.0, 0.0]),
             "film": {"type": "hdrfilm", "width": width, "height": height, "rfilter": {"type": "box"},
                      "pixel_format": "rgb"},
-            "sampler": {"type": "independent", "sample_count": spp},
+            "sampler": {"type": sampler, "sample_count": spp},
         },
     }
     for i, q in enumerate(case.quads):
@@ -228,8 +228,8 @@ def render_raylab(raylab: Path, scene: Path, case: Case, out: Path, width: int, 
     return Render(read_exr(exr), figures["cpu_per_sample_s"], figures["per_sample_s"])
 
 
-def render_mitsuba(case: Case, out: Path, width: int, height: int, spp: int, seed: int) -> Render:
-    scene = mi.load_dict(mitsuba_scene(case, out, width, height, spp))
+def render_mitsuba(case: Case, out: Path, width: int, height: int, spp: int, seed: int, sampler: str) -> Render:
+    scene = mi.load_dict(mitsuba_scene(case, out, width, height, spp, sampler))
     # The first render of a scene compiles its kernels (Dr.Jit's LLVM JIT); the timed one reuses them.
     mi.render(scene, spp=1, seed=seed + 7919)
     cpu, wall = time.process_time(), time.perf_counter()
@@ -266,6 +266,9 @@ def parse_args() -> argparse.Namespace:
     parser.add_argument("--tolerance", type=float, default=0.01, help="largest relMAE --check accepts (0.01)")
     parser.add_argument("--check", action="store_true", help="exit 1 when a scene's relMAE exceeds --tolerance")
     parser.add_argument("--speed", action="store_true", help="also time to relMSE 1e-3 for each renderer")
+    parser.add_argument("--mitsuba-sampler", default="independent", choices=["independent", "stratified",
+                        "multijitter", "orthogonal", "ldsampler"], help="Mitsuba's sample generator (default "
+                        "independent; ldsampler is its low-discrepancy one, the counterpart of raylab's Sobol points)")
     parser.add_argument("--variant", default="llvm_ad_rgb", help="Mitsuba variant (default llvm_ad_rgb; "
                         "scalar_rgb needs no libLLVM but is far slower)")
     parser.add_argument("--out", type=Path, default=REPO / "out" / "mitsuba_compare",
@@ -288,7 +291,7 @@ def main() -> None:
         raise ToolError(f"Mitsuba variant {args.variant} is unusable here ({error}); the LLVM variants need "
                         f"libLLVM 19 (tools/setup.sh installs libllvm19), or pass --variant scalar_rgb")
     args.out.mkdir(parents=True, exist_ok=True)
-    results = {"machine": {"cpus": os.cpu_count(), "platform": platform.platform(), "mitsuba": mi.__version__,
+    results = {"mitsuba_sampler": args.mitsuba_sampler, "machine": {"cpus": os.cpu_count(), "platform": platform.platform(), "mitsuba": mi.__version__,
                            "variant": args.variant, "load_average": os.getloadavg()},
                "width": args.width, "height": args.height, "spp": args.spp, "block": args.block, "scenes": {}}
     failed = []
@@ -299,8 +302,9 @@ def main() -> None:
               f"(Mitsuba max_depth {case.max_depth + 2})", flush=True)
         ours = render_raylab(raylab, gltf, case, args.out, args.width, args.height, args.spp, 1)
         again = render_raylab(raylab, gltf, case, args.out, args.width, args.height, args.spp, 2)
-        theirs = render_mitsuba(case, args.out, args.width, args.height, args.spp, 3)
-        theirs_again = render_mitsuba(case, args.out, args.width, args.height, args.spp, 4) if args.speed else None
+        theirs = render_mitsuba(case, args.out, args.width, args.height, args.spp, 3, args.mitsuba_sampler)
+        theirs_again = render_mitsuba(case, args.out, args.width, args.height, args.spp, 4,
+                                      args.mitsuba_sampler) if args.speed else None
         np.save(args.out / f"{name}_mitsuba_{args.spp}spp.npy", theirs.image)
         agreement = rel_mae(ours.image, theirs.image, args.block)
         floor = rel_mae(ours.image, again.image, args.block)

@@ -1,8 +1,14 @@
-// Counter-based random numbers: every value is a hash of (pixel, sample index, seed, dimension), so any
+// Counter-based random numbers: every value is a function of (pixel, sample index, seed, dimension), so any
 // sample of any pixel can be regenerated independently and the same command gives the same image.
-// Hash: pcg4d from Jarzynski & Olano, "Hash Functions for GPU Rendering", JCGT 9(3), 2020.
+// The slides' integrator hashes them (pcg4d from Jarzynski & Olano, "Hash Functions for GPU Rendering", JCGT
+// 9(3), 2020), as it always has, so its images stay bit-identical. The path integrator draws Owen-scrambled
+// Sobol points (common/sobol.glsl) keyed by the sample index, a dimension group per call: successive samples
+// of a pixel stratify each group, which lowers the noise of the first bounces.
 #ifndef RAYLAB_COMMON_RNG_GLSL
 #define RAYLAB_COMMON_RNG_GLSL
+
+#include "common/sobol.glsl"
+#include "common/specialization.glsl"
 
 uvec4 pcg4d(uvec4 v) {
   v = v * 1664525u + 1013904223u;
@@ -29,8 +35,18 @@ Rng rngCreate(uvec2 pixel, uint sampleIndex, uint seed) {
 // Uniform in [0, 1): the top 24 bits as a float, so 1.0 is never returned.
 float uintToUnitFloat(uint bits) { return float(bits >> 8u) * (1.0 / 16777216.0); }
 
+// The dimension groups of a path vertex start at 1 + kRngGroupsPerVertex * depth (group 0: the pixel jitter),
+// so that each group means the same thing in every sample of a pixel whatever happened before.
+const uint kRngGroupsPerVertex = 8u;
+void rngStartVertex(inout Rng rng, uint depth) { rng.key.w = 1u + kRngGroupsPerVertex * depth; }
+
 vec4 rngNext4(inout Rng rng) {
-  const uvec4 bits = pcg4d(rng.key);
+  uvec4 bits;
+  if (kIntegrator == kIntegratorPath) {
+    bits = sobolOwen4(rng.key.y, pcg4d(uvec4(rng.key.x, rng.key.z, rng.key.w, 0x5eed0b01u)).x);
+  } else {
+    bits = pcg4d(rng.key);
+  }
   rng.key.w += 1u;
   return vec4(uintToUnitFloat(bits.x), uintToUnitFloat(bits.y), uintToUnitFloat(bits.z), uintToUnitFloat(bits.w));
 }

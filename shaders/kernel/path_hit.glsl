@@ -109,6 +109,7 @@ void closestHitPath(Hit hit, inout Payload p) {
   const vec3 wo = -p.direction;
   p.done = true;
   p.split = false;
+  rngStartVertex(p.rng, p.depth);
 
   // Emission from the front face only, the side the counter-clockwise winding's normal points to.
   if (s.frontFace && maxComponent(material.emission) > 0.0) {
