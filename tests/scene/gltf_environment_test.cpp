@@ -18,13 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-fs::path freshDir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "raylab_gltf_environment_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 // A width x height EXR whose texel (x, y) is `value(x, y)`.
 void writeEnvironment(const fs::path& path, std::uint32_t width, std::uint32_t height,
                       glm::vec3 (*value)(std::uint32_t, std::uint32_t)) {
@@ -48,7 +41,7 @@ fs::path writeScene(const fs::path& dir, const json& raylab) {
 }
 
 TEST(GltfEnvironment, TheFileNamesItsImageAndStrengthAndTheCommandLineReplacesThem) {
-  const fs::path dir = freshDir("names");
+  const fs::path dir = freshDir("environment", "names");
   writeEnvironment(dir / "sky.exr", 8, 4, gradient);
   writeEnvironment(dir / "other.exr", 4, 2, gradient);
   const fs::path path = writeScene(dir, {{"environment", {{"uri", "sky.exr"}, {"strength", 2.5}, {"rotation", 90.0}}}});
@@ -70,7 +63,7 @@ TEST(GltfEnvironment, TheFileNamesItsImageAndStrengthAndTheCommandLineReplacesTh
 }
 
 TEST(GltfEnvironment, BadEnvironmentsAreRefusedNamingTheFieldOrFile) {
-  const fs::path dir = freshDir("bad");
+  const fs::path dir = freshDir("environment", "bad");
   const fs::path inner = dir / "inner";
   fs::create_directories(inner);
   writeEnvironment(inner / "sky.exr", 8, 4, gradient);

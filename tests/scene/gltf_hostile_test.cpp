@@ -15,13 +15,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-fs::path freshDir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "raylab_gltf_hostile_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 void writeFile(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
 }
@@ -118,7 +111,7 @@ TEST(GltfHostile, ImagesNoMaterialUsesAreNotDecoded) {
 }
 
 TEST(GltfHostile, AMissingImageFileIsNamed) {
-  const fs::path dir = freshDir("missing_image");
+  const fs::path dir = freshDir("hostile", "missing_image");
   GltfBuilder b;
   const int mesh = b.addQuad();
   b.doc()["meshes"][mesh]["primitives"][0]["attributes"]["TEXCOORD_0"] = b.addFloats({0, 0, 1, 0, 1, 1, 0, 1}, "VEC2");
@@ -173,7 +166,7 @@ std::string bufferBytesOfAQuad() {
 }
 
 TEST(GltfHostile, UrisOutsideTheScenesFolderAreRefusedUnlessAllowed) {
-  const fs::path dir = freshDir("outside");
+  const fs::path dir = freshDir("hostile", "outside");
   const std::string bytes = bufferBytesOfAQuad();
   writeFile(dir / "outside.bin", bytes);
   const fs::path scene = sceneWithBufferUri(dir, "../outside.bin", bytes.size());
@@ -188,13 +181,13 @@ TEST(GltfHostile, UrisOutsideTheScenesFolderAreRefusedUnlessAllowed) {
   EXPECT_EQ(loadGltfFile(scene.string(), trusting).instances.size(), 1u);
 
   // /etc/passwd was read as geometry.
-  const fs::path passwd = sceneWithBufferUri(freshDir("passwd"), "../../../../../../../../../../etc/passwd", 16);
+  const fs::path passwd = sceneWithBufferUri(freshDir("hostile", "passwd"), "../../../../../../../../../../etc/passwd", 16);
   EXPECT_NE(errorOf([&] { loadGltfFile(passwd.string(), {}); }).find("outside the scene's directory"),
             std::string::npos);
 }
 
 TEST(GltfHostile, AFifoOrADirectoryAsABufferIsRefusedWithoutHanging) {
-  const fs::path dir = freshDir("special");
+  const fs::path dir = freshDir("hostile", "special");
   fs::create_directories(dir / "sub");
   ASSERT_EQ(::mkfifo((dir / "sub" / "fifo.bin").c_str(), 0600), 0);
   fs::create_directories(dir / "sub" / "folder.bin");

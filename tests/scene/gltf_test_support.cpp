@@ -9,6 +9,13 @@
 
 namespace raylab::test {
 
+std::filesystem::path freshDir(const std::string& suite, const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / ("raylab_gltf_" + suite) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 namespace {
 
 std::string base64(const std::vector<std::uint8_t>& bytes) {

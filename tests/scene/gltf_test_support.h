@@ -23,6 +23,9 @@ std::filesystem::path assimpDirectory();
 // Every committed scene, sorted by name.
 std::vector<std::filesystem::path> assetFiles();
 
+// An empty scratch directory TempDir()/raylab_gltf_<suite>/<name>, for files a test writes.
+std::filesystem::path freshDir(const std::string& suite, const std::string& name);
+
 // Collects warn() messages while alive, so tests can check them and the log stays quiet.
 class WarningCapture {
  public:

@@ -1,4 +1,5 @@
-"""ctest python_tools_test: runs raylab's Python tools as a user would, in a tiny mode, and checks what they
+"""ctest python_tools_test: runs raylab's Python tools (BRDF plot, speed against error, sampling study) as a user
+would, in a tiny mode, and checks what they
 write. Standard library only, run by the system python3; the tools themselves run with .venv/bin/python.
 
     python_tools_test.py RAYLAB SOURCE_DIR WORK_DIR
@@ -80,6 +81,23 @@ def speed_vs_error(python: Path, source: Path, raylab: Path, work: Path) -> None
     check((out / "summary.md").is_file(), f"{out / 'summary.md'} was not written")
 
 
+def sampling_study(python: Path, source: Path, raylab: Path, work: Path) -> None:
+    out = work / "sampling_study"
+    run([python, source / "tools" / "sampling_study.py", "--quick", "--raylab", raylab, "--out", out])
+    table = out / "sampling.csv"
+    check(table.is_file(), f"{table} was not written")
+    with table.open(newline="") as file:
+        rows = list(csv.DictReader(file))
+    check({r["strategy"] for r in rows} == {"mis", "bsdf", "light"}, f"{table}: strategies {rows[:1]}")
+    check(len(rows) == 2 * 3 * 4, f"{table}: {len(rows)} rows, expected 2 models x 3 strategies x 4 spp")
+    for model in {r["model"] for r in rows}:
+        mis = sorted((r for r in rows if r["model"] == model and r["strategy"] == "mis"), key=lambda r: int(r["spp"]))
+        first, last = float(mis[0]["relmse"]), float(mis[-1]["relmse"])
+        # 1 -> 8 spp: an unbiased estimator's relMSE falls about 8x (more with Sobol points).
+        check(math.isfinite(first) and last < first / 3.0, f"{model}: MIS relMSE {first} at 1 spp, {last} at 8 spp")
+    check_png(out / "sampling_study.png", 10 * 1024)
+
+
 def main() -> None:
     raylab, source, work = (Path(arg).resolve() for arg in sys.argv[1:4])
     python = source / ".venv" / "bin" / "python"
@@ -91,6 +109,7 @@ def main() -> None:
     work.mkdir(parents=True)
     brdf_plot(python, source, raylab, work)
     speed_vs_error(python, source, raylab, work)
+    sampling_study(python, source, raylab, work)
     print("python_tools_test: passed")
 
 
