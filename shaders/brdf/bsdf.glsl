@@ -1,7 +1,8 @@
 // The one dispatch over the BRDF library, in the local shading frame (z = shading normal; wi towards the
 // light, wo towards the viewer). f excludes the cosine: the caller multiplies by cos_i. Every model is
 // one-sided (0 when wi.z <= 0 or wo.z <= 0) and never NaN, Inf or negative for parameters in the ranges
-// of engine/scene/material_params.cpp. Glass is a delta BSDF: 0 here, see glassEvent.
+// of engine/scene/material_params.cpp. Glass is a delta BSDF: 0 here, see bsdfSampleSpecular and the lobe
+// flags (bsdfFlags) below.
 #ifndef RAYLAB_BRDF_BSDF_GLSL
 #define RAYLAB_BRDF_BSDF_GLSL
 
@@ -86,9 +87,39 @@ BsdfSample bsdfSample(MaterialRecord m, vec3 wo, vec3 u) {
   return noSample();
 }
 
-// Probability that bsdfSample picks the specular lobe: 0 for lambert and glass.
-float bsdfSpecularProbability(MaterialRecord m) {
-  return m.model == kModelLambert || m.model == kModelGlass ? 0.0 : specularProbability(m.rhoD, m.rhoS);
+// Lobe flags of a model and of a sample, as pbrt-v4's BxDFFlags: integrators ask these, never model ids.
+const uint kLobeReflection = 1u;
+const uint kLobeTransmission = 2u;
+const uint kLobeDiffuse = 4u;
+const uint kLobeGlossy = 8u;
+const uint kLobeSpecular = 16u;  // a delta lobe: no density, only bsdfSampleSpecular produces its directions
+
+uint bsdfFlags(MaterialRecord m) {
+  if (featureEnabled(kFeatureGlass) && m.model == kModelGlass) return kLobeReflection | kLobeTransmission | kLobeSpecular;
+  if (m.model == kModelLambert) return kLobeReflection | kLobeDiffuse;
+  return kLobeReflection | kLobeDiffuse | kLobeGlossy;
+}
+
+// True for a BSDF of delta lobes only (glass): bsdfEval, bsdfPdf and light sampling see nothing of it.
+bool isSpecularOnly(uint flags) { return (flags & (kLobeDiffuse | kLobeGlossy)) == 0u; }
+
+struct SpecularSample {
+  vec3 wi;       // unit; zero when there is none
+  vec3 weight;   // f cos / probability: what the throughput is multiplied by
+  uint flags;    // kLobeSpecular and kLobeReflection or kLobeTransmission
+};
+
+// One of the delta lobes of a specular-only BSDF, in any frame with n its outward shading normal, chosen by u.
+// Glass is a smooth dielectric: reflection with probability delta + (1 - delta) F (1 under total internal
+// reflection), else refraction, tinted on the way in. The probabilities equal the weights, so the weight is 1
+// (or the tint).
+SpecularSample bsdfSampleSpecular(MaterialRecord m, vec3 wo, vec3 n, float u) {
+  const GlassEvent event = glassEvent(m.eta, wo, n);
+  const float fresnel = kGlassFresnel == kFresnelSchlick ? event.fresnelSchlick : event.fresnelExact;
+  const float reflectProbability = event.tir ? 1.0 : m.delta + (1.0 - m.delta) * fresnel;
+  if (u < reflectProbability) return SpecularSample(event.reflected, vec3(1.0), kLobeSpecular | kLobeReflection);
+  const bool entering = dot(wo, n) >= 0.0;
+  return SpecularSample(event.refracted, entering ? m.tint : vec3(1.0), kLobeSpecular | kLobeTransmission);
 }
 
 #endif

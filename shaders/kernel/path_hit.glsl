@@ -3,8 +3,8 @@
 //   L_o(x, wo) = L_e(x, wo) + integral f(wi, wo) L_i(x, wi) cos(theta_i) dwi.
 // At each vertex: the emission seen along the path, next event estimation of the punctual lights (delta
 // lights, so no MIS is needed for them), then one continuation chosen by the BSDF's own sampler
-// (bsdfSample), with the mirror weight delta as a mixture f = (1 - delta) f_r + delta mirror and glass as a
-// smooth dielectric whose branch is chosen with probability equal to its Fresnel weight. Emitters and the
+// (bsdfSample), with the mirror weight delta as a mixture f = (1 - delta) f_r + delta mirror; a specular-only
+// BSDF (glass, by its lobe flags) continues along one delta lobe (bsdfSampleSpecular). Emitters and the
 // background reached by a continuation are counted at full weight: the only estimator of them here is BSDF
 // sampling, or, for emitting triangles and spheres, by next event estimation too (sampleEmitter), the two
 // combined by multiple importance sampling with the power heuristic (Veach 1997); kSampling selects one strategy
@@ -82,25 +82,19 @@ void continueOrEnd(inout Payload p, vec3 origin, vec3 direction, vec3 throughput
   p.done = false;
 }
 
-// Glass as a smooth dielectric: reflect with probability delta + (1 - delta) F, else refract (weight tint on
-// the way in). The probabilities equal the weights, so the throughput keeps its value.
-void glassVertex(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
-  const GlassEvent event = glassEvent(material.eta, wo, s.shadingNormal);
-  const float fresnel = kGlassFresnel == kFresnelSchlick ? event.fresnelSchlick : event.fresnelExact;
-  const float reflectProbability = event.tir ? 1.0 : material.delta + (1.0 - material.delta) * fresnel;
+// A vertex of a specular-only BSDF (glass): one delta lobe, chosen by bsdfSampleSpecular.
+void specularVertex(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
+  const SpecularSample b = bsdfSampleSpecular(material, wo, s.shadingNormal, rngNext4(p.rng).x);
   const bool entering = dot(wo, s.geometricNormal) > 0.0;
-  const vec3 ngOutside = s.geometricNormal;
-  const bool reflect = rngNext4(p.rng).x < reflectProbability;
-  const vec3 direction = reflect ? event.reflected : event.refracted;
+  const bool reflected = (b.flags & kLobeReflection) != 0u;
   // Each continuation leaves from the side of the geometric surface it travels into.
-  const vec3 side = (reflect == entering) ? ngOutside : -ngOutside;
-  if (!(dot(direction, side) > 0.0)) {
+  const vec3 side = (reflected == entering) ? s.geometricNormal : -s.geometricNormal;
+  if (!(dot(b.wi, side) > 0.0)) {
     p.done = true;
     return;
   }
-  const vec3 weight = (!reflect && entering) ? material.tint : vec3(1.0);
   p.lastSpecular = true;
-  continueOrEnd(p, offsetRayOrigin(s.position, side), direction, p.throughput * weight);
+  continueOrEnd(p, offsetRayOrigin(s.position, side), b.wi, p.throughput * b.weight);
 }
 
 void closestHitPath(Hit hit, inout Payload p) {
@@ -117,8 +111,8 @@ void closestHitPath(Hit hit, inout Payload p) {
   }
   if (p.depth > params.maxDepth) return;  // the segment that reached here was the last one allowed
 
-  if (featureEnabled(kFeatureGlass) && material.model == kModelGlass) {
-    glassVertex(s, material, wo, p);
+  if (isSpecularOnly(bsdfFlags(material))) {
+    specularVertex(s, material, wo, p);
     return;
   }
   applyTextures(material, s);
