@@ -14,6 +14,7 @@
 
 #include "scene/camera_pivot.h"
 #include "scene/gltf_document.h"
+#include "scene/gltf_environment.h"
 #include "scene/gltf_files.h"
 #include "scene/gltf_geometry.h"
 #include "scene/gltf_lights.h"
@@ -85,7 +86,7 @@ class SceneBuilder {
 
   void build() {
     gltf::convertMaterials(document_, scene_);
-    readEnvironment();
+    scene_.environment = gltf::readEnvironment(document_, options_);
     const std::vector<int> roots = sceneRoots();
     walk(roots);
     if (scene_.instances.empty() && scene_.spheres.empty()) {
@@ -144,75 +145,6 @@ class SceneBuilder {
         throw Error(where + ": unknown key '" + key + "' (a scene's extras.raylab has background)");
       }
     }
-  }
-
-  // The root's extras.raylab.environment = {"uri": "FILE.exr", "strength": S, "rotation": degrees}, with --env,
-  // --env-strength and --env-rotation taking its place (docs/integrators.md, "Environment light").
-  void readEnvironment() {
-    std::string path;
-    std::string where = document_.label + ": extras.raylab.environment";
-    double strength = 1.0;
-    double rotation = 0.0;  // degrees about +Y
-    if (const json* raylab = findPath(document_.json, {"extras", "raylab"})) {
-      const std::string root = document_.label + ": extras.raylab";
-      if (!raylab->is_object()) throw Error(root + ": expected an object, found " + gltf::quote(*raylab));
-      for (const auto& [key, value] : raylab->items()) {
-        if (key != "environment") {
-          throw Error(root + ": unknown key '" + key + "' (the file's extras.raylab has environment; background "
-                      "belongs to a scene's extras.raylab)");
-        }
-        if (!value.is_object()) throw Error(where + ": expected {\"uri\": ..., \"strength\": ...}, found " + gltf::quote(value));
-        std::string uri;
-        for (const auto& [field, v] : value.items()) {
-          if (field == "uri" && v.is_string()) {
-            uri = v.get<std::string>();
-          } else if (field == "strength" && v.is_number()) {
-            strength = v.get<double>();
-            if (!(strength >= 0.0) || !(strength <= 3.4e38)) {
-              throw Error(where + ".strength: expected a finite number >= 0, found " + gltf::quote(v));
-            }
-          } else if (field == "rotation" && v.is_number()) {
-            rotation = v.get<double>();
-            if (!(std::abs(rotation) <= 360.0)) {
-              throw Error(where + ".rotation: expected degrees in [-360, 360], found " + gltf::quote(v));
-            }
-          } else if (field == "uri" || field == "strength" || field == "rotation") {
-            throw Error(where + "." + field + ": expected a " + (field == "uri" ? "string" : "number") + ", found " +
-                        gltf::quote(v));
-          } else {
-            throw Error(where + ": unknown key '" + field + "' (an environment has uri, strength and rotation)");
-          }
-        }
-        if (uri.empty() && options_.environment.empty()) throw Error(where + ": has no uri");
-        if (options_.environment.empty()) {
-          try {
-            path = gltf::resolveUri(uri, document_.baseDirectory, document_.uriPolicy);
-          } catch (const Error& e) {
-            throw Error(where + ".uri: " + e.what());
-          }
-        }
-      }
-    }
-    if (!options_.environment.empty()) {
-      path = options_.environment;
-      where = "--env";
-    }
-    if (options_.environmentStrength) {
-      strength = *options_.environmentStrength;
-      checkEnvironmentStrength(float(strength), "--env-strength");
-      if (path.empty()) {
-        throw Error("--env-strength: the scene has no environment image (give one with --env FILE.exr)", kExitUsage);
-      }
-    }
-    if (options_.environmentRotation) {
-      rotation = *options_.environmentRotation;
-      if (path.empty()) {
-        throw Error("--env-rotation: the scene has no environment image (give one with --env FILE.exr)", kExitUsage);
-      }
-    }
-    if (path.empty()) return;
-    scene_.environment = loadEnvironment(path, float(strength), where);
-    scene_.environment.rotation = glm::radians(float(rotation));
   }
 
   glm::mat4 localTransform(const tinygltf::Node& node, const std::string& where) {

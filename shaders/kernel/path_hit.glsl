@@ -2,14 +2,14 @@
 // (Kajiya 1986, equation 1 of the slides):
 //   L_o(x, wo) = L_e(x, wo) + integral f(wi, wo) L_i(x, wi) cos(theta_i) dwi.
 // At each vertex: the emission seen along the path, next event estimation of the punctual lights (delta
-// lights, so no MIS is needed for them), then one continuation chosen by the BSDF's own sampler
+// lights, so no MIS is needed for them), of the emitting triangles and spheres (sampleEmitterLight) and of the
+// environment image (sampleEnvironmentLight), then one continuation chosen by the BSDF's own sampler
 // (bsdfSample), with the mirror weight delta as a mixture f = (1 - delta) f_r + delta mirror; a specular-only
 // BSDF (glass, by its lobe flags) continues along one delta lobe (bsdfSampleSpecular). Emitters and the
-// background reached by a continuation are counted at full weight: the only estimator of them here is BSDF
-// sampling, or, for emitting triangles and spheres, by next event estimation too (sampleEmitter), the two
-// combined by multiple importance sampling with the power heuristic (Veach 1997); kSampling selects one strategy
-// alone for studies. Russian roulette after kRouletteDepth bounces keeps the estimator unbiased
-// (docs/integrators.md).
+// environment image reached by a continuation are weighted against their light samples by multiple importance
+// sampling with the power heuristic (Veach 1997); kSampling selects one strategy alone for studies. The uniform
+// background is left to BSDF sampling. Russian roulette after kRouletteDepth bounces keeps the estimator
+// unbiased (docs/integrators.md).
 // Depth: --max-depth D allows D + 1 continuations after the camera ray, so a path has at most D + 2 segments
 // (Mitsuba 3's max_depth = D + 2); D = 0 is direct lighting only.
 #ifndef RAYLAB_KERNEL_PATH_HIT_GLSL

@@ -1,5 +1,7 @@
 #include "support/gpu_test.h"
 
+#include <gtest/gtest.h>
+
 #include "render/ray_probe.h"
 #include "scene/gpu_scene.h"
 #include "util/error.h"
@@ -49,6 +51,8 @@ Image renderImage(const Device& device, const Scene& scene, const RenderSettings
   GpuScene gpuScene = uploadScene(device, scene);
   Renderer renderer = createRenderer(device, gpuScene, scene, settings);
   renderSamples(device, renderer, spp);
+  // A NaN or Inf sample is a defect the kernel hides by dropping it: no test scene may have one.
+  EXPECT_EQ(renderer.droppedSamples, 0u) << scene.name << ": NaN or Inf samples were dropped";
   Image image = readImage(device, renderer);
   destroyRenderer(device, renderer);
   destroyGpuScene(device, gpuScene);

@@ -32,6 +32,7 @@ class GpuTest : public ::testing::Test {
 };
 
 // Uploads `scene`, renders `spp` samples and returns the mean radiance image.
+// Every render also checks that the kernel dropped no NaN or Inf sample.
 Image renderImage(const Device& device, const Scene& scene, const RenderSettings& settings, std::uint32_t spp);
 
 // Traces rays against `scene` with the renderer's traversal.
