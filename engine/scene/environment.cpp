@@ -13,6 +13,7 @@ namespace raylab {
 namespace {
 
 constexpr float kPi = 3.14159265358979323846f;
+constexpr float kMaxEnvironmentRadiance = 1e20f;  // as the largest emission (docs/scenes.md, Limits)
 
 }  // namespace
 
@@ -24,17 +25,21 @@ void checkEnvironmentStrength(float strength, const std::string& where) {
 
 Environment loadEnvironment(const std::string& path, float strength, const std::string& where) {
   checkEnvironmentStrength(strength, where);
-  const std::string label = where + ": environment image " + path;
   std::string bytes;
   try {
     bytes = gltf::readSceneFile(path, kMaxEnvironmentFileBytes);
   } catch (const Error& e) {
     throw Error(where + ": environment image " + e.what());
   }
-  const Image image = decodeExr(bytes, label, kMaxEnvironmentTexels);
-  Environment environment;
+  Environment environment = decodeEnvironment(bytes, where + ": environment image " + path);
   environment.path = path;
   environment.strength = strength;
+  return environment;
+}
+
+Environment decodeEnvironment(const std::string& bytes, const std::string& label) {
+  const Image image = decodeExr(bytes, label, kMaxEnvironmentTexels);
+  Environment environment;
   environment.width = image.width;
   environment.height = image.height;
   environment.texels.resize(std::size_t(image.width) * image.height);
@@ -44,10 +49,12 @@ Environment loadEnvironment(const std::string& path, float strength, const std::
   for (std::uint32_t y = 0; y < image.height; ++y) {
     for (std::uint32_t x = 0; x < image.width; ++x) {
       glm::vec3 texel(image.at(x, y));
-      if (!std::isfinite(texel.r + texel.g + texel.b)) {
+      // The bound keeps sums of texels (the sampling tables, the kernel's luminance) finite in float.
+      const auto bad = [](float c) { return !(std::abs(c) <= kMaxEnvironmentRadiance); };
+      if (bad(texel.r) || bad(texel.g) || bad(texel.b)) {
         throw Error(label + ": texel (" + std::to_string(x) + ", " + std::to_string(y) + ") is (" +
                     std::to_string(texel.r) + ", " + std::to_string(texel.g) + ", " + std::to_string(texel.b) +
-                    "); radiance must be finite");
+                    "); radiance must be finite and at most 1e20");
       }
       // Lossy EXR compression leaves small negative values in real HDRIs (Blender's have -4e-6): not radiance.
       if (texel.r < 0.0f || texel.g < 0.0f || texel.b < 0.0f) {

@@ -32,6 +32,9 @@ inline constexpr std::uint64_t kMaxEnvironmentFileBytes = std::uint64_t(1) << 30
 // compression leaves a few) read as 0, with a warning.
 Environment loadEnvironment(const std::string& path, float strength, const std::string& where);
 
+// The image of an OpenEXR file held in memory, checked as loadEnvironment checks it; `label` starts errors.
+Environment decodeEnvironment(const std::string& bytes, const std::string& label);
+
 // Throws Error(where: ...) unless strength is finite and >= 0.
 void checkEnvironmentStrength(float strength, const std::string& where);
 

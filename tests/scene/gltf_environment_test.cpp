@@ -73,6 +73,7 @@ TEST(GltfEnvironment, BadEnvironmentsAreRefusedNamingTheFieldOrFile) {
   writeEnvironment(inner / "inf.exr", 8, 4, [](std::uint32_t x, std::uint32_t) {
     return x == 1 ? glm::vec3(0.0f, INFINITY, 0.0f) : glm::vec3(1.0f);
   });
+  writeEnvironment(inner / "huge.exr", 4, 2, [](std::uint32_t, std::uint32_t) { return glm::vec3(1e30f); });
   std::ofstream(inner / "text.exr") << "not an image";
   writeEnvironment(dir / "outside.exr", 8, 4, gradient);
   struct Case {
@@ -84,6 +85,7 @@ TEST(GltfEnvironment, BadEnvironmentsAreRefusedNamingTheFieldOrFile) {
       {{{"environment", {{"uri", "text.exr"}}}}, "text.exr: cannot read OpenEXR file"},
       {{{"environment", {{"uri", "nan.exr"}}}}, "texel (5, 2) is (nan"},
       {{{"environment", {{"uri", "inf.exr"}}}}, "texel (1, 0)"},
+      {{{"environment", {{"uri", "huge.exr"}}}}, "at most 1e20"},
       {{{"environment", {{"uri", "sky.exr"}, {"strength", -1.0}}}}, "environment.strength: expected a finite number >= 0"},
       {{{"environment", {{"uri", "sky.exr"}, {"strength", 1e39}}}}, "environment.strength"},
       {{{"environment", {{"uri", "sky.exr"}, {"strength", "2"}}}}, "environment.strength: expected a number"},
