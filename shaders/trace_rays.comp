@@ -1,6 +1,6 @@
 #version 460
 // Traces a list of rays against the scene with the renderer's own traversal (traceClosest, traceVisibility,
-// anyHit, surface reconstruction) and writes each result. Used by tests (hit distances against analytic
+// intersectSphere, surface reconstruction) and writes each result. Used by tests (hit distances against analytic
 // values) and by `raylab bench rays` (throughput and the Embree cross-check).
 #extension GL_EXT_ray_query : require
 #extension GL_EXT_scalar_block_layout : require

@@ -37,7 +37,7 @@ AccelerationStructure createAccelerationStructure(const Device& device, VkAccele
 
 VkAccelerationStructureGeometryKHR describeGeometry(const BlasInput& input) {
   VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
-  // Opaque: triangles never need anyHit; AABB candidates are returned to the kernel regardless.
+  // Opaque: triangles need no any-hit program; AABB candidates are returned to the kernel regardless.
   geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
   if (input.kind == BlasInput::Kind::kTriangles) {
     geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;

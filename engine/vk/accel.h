@@ -20,7 +20,7 @@ struct AccelerationStructure {
 };
 
 // One bottom level: either an indexed triangle mesh (float3 positions, uint32 indices) or a set of AABBs
-// (VkAabbPositionsKHR) whose intersections the kernel's anyHit decides.
+// (VkAabbPositionsKHR) whose intersections the kernel's intersectSphere decides.
 struct BlasInput {
   enum class Kind { kTriangles, kAabbs } kind = Kind::kTriangles;
   VkDeviceAddress vertices = 0;  // first position of this mesh

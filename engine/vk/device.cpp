@@ -109,6 +109,35 @@ std::uint32_t findQueueFamily(VkPhysicalDevice physical, VkSurfaceKHR surface) {
   return VK_QUEUE_FAMILY_IGNORED;
 }
 
+// Which of the two ray-tracing interfaces the device offers. Each feature struct is chained only when its
+// extension exists: the validation layers refuse structs of extensions the device lacks.
+void surveyRayTracing(VkPhysicalDevice physical, const std::vector<VkExtensionProperties>& extensions,
+                      DeviceReport& report) {
+  const auto has = [&](const char* name) {
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+  };
+  if (!has(VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME)) return;
+  if (has(VK_KHR_RAY_QUERY_EXTENSION_NAME)) {
+    VkPhysicalDeviceRayQueryFeaturesKHR rayQuery{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &rayQuery};
+    vkGetPhysicalDeviceFeatures2(physical, &features);
+    report.rayQueries = rayQuery.rayQuery == VK_TRUE;
+  }
+  if (has(VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME)) {
+    VkPhysicalDeviceRayTracingPipelineFeaturesKHR pipeline{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &pipeline};
+    vkGetPhysicalDeviceFeatures2(physical, &features);
+    report.rayTracingPipelines = pipeline.rayTracingPipeline == VK_TRUE;
+    VkPhysicalDeviceRayTracingPipelinePropertiesKHR limits{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR};
+    VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &limits};
+    vkGetPhysicalDeviceProperties2(physical, &properties);
+    report.maxRayRecursionDepth = limits.maxRayRecursionDepth;
+  }
+}
+
 DeviceReport surveyOne(VkPhysicalDevice physical, std::uint32_t index, VkSurfaceKHR surface) {
   VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
   VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
@@ -134,6 +163,7 @@ DeviceReport surveyOne(VkPhysicalDevice physical, std::uint32_t index, VkSurface
   vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr);
   std::vector<VkExtensionProperties> extensions(count);
   vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, extensions.data());
+  surveyRayTracing(physical, extensions, report);
   for (const char* name : requiredDeviceExtensions(surface != VK_NULL_HANDLE)) {
     const bool found = std::any_of(extensions.begin(), extensions.end(), [&](const VkExtensionProperties& e) {
       return std::strcmp(e.extensionName, name) == 0;

@@ -30,6 +30,11 @@ struct DeviceReport {
   std::string driver;  // driver name and version string, e.g. "llvmpipe, Mesa 25.0.7 (LLVM 15.0.6)"
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
   std::uint32_t apiVersion = 0;
+  // The two ways of tracing rays it offers. raylab's kernels use ray queries; the ray-tracing-pipeline backend
+  // (issue 11) is not written yet, so a device with pipelines alone is listed but not capable.
+  bool rayQueries = false;           // VK_KHR_ray_query with its rayQuery feature
+  bool rayTracingPipelines = false;  // VK_KHR_ray_tracing_pipeline with its rayTracingPipeline feature
+  std::uint32_t maxRayRecursionDepth = 0;
   std::vector<std::string> missing;  // what stops raylab from using it; empty when capable
   bool capable() const { return missing.empty(); }
 };

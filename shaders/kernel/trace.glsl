@@ -1,15 +1,16 @@
-// Traversal with ray queries, shaped like OptiX programs: anyHit decides procedural (sphere) candidates,
-// traceClosest returns the committed hit for closestHit, and traceVisibility is the shadow-ray query that
-// stops at the first hit. Needs kernel/scene_bindings.glsl.
+// Traversal with ray queries, shaped like OptiX programs: the intersection program intersectSphere decides
+// procedural (sphere) candidates, traceClosest returns the committed hit for closestHit, and traceVisibility is
+// the shadow-ray query that stops at the first hit. Needs kernel/scene_bindings.glsl.
 #ifndef RAYLAB_KERNEL_TRACE_GLSL
 #define RAYLAB_KERNEL_TRACE_GLSL
 
 #include "kernel/payload.glsl"
 #include "kernel/sphere.glsl"
 
-// anyHit for AABB candidates: the exact sphere test in the instance's object space. Only t in
-// [tMin, tMax] may be reported (tMax: the current committed hit), as rayQueryGenerateIntersectionEXT requires.
-bool anyHit(rayQueryEXT query, float tMin, float tMax, out float t) {
+// The intersection program of AABB candidates (OptiX's and Vulkan's intersection shader, not an any-hit: it
+// finds the hit; nothing accepts or rejects one): the exact sphere test in the instance's object space. Only t
+// in [tMin, tMax] may be reported (tMax: the current committed hit), as rayQueryGenerateIntersectionEXT requires.
+bool intersectSphere(rayQueryEXT query, float tMin, float tMax, out float t) {
   const uint instance = rayQueryGetIntersectionInstanceCustomIndexEXT(query, false);
   const uint primitive = rayQueryGetIntersectionPrimitiveIndexEXT(query, false);
   const SphereRecord sphere = spheres[instances[instance].firstSphere + primitive];
@@ -32,7 +33,7 @@ bool traceClosest(vec3 origin, vec3 direction, float tMin, float tMax, out Hit h
     // Opaque triangles commit inside the traversal; only AABB candidates come back here.
     if (rayQueryGetIntersectionTypeEXT(query, false) == gl_RayQueryCandidateIntersectionAABBEXT) {
       float t;
-      if (anyHit(query, tMin, committedT(query, tMax), t)) rayQueryGenerateIntersectionEXT(query, t);
+      if (intersectSphere(query, tMin, committedT(query, tMax), t)) rayQueryGenerateIntersectionEXT(query, t);
     }
   }
   const uint type = rayQueryGetIntersectionTypeEXT(query, true);
@@ -58,7 +59,7 @@ bool traceVisibility(vec3 origin, vec3 direction, float tMax) {
   while (rayQueryProceedEXT(query)) {
     if (rayQueryGetIntersectionTypeEXT(query, false) == gl_RayQueryCandidateIntersectionAABBEXT) {
       float t;
-      if (anyHit(query, 0.0, tMax, t)) rayQueryGenerateIntersectionEXT(query, t);
+      if (intersectSphere(query, 0.0, tMax, t)) rayQueryGenerateIntersectionEXT(query, t);
     }
   }
   return rayQueryGetIntersectionTypeEXT(query, true) == gl_RayQueryCommittedIntersectionNoneEXT;

@@ -97,6 +97,8 @@ TEST(CliTest, DevicesListsTheCapableDevice) {
   EXPECT_EQ(result.exitCode, 0) << result.output;
   EXPECT_NE(result.output.find("raylab: yes"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("driver:"), std::string::npos) << result.output;
+  // Both ray-tracing interfaces are listed; the capable device has ray queries (what raylab's kernels use).
+  EXPECT_NE(result.output.find("ray queries: yes; ray-tracing pipelines: "), std::string::npos) << result.output;
 }
 
 TEST(CliTest, RenderWritesExrAndPngAndReportsTimings) {

@@ -1,4 +1,4 @@
-// The analytic sphere test (anyHit) on the hard cases: grazing incidence, a tiny sphere far away, rays from
+// The analytic sphere test (intersectSphere) on the hard cases: grazing incidence, a tiny sphere far away, rays from
 // inside, and AABB candidates that must lose against a nearer committed hit.
 #include <gtest/gtest.h>
 
