@@ -110,7 +110,8 @@ def cornell() -> Case:
              Quad("left wall", (-w, 0.0, 1.0), (0.0, 0.0, -2.0), (0.0, 2.0, 0.0), "red"),
              Quad("right wall", (w, 0.0, -1.0), (0.0, 0.0, 2.0), (0.0, 2.0, 0.0), "green"),
              Quad("light", (-0.45, 1.995, -0.35), (0.9, 0.0, 0.0), (0.0, 0.0, 0.7), "lamp")]
-    balls = [Ball("left sphere", (-0.6, 0.45, -0.3), 0.45, "white"), Ball("right sphere", (0.65, 0.45, 0.3), 0.45, "white")]
+    balls = [Ball("left sphere", (-0.6, 0.45, -0.3), 0.45, "white"),
+             Ball("right sphere", (0.65, 0.45, 0.3), 0.45, "white")]
     return Case("cornell", materials, quads, balls, ((0.0, 1.0, 4.2), (0.0, 1.0, 0.0), 34.0))
 
 
@@ -291,7 +292,8 @@ def main() -> None:
         raise ToolError(f"Mitsuba variant {args.variant} is unusable here ({error}); the LLVM variants need "
                         f"libLLVM 19 (tools/setup.sh installs libllvm19), or pass --variant scalar_rgb")
     args.out.mkdir(parents=True, exist_ok=True)
-    results = {"mitsuba_sampler": args.mitsuba_sampler, "machine": {"cpus": os.cpu_count(), "platform": platform.platform(), "mitsuba": mi.__version__,
+    results = {"mitsuba_sampler": args.mitsuba_sampler,
+               "machine": {"cpus": os.cpu_count(), "platform": platform.platform(), "mitsuba": mi.__version__,
                            "variant": args.variant, "load_average": os.getloadavg()},
                "width": args.width, "height": args.height, "spp": args.spp, "block": args.block, "scenes": {}}
     failed = []

@@ -147,7 +147,8 @@ def write_outputs(rows: list[dict], args, spps: list[int], began: float, load_be
         writer.writerow(["model", "strategy", "spp", "relmse", "cpu_per_sample_s"])
         for row in rows:
             for spp, relmse, cpu in row["points"]:
-                writer.writerow([row["model"], row["strategy"], spp, f"{relmse:.6g}", "" if cpu is None else f"{cpu:.6g}"])
+                cpu_text = "" if cpu is None else f"{cpu:.6g}"
+                writer.writerow([row["model"], row["strategy"], spp, f"{relmse:.6g}", cpu_text])
     lines = ["| model | strategy | CPU ms / sample | spp to relMSE 1e-3 | CPU s to relMSE 1e-3 | vs MIS |",
              "|---|---|---|---|---|---|"]
     for row in rows:
@@ -159,8 +160,8 @@ def write_outputs(rows: list[dict], args, spps: list[int], began: float, load_be
     (args.out / "summary.md").write_text(table)
     models = list(dict.fromkeys(r["model"] for r in rows))
     columns = min(4, len(models))
-    figure, axes = plt.subplots((len(models) + columns - 1) // columns, columns, figsize=(3.4 * columns, 2.9 * ((len(models) + columns - 1) // columns)),
-                                squeeze=False)
+    rows_of_plots = (len(models) + columns - 1) // columns
+    figure, axes = plt.subplots(rows_of_plots, columns, figsize=(3.4 * columns, 2.9 * rows_of_plots), squeeze=False)
     for ax, model in zip(axes.flat, models):
         for strategy, style in STRATEGIES:
             row = next(r for r in rows if r["model"] == model and r["strategy"] == strategy)

@@ -95,7 +95,9 @@ const uint kLobeGlossy = 8u;
 const uint kLobeSpecular = 16u;  // a delta lobe: no density, only bsdfSampleSpecular produces its directions
 
 uint bsdfFlags(MaterialRecord m) {
-  if (featureEnabled(kFeatureGlass) && m.model == kModelGlass) return kLobeReflection | kLobeTransmission | kLobeSpecular;
+  if (featureEnabled(kFeatureGlass) && m.model == kModelGlass) {
+    return kLobeReflection | kLobeTransmission | kLobeSpecular;
+  }
   if (m.model == kModelLambert) return kLobeReflection | kLobeDiffuse;
   return kLobeReflection | kLobeDiffuse | kLobeGlossy;
 }

@@ -29,8 +29,8 @@ uint hashCombine(uint seed, uint v) { return seed ^ (v + (seed << 6u) + (seed >>
 // stack of every invocation.
 // The shuffled index keeps its low kSobolIndexBits bits: bit j of a nested uniform scramble depends only on bits
 // below j, so indices 0 .. 2^k - 1 map onto one aligned block of 2^k indices (whose Sobol points form a net, as
-// the first 2^k do), and the loop below runs at most 20 times. raylab caps a render at 2^20 samples per pixel (--spp); beyond that the
-// sequence repeats.
+// the first 2^k do), and the loop below runs at most 20 times. raylab caps a render at 2^20 samples per pixel
+// (--spp); beyond that the sequence repeats.
 const uint kSobolIndexBits = 20u;
 
 uvec4 sobolOwen4(uint index, uint seed) {

@@ -61,7 +61,9 @@ vec3 environmentRadiance(vec3 d) {
 }
 
 // True when sampleEnvironment has something to draw (an image that is not black).
-bool environmentSamplable() { return hasEnvironmentImage() && environment.fMean > 0.0 && params.environmentStrength > 0.0; }
+bool environmentSamplable() {
+  return hasEnvironmentImage() && environment.fMean > 0.0 && params.environmentStrength > 0.0;
+}
 
 // Density per unit solid angle of sampleEnvironment producing world direction d.
 float environmentPdf(vec3 d) {

@@ -74,7 +74,8 @@ TEST(CliTest, ABadEnvironmentImageExitsOneNamingItAndWritesNothing) {
   std::ofstream(dir / "text.exr") << "P3 1 1 255 0 0 0";
   const std::string out = (dir / "image.exr").string();
   const std::string png = (dir / "image.png").string();
-  for (const std::string& file : {(dir / "missing.exr").string(), (dir / "nan.exr").string(), (dir / "text.exr").string()}) {
+  for (const char* name : {"missing.exr", "nan.exr", "text.exr"}) {
+    const std::string file = (dir / name).string();
     const CommandResult result = runRaylab({"render", "--env", file, "--out", out, "--png", png, "--spp", "1"});
     EXPECT_EQ(result.exitCode, 1) << result.output;
     EXPECT_NE(result.output.find("--env: environment image " + file), std::string::npos) << result.output;

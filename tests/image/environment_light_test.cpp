@@ -27,7 +27,8 @@ namespace {
 class EnvironmentLightTest : public GpuTest {};
 
 // An environment image given texel by texel.
-Environment makeEnvironment(std::uint32_t width, std::uint32_t height, glm::vec3 (*texel)(std::uint32_t, std::uint32_t)) {
+Environment makeEnvironment(std::uint32_t width, std::uint32_t height,
+                            glm::vec3 (*texel)(std::uint32_t, std::uint32_t)) {
   Environment environment;
   environment.path = "test";
   environment.width = width;

@@ -22,7 +22,8 @@ RenderSettings pathSettings(std::uint32_t size, std::uint32_t maxDepth, const Sc
   return settings;
 }
 
-RenderSettings samplingSettings(std::uint32_t size, std::uint32_t maxDepth, const Scene& scene, std::uint32_t sampling) {
+RenderSettings samplingSettings(std::uint32_t size, std::uint32_t maxDepth, const Scene& scene,
+                                std::uint32_t sampling) {
   RenderSettings settings = pathSettings(size, maxDepth, scene);
   settings.kernel->sampling = sampling;
   settings.jitter = true;

@@ -16,7 +16,8 @@ namespace raylab::test {
 // Pixel centres of a size x size image, the path integrator specialised for `scene`.
 RenderSettings pathSettings(std::uint32_t size, std::uint32_t maxDepth, const Scene& scene);
 // The same, jittered, with `sampling` (gpu::kSampling...).
-RenderSettings samplingSettings(std::uint32_t size, std::uint32_t maxDepth, const Scene& scene, std::uint32_t sampling);
+RenderSettings samplingSettings(std::uint32_t size, std::uint32_t maxDepth, const Scene& scene,
+                                std::uint32_t sampling);
 
 // A model's default record with the named parameters set (grey values).
 gpu::MaterialRecord material(const char* model, std::vector<std::pair<const char*, float>> params);
