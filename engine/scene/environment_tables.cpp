@@ -14,6 +14,15 @@ constexpr double kPi = 3.14159265358979323846;
 
 float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
+// Texel (x, y) of the image with its addressing: wrapped around in u, clamped at the poles (as the kernel's
+// environmentTexel).
+glm::vec3 texelAt(const Environment& environment, std::int64_t x, std::int64_t y) {
+  const std::int64_t w = environment.width, h = environment.height;
+  x = (x % w + w) % w;
+  y = std::clamp<std::int64_t>(y, 0, h - 1);
+  return environment.texels[std::size_t(y * w + x)];
+}
+
 // Inclusive cdf of `values` into `cdf`, normalised so that the last entry is exactly 1; all zeros if the sum is.
 double inclusiveCdf(const float* values, std::size_t count, float* cdf) {
   double sum = 0.0;
@@ -34,11 +43,6 @@ EnvironmentTables buildEnvironmentTables(const Environment& environment) {
   tables.width = w;
   tables.height = h;
   if (!environment.hasImage()) return tables;
-  const auto lum = [&](std::int64_t x, std::int64_t y) {
-    x = (x % w + w) % w;  // wraps around in u
-    y = std::clamp<std::int64_t>(y, 0, h - 1);  // clamps at the poles
-    return double(luminance(environment.texels[std::size_t(y) * w + std::size_t(x)]));
-  };
   // The mean of the bilinear reconstruction over one texel's cell is a separable [1, 6, 1] / 8 filter of the
   // texels around it.
   constexpr double kWeights[3] = {1.0 / 8.0, 6.0 / 8.0, 1.0 / 8.0};
@@ -51,7 +55,8 @@ EnvironmentTables buildEnvironmentTables(const Environment& environment) {
       double mean = 0.0;
       for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
-          mean += kWeights[dy + 1] * kWeights[dx + 1] * lum(std::int64_t(x) + dx, std::int64_t(y) + dy);
+          const glm::vec3 texel = texelAt(environment, std::int64_t(x) + dx, std::int64_t(y) + dy);
+          mean += kWeights[dy + 1] * kWeights[dx + 1] * double(luminance(texel));
         }
       }
       tables.f[std::size_t(y) * w + x] = float(mean * sinTheta);
@@ -81,11 +86,7 @@ glm::vec3 environmentLookup(const Environment& environment, glm::vec3 d) {
   const float fx = uv.x * float(w) - 0.5f, fy = uv.y * float(h) - 0.5f;
   const std::int64_t x0 = std::int64_t(std::floor(fx)), y0 = std::int64_t(std::floor(fy));
   const float tx = fx - float(x0), ty = fy - float(y0);
-  const auto texel = [&](std::int64_t x, std::int64_t y) {
-    x = (x % w + w) % w;
-    y = std::clamp<std::int64_t>(y, 0, h - 1);
-    return environment.texels[std::size_t(y * w + x)];
-  };
+  const auto texel = [&](std::int64_t x, std::int64_t y) { return texelAt(environment, x, y); };
   return (1.0f - ty) * ((1.0f - tx) * texel(x0, y0) + tx * texel(x0 + 1, y0)) +
          ty * ((1.0f - tx) * texel(x0, y0 + 1) + tx * texel(x0 + 1, y0 + 1));
 }

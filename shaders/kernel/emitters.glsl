@@ -1,7 +1,7 @@
 // Area lights for next event estimation: emitting triangles and spheres (EmitterRecord), picked in proportion
 // to their power, then a point on a triangle uniformly by area, or a direction in a sphere's cone of visible
 // directions (uniform in solid angle, Shirley et al. 1996; pbrt-v4's SampleSphere). Densities are per unit
-// solid angle at the shading point, for MIS with BSDF sampling (powerHeuristic).
+// solid angle at the shading point, for MIS with BSDF sampling (powerHeuristic, kernel/mis.glsl).
 #ifndef RAYLAB_KERNEL_EMITTERS_GLSL
 #define RAYLAB_KERNEL_EMITTERS_GLSL
 
@@ -15,12 +15,6 @@ struct EmitterSample {
   vec3 radiance;   // L_e arriving along -wi (0 from a back face)
   float pdf;       // solid angle, the emitter's pmf included; 0: no sample
 };
-
-// Veach's power heuristic with beta = 2: the weight of a sample of density a against the other strategy's b.
-float powerHeuristic(float a, float b) {
-  const float a2 = a * a;
-  return a2 > 0.0 ? a2 / (a2 + b * b) : 0.0;
-}
 
 // The first emitter whose inclusive cdf exceeds u: a binary search.
 uint pickEmitter(float u) {

@@ -65,6 +65,12 @@ bool environmentSamplable() {
   return hasEnvironmentImage() && environment.fMean > 0.0 && params.environmentStrength > 0.0;
 }
 
+// The solid-angle density of a direction in a texel of density f, at polar angle theta: f / fMean per unit
+// (u, v) area, over the 2 pi^2 sin(theta) of the map's Jacobian.
+float solidAngleDensity(float f, float sinTheta) {
+  return f / (environment.fMean * 2.0 * kPiEnvironment * kPiEnvironment * sinTheta);
+}
+
 // Density per unit solid angle of sampleEnvironment producing world direction d.
 float environmentPdf(vec3 d) {
   if (!environmentSamplable()) return 0.0;
@@ -74,8 +80,7 @@ float environmentPdf(vec3 d) {
   const vec2 uv = environmentUv(e);
   const uint x = min(uint(uv.x * float(environment.width)), environment.width - 1u);
   const uint y = min(uint(uv.y * float(environment.height)), environment.height - 1u);
-  const float f = environmentData[fOffset() + y * environment.width + x];
-  return f / (environment.fMean * 2.0 * kPiEnvironment * kPiEnvironment * sinTheta);
+  return solidAngleDensity(environmentData[fOffset() + y * environment.width + x], sinTheta);
 }
 
 // The first of `count` entries from `offset` whose inclusive cdf exceeds u: a binary search.
@@ -114,7 +119,7 @@ EnvironmentSample sampleEnvironment(vec2 u) {
   const float f = environmentData[fOffset() + y * w + x];
   if (!(sinTheta > 0.0) || !(f > 0.0)) return s;
   s.wi = rotateY(vec3(sinTheta * sin(phi), cos(theta), -sinTheta * cos(phi)), params.environmentRotation);
-  s.pdf = f / (environment.fMean * 2.0 * kPiEnvironment * kPiEnvironment * sinTheta);
+  s.pdf = solidAngleDensity(f, sinTheta);
   s.radiance = environmentRadiance(s.wi);
   return s;
 }

@@ -5,8 +5,8 @@
 #ifndef RAYLAB_KERNEL_MISS_GLSL
 #define RAYLAB_KERNEL_MISS_GLSL
 
-#include "kernel/emitters.glsl"
 #include "kernel/environment.glsl"
+#include "kernel/mis.glsl"
 #include "kernel/payload.glsl"
 
 // The weight of environment light that a continuation reached, against next event estimation of it.

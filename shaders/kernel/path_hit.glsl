@@ -18,6 +18,7 @@
 #include "kernel/closest_hit.glsl"
 #include "kernel/emitters.glsl"
 #include "kernel/environment.glsl"
+#include "kernel/mis.glsl"
 
 // Bounces before Russian roulette may end a path; after them a path survives with probability equal to its
 // largest throughput channel (at most kRouletteMax), and survivors are weighted up by its inverse.

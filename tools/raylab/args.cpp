@@ -67,21 +67,22 @@ float ArgParser::parseNumber(const std::string& name, const std::string& text, f
   return parsed;
 }
 
-void ArgParser::option(const std::string& name, float* value, const std::string& help, float min, float max) {
+void ArgParser::numberOption(const std::string& name, const std::string& help, float min, float max,
+                             std::function<void(float)> store) {
   char range[64];
   std::snprintf(range, sizeof range, " [%g, %g]", min, max);
-  options_.push_back({name, "X", help + range, [this, name, value, min, max](const std::string& text) {
-                        *value = parseNumber(name, text, min, max);
+  options_.push_back({name, "X", help + range, [this, name, min, max, store](const std::string& text) {
+                        store(parseNumber(name, text, min, max));
                       }});
+}
+
+void ArgParser::option(const std::string& name, float* value, const std::string& help, float min, float max) {
+  numberOption(name, help, min, max, [value](float parsed) { *value = parsed; });
 }
 
 void ArgParser::option(const std::string& name, std::optional<float>* value, const std::string& help, float min,
                        float max) {
-  char range[64];
-  std::snprintf(range, sizeof range, " [%g, %g]", min, max);
-  options_.push_back({name, "X", help + range, [this, name, value, min, max](const std::string& text) {
-                        *value = parseNumber(name, text, min, max);
-                      }});
+  numberOption(name, help, min, max, [value](float parsed) { *value = parsed; });
 }
 
 void ArgParser::choice(const std::string& name, std::string* value, const std::vector<std::string>& choices,

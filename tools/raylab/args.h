@@ -47,6 +47,9 @@ class ArgParser {
   [[noreturn]] void fail(const std::string& message) const;
   // A finite number in [min, max], or fail() naming the option.
   float parseNumber(const std::string& name, const std::string& text, float min, float max) const;
+  // An option taking such a number, which `store` keeps.
+  void numberOption(const std::string& name, const std::string& help, float min, float max,
+                    std::function<void(float)> store);
 
   std::string command_;
   std::string synopsis_;
