@@ -1,7 +1,7 @@
 #version 460
-// raygen of raylab's renderer: one invocation per pixel adds `sampleCount` samples to the pixel's running sum.
-// Sub-pixel jitter comes from the counter-based RNG keyed by the sample index, and samples are summed in
-// order, so the image depends only on the scene, the parameters and the seed, not on how samples were batched.
+// The render kernel's compute entry point (the ray-query backend): the raygen of kernel/raygen.glsl, one
+// invocation per pixel, each segment traced by a ray query and handed to closestHitProgram or miss. The
+// pipeline backend runs the same programs from render.rgen, render.rchit, render.rmiss and sphere.rint.
 #extension GL_EXT_ray_query : require
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_GOOGLE_include_directive : require
@@ -17,119 +17,25 @@ layout(push_constant, scalar) uniform Push { FrameParams params; };
 layout(set = 0, binding = kBindingAccumulation, scalar) buffer Accumulation { vec4 accumulation[]; };
 layout(set = 0, binding = kBindingRayStats, scalar) buffer Stats { RayStats stats; };
 
-#include "kernel/closest_hit.glsl"
-#include "kernel/path_hit.glsl"
+#include "kernel/trace_query.glsl"
+#include "kernel/hit_program.glsl"
 #include "kernel/miss.glsl"
+#include "kernel/raygen.glsl"
 
-// Continuations waiting their turn after glass split a path. Deeper splits than this are resolved by
-// choosing one branch at random in proportion to its weight (unbiased, a little noise).
-const uint kMaxPending = 4u;
-struct Pending {
-  vec3 origin;
-  vec3 direction;
-  vec3 throughput;
-  uint depth;
-};
-
-// The primary ray through a point of the pixel; `offset` in [0, 1)^2 within the pixel.
-vec3 primaryDirection(uvec2 pixel, vec2 offset) {
-  const vec2 ndc = vec2(2.0 * (float(pixel.x) + offset.x) / float(params.width) - 1.0,
-                        1.0 - 2.0 * (float(pixel.y) + offset.y) / float(params.height));
-  return normalize(params.cameraForward + ndc.x * params.cameraRight + ndc.y * params.cameraUp);
-}
-
-// Keeps the split continuation of `p`: queued if there is room, else one of the two branches survives.
-void keepSplit(inout Payload p, inout Pending pending[kMaxPending], inout uint pendingCount) {
-  p.split = false;
-  if (pendingCount < kMaxPending) {
-    pending[pendingCount] = Pending(p.splitOrigin, p.splitDirection, p.splitThroughput, p.depth);
-    pendingCount += 1u;
-    return;
-  }
-  const float keep = maxComponent(p.throughput);
-  const float other = maxComponent(p.splitThroughput);
-  const float pickOther = other / (keep + other);
-  if (rngNext4(p.rng).x < pickOther) {
-    p.origin = p.splitOrigin;
-    p.direction = p.splitDirection;
-    p.throughput = p.splitThroughput / pickOther;
+void traceSegment(inout Payload p) {
+  Hit hit;
+  if (traceClosest(p.origin, p.direction, 0.0, kRayTMax, hit)) {
+    closestHitProgram(hit, p);
   } else {
-    p.throughput /= 1.0 - pickOther;
+    miss(p);
   }
-}
-
-// One sample of `pixel`: the radiance along its camera path, every glass branch included. Adds the rays it
-// traced to `rays` (primary, shadow, secondary).
-vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
-  Payload p;
-  p.rng = rngCreate(pixel, sampleIndex, params.seed);
-  const vec2 offset = (params.flags & kFrameJitter) != 0u ? rngNext2(p.rng) : vec2(0.5);
-  p.origin = params.cameraOrigin;
-  p.direction = primaryDirection(pixel, offset);
-  p.radiance = vec3(0.0);
-  p.throughput = vec3(1.0);
-  p.depth = 0u;
-  p.done = false;
-  p.split = false;
-  p.shadowRays = 0u;
-  p.lastPosition = p.origin;
-  p.lastPdf = 0.0;
-  p.lastSpecular = true;
-  Pending pending[kMaxPending];
-  uint pendingCount = 0u;
-  uint segments = 0u;
-
-  // closestHit bounds every path by maxDepth, and each split happens at a bounce: the loop ends.
-  while (true) {
-    Hit hit;
-    segments += 1u;
-    // The integrator is a specialization constant: each kernel keeps one of these calls.
-    if (traceClosest(p.origin, p.direction, 0.0, kRayTMax, hit)) {
-      if (kIntegrator == kIntegratorPath) closestHitPath(hit, p);
-      else closestHit(hit, p);
-    } else {
-      miss(p);
-    }
-    // Only the slides' integrator splits paths (the path integrator chooses one glass branch at random): in a
-    // path kernel the queue is dead code and the driver drops it with its registers.
-    if (kIntegrator == kIntegratorSlides && p.split) keepSplit(p, pending, pendingCount);
-    if (p.done) {
-      if (kIntegrator == kIntegratorPath || pendingCount == 0u) break;
-      pendingCount -= 1u;
-      p.origin = pending[pendingCount].origin;
-      p.direction = pending[pendingCount].direction;
-      p.throughput = pending[pendingCount].throughput;
-      p.depth = pending[pendingCount].depth;
-      p.done = false;
-    }
-  }
-  rays += uvec3(1u, p.shadowRays, segments - 1u);
-  return p.radiance;
 }
 
 void main() {
   const uvec2 pixel = params.tileOrigin + gl_GlobalInvocationID.xy;
-  const bool inside = pixel.x < params.width && pixel.y < params.height;
   uvec3 rays = uvec3(0u);
   uint dropped = 0u;
-
-  if (inside) {
-    // Samples are added one at a time, in order, exactly as separate dispatches would add them: the sum, and
-    // so the image, does not depend on how many samples a dispatch carries.
-    const uint index = pixel.y * params.width + pixel.x;
-    vec4 sum = accumulation[index];
-    for (uint i = 0u; i < params.sampleCount; ++i) {
-      const vec3 radiance = traceSample(pixel, params.sampleIndex + i, rays);
-      // A NaN or Inf sample is a defect somewhere: it is dropped (the pixel's count says how many it has) and
-      // counted, never spread over the image.
-      if (any(isnan(radiance)) || any(isinf(radiance))) {
-        dropped += 1u;
-      } else {
-        sum += vec4(radiance, 1.0);
-      }
-    }
-    accumulation[index] = sum;
-  }
+  if (pixel.x < params.width && pixel.y < params.height) renderPixel(pixel, rays, dropped);
 
   // One atomic per subgroup rather than per invocation.
   const uvec3 total = subgroupAdd(rays);

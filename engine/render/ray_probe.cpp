@@ -12,23 +12,30 @@ namespace raylab {
 
 namespace {
 
-constexpr std::uint32_t kWorkgroupSize = 64;  // trace_rays.comp: local_size_x
+// The probe once per backend: trace_rays.comp (local size 64), or its raygen with the probe's closest-hit and
+// miss programs (the hit goes back to the raygen) and the shadow rays' miss program.
+const TracePrograms kProbePrograms{
+    "trace_rays.comp", 64, 1,
+    RayTracingProgram{"trace_rays.rgen",
+                      {"probe.rmiss", "shadow.rmiss"},
+                      {{"probe.rchit", ""}, {"probe.rchit", "sphere.rint"}},
+                      1}};
 
-void recordTrace(VkCommandBuffer cmd, const RayProbe& probe, std::uint32_t rayCount, std::uint32_t mode) {
+void recordProbe(VkCommandBuffer cmd, const RayProbe& probe, std::uint32_t rayCount, std::uint32_t mode) {
   const gpu::ProbeParams params{rayCount, mode};
-  recordDispatch(cmd, probe.kernel, &params, (rayCount + kWorkgroupSize - 1) / kWorkgroupSize);
+  recordTrace(cmd, probe.kernel, &params, rayCount, 1);
   computeBarrier(cmd);
 }
 
 }  // namespace
 
-RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uint32_t capacity) {
+RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uint32_t capacity, Backend backend) {
   RayProbe probe;
   probe.capacity = capacity;
   std::vector<DescriptorBinding> bindings = sceneBindings();
   bindings.push_back({gpu::kBindingProbeRays, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   bindings.push_back({gpu::kBindingProbeHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-  probe.kernel = createComputeKernel(device, "trace_rays.comp", bindings, sizeof(gpu::ProbeParams));
+  probe.kernel = createTraceKernel(device, backend, kProbePrograms, bindings, sizeof(gpu::ProbeParams), nullptr, gpuScene);
   probe.rays = createBuffer(device, VkDeviceSize(capacity) * sizeof(gpu::ProbeRay),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kDevice,
                             "probe rays");
@@ -44,7 +51,7 @@ RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uin
 void destroyRayProbe(const Device& device, RayProbe& probe) {
   destroyBuffer(device, probe.hits);
   destroyBuffer(device, probe.rays);
-  destroyComputeKernel(device, probe.kernel);
+  destroyTraceKernel(device, probe.kernel);
   probe = {};
 }
 
@@ -56,7 +63,7 @@ std::vector<gpu::ProbeHit> traceRays(const Device& device, RayProbe& probe, std:
   }
   const auto count = static_cast<std::uint32_t>(rays.size());
   uploadBuffer(device, probe.rays, rays.data(), rays.size_bytes());
-  submitAndWait(device, [&](VkCommandBuffer cmd) { recordTrace(cmd, probe, count, mode); });
+  submitAndWait(device, [&](VkCommandBuffer cmd) { recordProbe(cmd, probe, count, mode); });
   std::vector<gpu::ProbeHit> hits(count);
   downloadBuffer(device, probe.hits, hits.data(), hits.size() * sizeof(gpu::ProbeHit));
   return hits;
@@ -66,7 +73,7 @@ double timeTraceRays(const Device& device, RayProbe& probe, std::uint32_t rayCou
                      std::uint32_t repetitions) {
   const Stopwatch clock;
   submitAndWait(device, [&](VkCommandBuffer cmd) {
-    for (std::uint32_t i = 0; i < repetitions; ++i) recordTrace(cmd, probe, rayCount, mode);
+    for (std::uint32_t i = 0; i < repetitions; ++i) recordProbe(cmd, probe, rayCount, mode);
   });
   return clock.seconds() / std::max<std::uint32_t>(1, repetitions);
 }

@@ -1,4 +1,5 @@
-// Traces caller-given rays with the renderer's own traversal (trace_rays.comp) and returns each closest hit.
+// Traces caller-given rays with the renderer's own traversal (trace_rays.comp, or trace_rays.rgen through the
+// ray-tracing pipeline) and returns each closest hit.
 // Tests compare the hits with analytic geometry; `raylab bench` times them and cross-checks with Embree.
 #pragma once
 
@@ -8,18 +9,19 @@
 #include "scene/gpu_scene.h"
 #include "shared/frame.h"
 #include "vk/device.h"
-#include "vk/compute_kernel.h"
+#include "render/trace_kernel.h"
 
 namespace raylab {
 
 struct RayProbe {
-  ComputeKernel kernel;
+  TraceKernel kernel;
   Buffer rays;
   Buffer hits;
   std::uint32_t capacity = 0;  // rays the buffers hold
 };
 
-RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uint32_t capacity);
+RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uint32_t capacity,
+                        Backend backend = Backend::kQuery);
 void destroyRayProbe(const Device& device, RayProbe& probe);
 
 // Uploads the rays (at most `capacity`), traces them in one dispatch and downloads the hits. `mode`:

@@ -16,7 +16,15 @@ namespace raylab {
 
 namespace {
 
-constexpr std::uint32_t kWorkgroupSize = 8;  // render.comp: local_size 8 x 8
+// The render programs, once per backend: render.comp (local size 8 x 8), or the pipeline's raygen, the path
+// and shadow miss programs, and closest hit on both hit groups, the spheres' with their intersection program.
+// Shadow rays, traced from the closest-hit program, are the one level of recursion.
+const TracePrograms kRenderPrograms{
+    "render.comp", 8, 8,
+    RayTracingProgram{"render.rgen",
+                      {"render.rmiss", "shadow.rmiss"},
+                      {{"render.rchit", ""}, {"render.rchit", "sphere.rint"}},
+                      2}};
 
 SpecializationConstants specializationFor(const KernelFeatures& kernel) {
   SpecializationConstants constants;
@@ -101,28 +109,27 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
 
   renderer.kernel = settings.kernel.value_or(featuresOf(scene));
   SpecializationConstants constants = specializationFor(renderer.kernel);
-  renderer.compute =
-      createComputeKernel(device, "render.comp", rendererBindings(), sizeof(gpu::FrameParams), &constants);
+  renderer.trace = createTraceKernel(device, settings.backend, kRenderPrograms, rendererBindings(),
+                                     sizeof(gpu::FrameParams), &constants, gpuScene);
 
   renderer.stats = createBuffer(device, sizeof(gpu::RayStats),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                                     VK_BUFFER_USAGE_TRANSFER_SRC_BIT,  // recordCopyRayStats
                                 MemoryUse::kHost, "ray stats");
 
-  writeSceneDescriptors(device, renderer.compute.descriptors.set, gpuScene);
-  writeStorageBuffer(device, renderer.compute.descriptors.set, gpu::kBindingRayStats, renderer.stats.handle);
+  writeSceneDescriptors(device, renderer.trace.descriptors.set, gpuScene);
+  writeStorageBuffer(device, renderer.trace.descriptors.set, gpu::kBindingRayStats, renderer.stats.handle);
   resizeRenderer(device, renderer, settings.width, settings.height);
   return renderer;
 }
 
 VkPipeline createRenderPipeline(const Device& device, const Renderer& renderer, const KernelFeatures& kernel) {
   SpecializationConstants constants = specializationFor(kernel);
-  return createComputePipeline(device, renderer.compute.pipelineLayout, "render.comp", &constants);
+  return createTracePipeline(device, renderer.trace, &constants);
 }
 
 void swapRenderPipeline(const Device& device, Renderer& renderer, VkPipeline pipeline, const KernelFeatures& kernel) {
-  vkDestroyPipeline(device.handle, renderer.compute.pipeline, nullptr);
-  renderer.compute.pipeline = pipeline;
+  replaceTracePipeline(device, renderer.trace, pipeline);
   renderer.kernel = kernel;
 }
 
@@ -137,7 +144,7 @@ void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t widt
                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                        MemoryUse::kDevice, "accumulation");
-  writeStorageBuffer(device, renderer.compute.descriptors.set, gpu::kBindingAccumulation, renderer.accumulation.handle);
+  writeStorageBuffer(device, renderer.trace.descriptors.set, gpu::kBindingAccumulation, renderer.accumulation.handle);
   // The camera's aspect ratio follows the image.
   const float oldAspect = float(renderer.params.width) / float(renderer.params.height);
   const float newAspect = float(width) / float(height);
@@ -150,7 +157,7 @@ void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t widt
 void destroyRenderer(const Device& device, Renderer& renderer) {
   destroyBuffer(device, renderer.stats);
   destroyBuffer(device, renderer.accumulation);
-  destroyComputeKernel(device, renderer.compute);
+  destroyTraceKernel(device, renderer.trace);
   renderer = {};
 }
 
@@ -208,8 +215,7 @@ void recordSamplePass(VkCommandBuffer cmd, const Renderer& renderer, std::uint32
   params.sampleIndex = sampleIndex;
   params.sampleCount = sampleCount;
   params.tileOrigin = tileOrigin;
-  recordDispatch(cmd, renderer.compute, &params, (tileSize.x + kWorkgroupSize - 1) / kWorkgroupSize,
-                 (tileSize.y + kWorkgroupSize - 1) / kWorkgroupSize);
+  recordTrace(cmd, renderer.trace, &params, tileSize.x, tileSize.y);
   computeBarrier(cmd);  // the next pass reads and adds to the same sums
 }
 

@@ -1,17 +1,19 @@
-// The offscreen renderer: the render.comp kernel over a GpuScene, accumulating one sample per pixel per
-// dispatch into a float32 buffer. `raylab render`, the viewer and the image tests all drive this.
+// The offscreen renderer: the render kernel (render.comp with ray queries, or render.rgen and its programs in a
+// ray-tracing pipeline) over a GpuScene, accumulating samples per pixel into a float32 buffer. `raylab render`,
+// the viewer and the image tests all drive this.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 
 #include "image/image.h"
+#include "render/backend.h"
 #include "render/kernel_features.h"
+#include "render/trace_kernel.h"
 #include "scene/gpu_scene.h"
 #include "scene/scene.h"
 #include "shared/frame.h"
 #include "vk/device.h"
-#include "vk/compute_kernel.h"
 #include "vk/resources.h"
 
 namespace raylab {
@@ -27,6 +29,7 @@ struct RenderSettings {
   bool jitter = true;                 // anti-aliasing by jittered sub-pixel samples; off: pixel centres
   float throughputCutoff = 1.0e-3f;   // paths whose weight falls below this stop
   std::optional<KernelFeatures> kernel;  // the kernel variant; default: exactly what the scene uses
+  Backend backend = Backend::kQuery;     // chooseBackend picks it for the device
 };
 
 struct RayCounts {
@@ -37,7 +40,7 @@ struct RayCounts {
 };
 
 struct Renderer {
-  ComputeKernel compute;  // render.comp, specialised for `kernel`
+  TraceKernel trace;    // the render programs on the chosen backend, specialised for `kernel`
   Buffer accumulation;  // vec4 per pixel: radiance sum and sample count
   Buffer stats;         // RayStats per submission, host-visible
   KernelFeatures kernel;  // what the pipeline was specialised for
@@ -52,7 +55,7 @@ std::uint64_t maxImagePixels(const Device& device);
 // Throws Error(kExitUsage) naming the size and the limit when `device` cannot render width x height.
 void checkImageSize(const Device& device, std::uint32_t width, std::uint32_t height);
 
-// Creates the pipeline (LLVM compiles it on lavapipe at the first dispatch, not here).
+// Creates the pipeline on settings.backend (LLVM compiles it on lavapipe at the first dispatch, not here).
 Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Scene& scene,
                         const RenderSettings& settings);
 void destroyRenderer(const Device& device, Renderer& renderer);
@@ -62,8 +65,8 @@ void renderSamples(const Device& device, Renderer& renderer, std::uint32_t sampl
 
 // Records `sampleCount` samples (RNG sample indices sampleIndex, sampleIndex + 1, ...) of every pixel of the
 // tile [tileOrigin, tileOrigin + tileSize), followed by a barrier. tileOrigin and tileSize must be multiples
-// of 8 (the workgroup), except where the tile ends at the image edge, so that tiles never overlap. For callers
-// that schedule their own submissions (the viewer); renderSamples does it all for offscreen work.
+// of 8 (the compute workgroup), except where the tile ends at the image edge, so that tiles never overlap.
+// For callers that schedule their own submissions (the viewer); renderSamples does it all for offscreen work.
 void recordSamplePass(VkCommandBuffer cmd, const Renderer& renderer, std::uint32_t sampleIndex,
                       glm::uvec2 tileOrigin, glm::uvec2 tileSize, std::uint32_t sampleCount = 1);
 // Ray counters: zero them at the start of a submission, add them to renderer.rays after it completed.
@@ -78,10 +81,11 @@ void setCamera(Renderer& renderer, const Camera& camera);
 // New image size: reallocates the accumulation buffer (and resets it). Throws Error(kExitUsage) beyond
 // kMaxImageSide or maxImagePixels, leaving the renderer as it was.
 void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t width, std::uint32_t height);
-// A pipeline of the renderer's layout specialised for `kernel`; thread-safe, for building one in the
-// background. On lavapipe the driver compiles it at its first dispatch, not here.
+// A pipeline of the renderer's layout and backend specialised for `kernel`; thread-safe, for building one in
+// the background. On lavapipe the driver compiles it at its first dispatch, not here.
 VkPipeline createRenderPipeline(const Device& device, const Renderer& renderer, const KernelFeatures& kernel);
-// Replaces the pipeline (the old one is destroyed: the device must not be using it).
+// Replaces the pipeline (the old one is destroyed: the device must not be using it), and the pipeline backend's
+// shader binding table with it.
 void swapRenderPipeline(const Device& device, Renderer& renderer, VkPipeline pipeline, const KernelFeatures& kernel);
 
 // Clears the accumulated samples (after a camera or parameter change).

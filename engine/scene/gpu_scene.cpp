@@ -270,6 +270,7 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
     tlasInstance.blas = meshBlas[instance.mesh];
     copyTransform(instance.transform, tlasInstance.transform);
     tlasInstance.customIndex = static_cast<std::uint32_t>(instanceRecords.size());
+    tlasInstance.sbtRecord = tlasInstance.customIndex;
     tlasInstances.push_back(tlasInstance);
     instanceRecords.push_back(record);
     gpuScene.triangleCount += scene.meshes[instance.mesh].indices.size() / 3;
@@ -298,9 +299,11 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
     tlasInstance.blas = sphereBlas;
     copyTransform(glm::mat4(1.0f), tlasInstance.transform);
     tlasInstance.customIndex = static_cast<std::uint32_t>(instanceRecords.size());
+    tlasInstance.sbtRecord = tlasInstance.customIndex;
     tlasInstances.push_back(tlasInstance);
     instanceRecords.push_back(record);
   }
+  for (const gpu::InstanceRecord& record : instanceRecords) gpuScene.instanceGeometry.push_back(record.geometryKind);
   gpuScene.tlas = buildTlas(device, gpuScene.blases, tlasInstances);
   gpuScene.accelerationBuildSeconds = clock.seconds();
 

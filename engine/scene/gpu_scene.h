@@ -30,6 +30,9 @@ struct GpuScene {
   Buffer environment;  // EnvironmentHeader, the environment image and its sampling tables
   std::vector<AccelerationStructure> blases;
   AccelerationStructure tlas;
+  // gpu::kGeometry... of each TLAS instance, in instance order: instance i's custom index and SBT record
+  // offset are both i, and a ray-tracing pipeline's hit record i must be of this geometry's hit group.
+  std::vector<std::uint32_t> instanceGeometry;
   std::uint32_t lightCount = 0;
   std::uint32_t emitterCount = 0;  // emitting primitives (0: nothing for the path integrator to sample)
   std::uint32_t materialCount = 0;

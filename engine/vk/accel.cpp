@@ -120,7 +120,9 @@ AccelerationStructure buildTlas(const Device& device, std::span<const Accelerati
   std::vector<VkAccelerationStructureInstanceKHR> records(instances.size());
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const TlasInstance& instance = instances[i];
-    if (instance.customIndex >= (1u << 24)) throw Error("more than 2^24 instances: the custom index overflows");
+    if (instance.customIndex >= (1u << 24) || instance.sbtRecord >= (1u << 24)) {
+      throw Error("more than 2^24 instances: the custom index or the SBT record offset overflows");
+    }
     VkAccelerationStructureInstanceKHR& record = records[i];
     record = {};
     for (int row = 0; row < 3; ++row) {
@@ -128,7 +130,7 @@ AccelerationStructure buildTlas(const Device& device, std::span<const Accelerati
     }
     record.instanceCustomIndex = instance.customIndex;
     record.mask = 0xFF;
-    record.instanceShaderBindingTableRecordOffset = 0;
+    record.instanceShaderBindingTableRecordOffset = instance.sbtRecord;
     // Winding is resolved in the kernel from the geometric normal, so facing culling stays off.
     record.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
     record.accelerationStructureReference = blases[instance.blas].address;

@@ -34,7 +34,8 @@ struct BlasInput {
 struct TlasInstance {
   std::uint32_t blas = 0;         // index into the built BLAS list
   float transform[3][4] = {};     // object to world, row-major 3x4 as Vulkan expects
-  std::uint32_t customIndex = 0;  // 24 bits: the InstanceRecord of this instance
+  std::uint32_t customIndex = 0;  // 24 bits: the InstanceRecord of this instance (ray queries read it)
+  std::uint32_t sbtRecord = 0;    // 24 bits: its hit-group record in a ray-tracing pipeline's SBT
 };
 
 // Builds every BLAS in one submission (they share one scratch buffer, one region each).

@@ -12,7 +12,7 @@ namespace raylab {
 
 void submitAndWait(const Device& device, const std::function<void(VkCommandBuffer)>& record);
 
-// Makes compute-shader and transfer writes visible to later compute shaders, transfers and host reads.
+// Makes shader (compute or ray-tracing) and transfer writes visible to later shaders, transfers and host reads.
 void computeBarrier(VkCommandBuffer cmd);
 
 }  // namespace raylab

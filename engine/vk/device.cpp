@@ -15,7 +15,7 @@ namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 constexpr const char* kSetupHint = "run `tools/setup.sh render` from the raylab sources to install Mesa's lavapipe "
-                                   "with ray queries (mesa-vulkan-drivers >= 24.1 from bookworm-backports)";
+                                   "with ray tracing (mesa-vulkan-drivers >= 24.1 from bookworm-backports)";
 
 std::atomic<std::uint32_t> gValidationMessages{0};
 
@@ -61,28 +61,37 @@ bool hasInstanceExtension(const char* name) {
                      [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
+// The extensions every capable device needs, whichever backend runs.
 std::vector<const char*> requiredDeviceExtensions(bool presentation) {
   std::vector<const char*> extensions = {
       VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
-      VK_KHR_RAY_QUERY_EXTENSION_NAME,
       VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME,  // required by VK_KHR_acceleration_structure
   };
   if (presentation) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   return extensions;
 }
 
-// The feature structs raylab enables, chained for vkGetPhysicalDeviceFeatures2 and vkCreateDevice.
+// The feature structs raylab enables, chained for vkGetPhysicalDeviceFeatures2 and vkCreateDevice. The structs
+// of the two ray-tracing interfaces are chained only where the device has their extension: the validation
+// layers refuse structs of extensions the device lacks.
 struct FeatureChain {
   VkPhysicalDeviceFeatures2 core{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   VkPhysicalDeviceVulkan12Features vulkan12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   VkPhysicalDeviceAccelerationStructureFeaturesKHR accelerationStructure{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
   VkPhysicalDeviceRayQueryFeaturesKHR rayQuery{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+  VkPhysicalDeviceRayTracingPipelineFeaturesKHR rayTracingPipeline{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
 
-  FeatureChain() {
+  FeatureChain(bool withRayQuery, bool withRayTracingPipeline) {
     core.pNext = &vulkan12;
     vulkan12.pNext = &accelerationStructure;
-    accelerationStructure.pNext = &rayQuery;
+    void** tail = &accelerationStructure.pNext;
+    if (withRayQuery) {
+      *tail = &rayQuery;
+      tail = &rayQuery.pNext;
+    }
+    if (withRayTracingPipeline) *tail = &rayTracingPipeline;
   }
   FeatureChain(const FeatureChain&) = delete;
   FeatureChain& operator=(const FeatureChain&) = delete;
@@ -123,6 +132,10 @@ void surveyRayTracing(VkPhysicalDevice physical, const std::vector<VkExtensionPr
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &rayQuery};
     vkGetPhysicalDeviceFeatures2(physical, &features);
     report.rayQueries = rayQuery.rayQuery == VK_TRUE;
+    if (report.rayQueries && envFlag(kHideRayQueriesVariable)) {
+      report.rayQueries = false;
+      report.rayQueriesHidden = true;
+    }
   }
   if (has(VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME)) {
     VkPhysicalDeviceRayTracingPipelineFeaturesKHR pipeline{
@@ -172,15 +185,18 @@ DeviceReport surveyOne(VkPhysicalDevice physical, std::uint32_t index, VkSurface
   }
   if (!report.missing.empty()) return report;
 
-  FeatureChain features;
+  FeatureChain features(false, false);
   vkGetPhysicalDeviceFeatures2(physical, &features.core);
   if (!features.vulkan12.bufferDeviceAddress) report.missing.push_back("feature bufferDeviceAddress");
   if (!features.vulkan12.scalarBlockLayout) report.missing.push_back("feature scalarBlockLayout");
   if (!features.accelerationStructure.accelerationStructure) report.missing.push_back("feature accelerationStructure");
-  if (!features.rayQuery.rayQuery) report.missing.push_back("feature rayQuery");
-  if (!(subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
-      !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT)) {
-    report.missing.push_back("subgroup arithmetic in compute shaders");
+  report.subgroupArithmetic = (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
+                              (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT);
+  const bool queries = report.rayQueries && report.subgroupArithmetic;
+  if (!queries && !report.rayTracingPipelines) {
+    report.missing.push_back(report.rayQueries ? "ray-tracing pipelines, and subgroup arithmetic in compute shaders "
+                                                 "for its ray queries"
+                                               : "ray queries or ray-tracing pipelines");
   }
   if (findQueueFamily(physical, surface) == VK_QUEUE_FAMILY_IGNORED) {
     report.missing.push_back(surface != VK_NULL_HANDLE ? "a compute queue that can present to the window"
@@ -282,7 +298,8 @@ std::string noCapableDeviceMessage(const std::vector<DeviceReport>& reports) {
     found += (found.empty() ? "" : "; ") + report.name + " (" + report.driver + ") lacks " + missing;
   }
   if (found.empty()) found = "no Vulkan device at all";
-  return "raylab needs a Vulkan 1.2 device with VK_KHR_ray_query and VK_KHR_acceleration_structure, but found " +
+  return "raylab needs a Vulkan 1.2 device with VK_KHR_acceleration_structure and VK_KHR_ray_query or "
+         "VK_KHR_ray_tracing_pipeline, but found " +
          found + "; " + kSetupHint + ".";
 }
 
@@ -319,8 +336,14 @@ Device createDevice(const Instance& instance, const DeviceReport& report, VkSurf
   device.report = report;
   device.queueFamily = findQueueFamily(device.physical, surface);
 
+  device.rayQueries = report.rayQueries && report.subgroupArithmetic;
+  device.rayTracingPipelines = report.rayTracingPipelines;
+
+  VkPhysicalDeviceRayTracingPipelinePropertiesKHR rtProperties{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR};
   VkPhysicalDeviceAccelerationStructurePropertiesKHR asProperties{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
+  asProperties.pNext = device.rayTracingPipelines ? &rtProperties : nullptr;
   VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
   subgroup.pNext = &asProperties;
   VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
@@ -331,14 +354,18 @@ Device createDevice(const Instance& instance, const DeviceReport& report, VkSurf
   device.maxPrimitiveCount = asProperties.maxPrimitiveCount;
   device.maxInstanceCount = asProperties.maxInstanceCount;
   device.subgroupSize = subgroup.subgroupSize;
+  device.rayTracing = {rtProperties.shaderGroupHandleSize, rtProperties.shaderGroupHandleAlignment,
+                       rtProperties.shaderGroupBaseAlignment, rtProperties.maxShaderGroupStride};
   vkGetPhysicalDeviceMemoryProperties(device.physical, &device.memory);
 
-  // Enable exactly what raylab uses, nothing the device merely offers.
-  FeatureChain features;
+  // Enable exactly what raylab uses, nothing the device merely offers: ray queries unless hidden, and
+  // ray-tracing pipelines where there are any, so that either backend can run.
+  FeatureChain features(device.rayQueries, device.rayTracingPipelines);
   features.vulkan12.bufferDeviceAddress = VK_TRUE;
   features.vulkan12.scalarBlockLayout = VK_TRUE;
   features.accelerationStructure.accelerationStructure = VK_TRUE;
-  features.rayQuery.rayQuery = VK_TRUE;
+  features.rayQuery.rayQuery = device.rayQueries ? VK_TRUE : VK_FALSE;
+  features.rayTracingPipeline.rayTracingPipeline = device.rayTracingPipelines ? VK_TRUE : VK_FALSE;
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -346,7 +373,9 @@ Device createDevice(const Instance& instance, const DeviceReport& report, VkSurf
   queueInfo.queueCount = 1;
   queueInfo.pQueuePriorities = &priority;
 
-  const std::vector<const char*> extensions = requiredDeviceExtensions(surface != VK_NULL_HANDLE);
+  std::vector<const char*> extensions = requiredDeviceExtensions(surface != VK_NULL_HANDLE);
+  if (device.rayQueries) extensions.push_back(VK_KHR_RAY_QUERY_EXTENSION_NAME);
+  if (device.rayTracingPipelines) extensions.push_back(VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME);
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   info.pNext = &features.core;
   info.queueCreateInfoCount = 1;
@@ -367,6 +396,13 @@ Device createDevice(const Instance& instance, const DeviceReport& report, VkSurf
   device.ext.getAccelerationStructureDeviceAddress =
       loadDeviceFunction<PFN_vkGetAccelerationStructureDeviceAddressKHR>(
           device.handle, "vkGetAccelerationStructureDeviceAddressKHR");
+  if (device.rayTracingPipelines) {
+    device.ext.createRayTracingPipelines =
+        loadDeviceFunction<PFN_vkCreateRayTracingPipelinesKHR>(device.handle, "vkCreateRayTracingPipelinesKHR");
+    device.ext.getRayTracingShaderGroupHandles = loadDeviceFunction<PFN_vkGetRayTracingShaderGroupHandlesKHR>(
+        device.handle, "vkGetRayTracingShaderGroupHandlesKHR");
+    device.ext.cmdTraceRays = loadDeviceFunction<PFN_vkCmdTraceRaysKHR>(device.handle, "vkCmdTraceRaysKHR");
+  }
   if (instance.debugUtils) {
     device.ext.setDebugUtilsObjectName = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
         vkGetInstanceProcAddr(instance.handle, "vkSetDebugUtilsObjectNameEXT"));

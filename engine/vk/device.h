@@ -1,5 +1,6 @@
-// Vulkan instance and device creation for raylab: a device must support ray queries, acceleration structures,
-// buffer device addresses and the scalar block layout. Thin free functions over plain structs.
+// Vulkan instance and device creation for raylab: a device must support acceleration structures, buffer device
+// addresses, the scalar block layout, and ray queries or ray-tracing pipelines (the two backends). Thin free
+// functions over plain structs.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -30,14 +31,22 @@ struct DeviceReport {
   std::string driver;  // driver name and version string, e.g. "llvmpipe, Mesa 25.0.7 (LLVM 15.0.6)"
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
   std::uint32_t apiVersion = 0;
-  // The two ways of tracing rays it offers. raylab's kernels use ray queries; the ray-tracing-pipeline backend
-  // (issue 11) is not written yet, so a device with pipelines alone is listed but not capable.
+  // The two ways of tracing rays it offers; raylab has a backend for each (render/backend.h) and runs on a
+  // device with either.
   bool rayQueries = false;           // VK_KHR_ray_query with its rayQuery feature
+  bool rayQueriesHidden = false;     // it has them, but RAYLAB_HIDE_RAY_QUERIES=1 makes raylab ignore them
   bool rayTracingPipelines = false;  // VK_KHR_ray_tracing_pipeline with its rayTracingPipeline feature
   std::uint32_t maxRayRecursionDepth = 0;
+  bool subgroupArithmetic = false;   // in compute shaders: the ray-query kernel sums its ray counts with it
   std::vector<std::string> missing;  // what stops raylab from using it; empty when capable
   bool capable() const { return missing.empty(); }
+  bool queryBackend() const { return capable() && rayQueries && subgroupArithmetic; }
+  bool pipelineBackend() const { return capable() && rayTracingPipelines; }
 };
+
+// The environment variable that hides ray queries from raylab's device survey, to try the pipeline backend as
+// a device without ray queries would run it (NVIDIA's data-centre GPUs expose pipelines only).
+inline constexpr const char* kHideRayQueriesVariable = "RAYLAB_HIDE_RAY_QUERIES";
 
 // Extension entry points that the loader does not export.
 struct ExtensionFunctions {
@@ -47,6 +56,18 @@ struct ExtensionFunctions {
   PFN_vkCmdBuildAccelerationStructuresKHR cmdBuildAccelerationStructures = nullptr;
   PFN_vkGetAccelerationStructureDeviceAddressKHR getAccelerationStructureDeviceAddress = nullptr;
   PFN_vkSetDebugUtilsObjectNameEXT setDebugUtilsObjectName = nullptr;  // null without VK_EXT_debug_utils
+  // Null unless the device was created with ray-tracing pipelines.
+  PFN_vkCreateRayTracingPipelinesKHR createRayTracingPipelines = nullptr;
+  PFN_vkGetRayTracingShaderGroupHandlesKHR getRayTracingShaderGroupHandles = nullptr;
+  PFN_vkCmdTraceRaysKHR cmdTraceRays = nullptr;
+};
+
+// The shader-binding-table layout rules (VkPhysicalDeviceRayTracingPipelinePropertiesKHR).
+struct RayTracingLimits {
+  std::uint32_t shaderGroupHandleSize = 0;
+  std::uint32_t shaderGroupHandleAlignment = 1;
+  std::uint32_t shaderGroupBaseAlignment = 1;
+  std::uint32_t maxShaderGroupStride = 0;
 };
 
 struct Device {
@@ -65,6 +86,10 @@ struct Device {
   std::uint64_t maxPrimitiveCount = 0;
   std::uint64_t maxInstanceCount = 0;
   std::uint32_t subgroupSize = 1;
+  // Which ray-tracing interfaces were enabled: each one the report offers (hidden ray queries excepted).
+  bool rayQueries = false;
+  bool rayTracingPipelines = false;
+  RayTracingLimits rayTracing;
   ExtensionFunctions ext;
 };
 

@@ -30,10 +30,10 @@ const VkSpecializationInfo* SpecializationConstants::info() {
 }
 
 VkDescriptorSetLayout createDescriptorSetLayout(const Device& device, std::span<const DescriptorBinding> bindings,
-                                                const char* name) {
+                                                const char* name, VkShaderStageFlags stages) {
   std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
   for (const DescriptorBinding& binding : bindings) {
-    layoutBindings.push_back({binding.binding, binding.type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+    layoutBindings.push_back({binding.binding, binding.type, 1, stages, nullptr});
   }
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.bindingCount = static_cast<std::uint32_t>(layoutBindings.size());
@@ -45,8 +45,8 @@ VkDescriptorSetLayout createDescriptorSetLayout(const Device& device, std::span<
 }
 
 VkPipelineLayout createPipelineLayout(const Device& device, VkDescriptorSetLayout setLayout,
-                                      std::uint32_t pushConstantBytes, const char* name) {
-  const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
+                                      std::uint32_t pushConstantBytes, const char* name, VkShaderStageFlags stages) {
+  const VkPushConstantRange range{stages, 0, pushConstantBytes};
   VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   info.setLayoutCount = 1;
   info.pSetLayouts = &setLayout;
@@ -58,18 +58,22 @@ VkPipelineLayout createPipelineLayout(const Device& device, VkDescriptorSetLayou
   return layout;
 }
 
-VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, std::string_view kernelName,
-                                 SpecializationConstants* constants) {
+VkShaderModule createShaderModule(const Device& device, std::string_view kernelName) {
   const std::span<const std::uint32_t> spirv = embeddedSpirv(kernelName);
   if (spirv.empty()) throw Error("kernel " + std::string(kernelName) + " is not embedded in this build");
-  const std::string name(kernelName);
-
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   moduleInfo.codeSize = spirv.size_bytes();
   moduleInfo.pCode = spirv.data();
   VkShaderModule module = VK_NULL_HANDLE;
   VK_CHECK(vkCreateShaderModule(device.handle, &moduleInfo, nullptr, &module));
-  setDebugName(device, module, name.c_str());
+  setDebugName(device, module, std::string(kernelName).c_str());
+  return module;
+}
+
+VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, std::string_view kernelName,
+                                 SpecializationConstants* constants) {
+  const std::string name(kernelName);
+  const VkShaderModule module = createShaderModule(device, kernelName);
 
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;

@@ -30,12 +30,18 @@ struct DescriptorBinding {
   VkDescriptorType type;
 };
 
+// Every binding is visible to `stages` (compute, or the ray-tracing stages of vk/ray_tracing_pipeline.h).
 VkDescriptorSetLayout createDescriptorSetLayout(const Device& device, std::span<const DescriptorBinding> bindings,
-                                                const char* name);
+                                                const char* name, VkShaderStageFlags stages = VK_SHADER_STAGE_COMPUTE_BIT);
 
-// A pipeline layout with one descriptor set and `pushConstantBytes` of compute push constants.
+// A pipeline layout with one descriptor set and `pushConstantBytes` of push constants for `stages`.
 VkPipelineLayout createPipelineLayout(const Device& device, VkDescriptorSetLayout setLayout,
-                                      std::uint32_t pushConstantBytes, const char* name);
+                                      std::uint32_t pushConstantBytes, const char* name,
+                                      VkShaderStageFlags stages = VK_SHADER_STAGE_COMPUTE_BIT);
+
+// A module of the kernel embedded as `kernelName` (shaders/<kernelName>), debug-named after it; the caller
+// destroys it once its pipeline exists. Throws if it is not embedded.
+VkShaderModule createShaderModule(const Device& device, std::string_view kernelName);
 
 // Builds the kernel embedded as `kernelName` (shaders/<kernelName>). Throws if it is not embedded.
 VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, std::string_view kernelName,

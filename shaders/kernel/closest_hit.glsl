@@ -2,7 +2,8 @@
 //   L_o = delta L_i(x, w_r) + (1 - delta) sum_k f_r(w_k, w_o) E_k,   E_k = V_k I_k cos(theta_k) / r_k^2.
 // The delta term continues the path along the mirror direction. Glass splits into Fresnel-weighted
 // reflection and refraction (exact Fresnel, total internal reflection, optional tint). The raygen loops over
-// the continuations; nothing recurses. Needs `params` (FrameParams) and the scene bindings.
+// the continuations; nothing recurses. Needs `params` (FrameParams), the scene bindings and a traceVisibility
+// (kernel/trace_query.glsl or kernel/trace_pipeline.glsl, by backend).
 #ifndef RAYLAB_KERNEL_CLOSEST_HIT_GLSL
 #define RAYLAB_KERNEL_CLOSEST_HIT_GLSL
 
@@ -12,7 +13,6 @@
 #include "kernel/lights.glsl"
 #include "kernel/surface.glsl"
 #include "kernel/textures.glsl"
-#include "kernel/trace.glsl"
 
 // sum_k f_r(w_k, w_o) E_k over every light, with a shadow ray each. ng faces the viewer's side.
 vec3 directLighting(vec3 position, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material,

@@ -46,6 +46,7 @@ struct RenderOptions {
   std::string fresnel = "exact";
   std::string integrator = "auto";
   std::string sampling = "mis";
+  std::string backend = "auto";
   std::string environment;
   std::optional<float> environmentStrength;
   std::optional<float> environmentRotation;
@@ -90,6 +91,7 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
       {"dropped_samples", renderer.droppedSamples},
       {"all_features", o.allFeatures},
       {"kernel", describe(renderer.kernel)},
+      {"backend", backendName(renderer.trace.backend)},
       {"device", device.report.name},
       {"driver", device.report.driver},
       {"triangles", gpuScene.triangleCount},
@@ -195,6 +197,9 @@ int runRender(int argc, char** argv) {
   args.flag("--all-features", &o.allFeatures, "compile every model and feature in, not only what the scene uses");
   args.choice("--fresnel", &o.fresnel, {"exact", "schlick"},
               "Fresnel term of glass: exact (default) or Schlick's approximation (faster, less accurate)");
+  args.choice("--backend", &o.backend, {"auto", "query", "pipeline"},
+              "query: compute kernels with ray queries; pipeline: a ray-tracing pipeline; auto (default): ray "
+              "queries where the device has them");
   args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(argc, argv)) return kExitOk;
   o.settings.jitter = !o.noAntialiasing;
@@ -226,6 +231,7 @@ int runRender(int argc, char** argv) {
   o.settings.kernel = kernel;
 
   GpuSession gpu(o.device);
+  o.settings.backend = chooseBackend(gpu.device, parseBackendChoice(o.backend));
   checkImageSize(gpu.device, o.settings.width, o.settings.height);
   GpuScene gpuScene = uploadScene(gpu.device, scene);
   Renderer renderer;
@@ -269,7 +275,10 @@ int runRender(int argc, char** argv) {
                 static_cast<unsigned long long>(gpuScene.triangleCount), gpuScene.sphereCount,
                 gpuScene.sphereCount == 1 ? "" : "s", gpuScene.lightCount, gpuScene.lightCount == 1 ? "" : "s");
     std::printf("acceleration structures: %s\n", formatSeconds(gpuScene.accelerationBuildSeconds).c_str());
-    if (o.stats) std::printf("kernel: %s\n", describe(renderer.kernel).c_str());
+    if (o.stats) {
+      std::printf("kernel: %s\n", describe(renderer.kernel).c_str());
+      std::printf("backend: %s\n", backendName(renderer.trace.backend));
+    }
     if (o.stats || renderer.droppedSamples > 0) {
       std::printf("dropped samples (NaN or Inf): %llu\n", static_cast<unsigned long long>(renderer.droppedSamples));
     }

@@ -1,22 +1,20 @@
-// Traversal with ray queries, shaped like OptiX programs: the intersection program intersectSphere decides
-// procedural (sphere) candidates, traceClosest returns the committed hit for closestHit, and traceVisibility is
-// the shadow-ray query that stops at the first hit. Needs kernel/scene_bindings.glsl.
-#ifndef RAYLAB_KERNEL_TRACE_GLSL
-#define RAYLAB_KERNEL_TRACE_GLSL
+// Traversal with ray queries (the compute backend), shaped like OptiX programs: the intersection program
+// intersectSphere decides procedural (sphere) candidates, traceClosest returns the committed hit for
+// closestHit, and traceVisibility is the shadow-ray query that stops at the first hit. The pipeline backend's
+// counterparts are kernel/trace_pipeline.glsl and the .rgen/.rchit/.rmiss/.rint entry points.
+// Needs kernel/scene_bindings.glsl.
+#ifndef RAYLAB_KERNEL_TRACE_QUERY_GLSL
+#define RAYLAB_KERNEL_TRACE_QUERY_GLSL
 
 #include "kernel/payload.glsl"
-#include "kernel/sphere.glsl"
+#include "kernel/sphere_program.glsl"
 
-// The intersection program of AABB candidates (OptiX's and Vulkan's intersection shader, not an any-hit: it
-// finds the hit; nothing accepts or rejects one): the exact sphere test in the instance's object space. Only t
-// in [tMin, tMax] may be reported (tMax: the current committed hit), as rayQueryGenerateIntersectionEXT requires.
-bool intersectSphere(rayQueryEXT query, float tMin, float tMax, out float t) {
-  const uint instance = rayQueryGetIntersectionInstanceCustomIndexEXT(query, false);
-  const uint primitive = rayQueryGetIntersectionPrimitiveIndexEXT(query, false);
-  const SphereRecord sphere = spheres[instances[instance].firstSphere + primitive];
-  const vec3 origin = rayQueryGetIntersectionObjectRayOriginEXT(query, false);
-  const vec3 direction = rayQueryGetIntersectionObjectRayDirectionEXT(query, false);
-  return nearestSphereHit(origin, direction, sphere.center, sphere.radius, tMin, tMax, t);
+// The intersection program on the query's AABB candidate.
+bool intersectCandidate(rayQueryEXT query, float tMin, float tMax, out float t) {
+  return intersectSphere(rayQueryGetIntersectionInstanceCustomIndexEXT(query, false),
+                         rayQueryGetIntersectionPrimitiveIndexEXT(query, false),
+                         rayQueryGetIntersectionObjectRayOriginEXT(query, false),
+                         rayQueryGetIntersectionObjectRayDirectionEXT(query, false), tMin, tMax, t);
 }
 
 float committedT(rayQueryEXT query, float tMax) {
@@ -33,7 +31,7 @@ bool traceClosest(vec3 origin, vec3 direction, float tMin, float tMax, out Hit h
     // Opaque triangles commit inside the traversal; only AABB candidates come back here.
     if (rayQueryGetIntersectionTypeEXT(query, false) == gl_RayQueryCandidateIntersectionAABBEXT) {
       float t;
-      if (intersectSphere(query, tMin, committedT(query, tMax), t)) rayQueryGenerateIntersectionEXT(query, t);
+      if (intersectCandidate(query, tMin, committedT(query, tMax), t)) rayQueryGenerateIntersectionEXT(query, t);
     }
   }
   const uint type = rayQueryGetIntersectionTypeEXT(query, true);
@@ -59,7 +57,7 @@ bool traceVisibility(vec3 origin, vec3 direction, float tMax) {
   while (rayQueryProceedEXT(query)) {
     if (rayQueryGetIntersectionTypeEXT(query, false) == gl_RayQueryCandidateIntersectionAABBEXT) {
       float t;
-      if (intersectSphere(query, 0.0, tMax, t)) rayQueryGenerateIntersectionEXT(query, t);
+      if (intersectCandidate(query, 0.0, tMax, t)) rayQueryGenerateIntersectionEXT(query, t);
     }
   }
   return rayQueryGetIntersectionTypeEXT(query, true) == gl_RayQueryCommittedIntersectionNoneEXT;

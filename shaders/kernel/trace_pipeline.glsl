@@ -1,0 +1,21 @@
+// Traversal through the ray-tracing pipeline (the pipeline backend): the shadow ray as a traceRayEXT that stops
+// at its first hit, skips every closest-hit program and reports visibility through the shadow miss program.
+// The pipeline's counterpart of kernel/trace_query.glsl's traceVisibility, for any stage that traces shadow
+// rays (closest-hit programs, the probe's raygen). Needs kernel/scene_bindings.glsl and GL_EXT_ray_tracing.
+#ifndef RAYLAB_KERNEL_TRACE_PIPELINE_GLSL
+#define RAYLAB_KERNEL_TRACE_PIPELINE_GLSL
+
+#include "shared/ray_tracing.h"
+
+layout(location = kPayloadShadow) rayPayloadEXT uint shadowVisible;
+
+// True when nothing lies on the ray in [0, tMax].
+bool traceVisibility(vec3 origin, vec3 direction, float tMax) {
+  shadowVisible = 0u;
+  traceRayEXT(tlas,
+              gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT, 0xFFu,
+              0u, 1u, kMissShadow, origin, 0.0, direction, tMax, kPayloadShadow);
+  return shadowVisible != 0u;
+}
+
+#endif
