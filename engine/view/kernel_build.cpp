@@ -29,8 +29,8 @@ Scene warmUpScene() {
   return scene;
 }
 
-// One 8x8 dispatch of `kernel` on a device of our own.
-void warmUp(const Instance& instance, const DeviceReport& report, const KernelFeatures& kernel) {
+// One 8x8 dispatch of `kernel` on a device of our own, on the viewer's backend.
+void warmUp(const Instance& instance, const DeviceReport& report, const KernelFeatures& kernel, Backend backend) {
   Device device = createDevice(instance, report);
   GpuScene gpuScene;
   Renderer renderer;
@@ -41,6 +41,7 @@ void warmUp(const Instance& instance, const DeviceReport& report, const KernelFe
     settings.width = 8;
     settings.height = 8;
     settings.kernel = kernel;
+    settings.backend = backend;
     renderer = createRenderer(device, gpuScene, scene, settings);
     renderSamples(device, renderer, 1);
   } catch (...) {
@@ -72,7 +73,7 @@ std::unique_ptr<KernelBuild> startKernelBuild(const Instance& instance, const De
     // The warm-up only saves time: if it fails, the first dispatch on the viewer's queue compiles instead.
     if (warm && b->error.empty()) {
       try {
-        warmUp(instance, device.report, kernel);
+        warmUp(instance, device.report, kernel, rendererHandles.trace.backend);
         b->warmedUp = true;
       } catch (const std::exception&) {
         b->warmedUp = false;

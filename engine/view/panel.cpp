@@ -130,6 +130,9 @@ PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selec
                    ImGuiWindowFlags_NoSavedSettings);
   ImGui::PushItemWidth(-130.0f);  // room for the longest label ("resolution scale") right of every widget
   ImGui::TextUnformatted(statusLine(status).c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("%s", status.device.c_str());
+  ImGui::PopStyleColor();
   if (status.compiling) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "compiling kernel...");
   if (!status.message.empty()) ImGui::TextWrapped("%s", status.message.c_str());
 

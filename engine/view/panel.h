@@ -31,6 +31,7 @@ struct PanelStatus {
   double frameMs = 0.0;
   double raysPerSecond = 0.0;
   bool compiling = false;
+  std::string device;   // "ray queries on llvmpipe (...)": the backend and the device it traces on
   std::string message;  // last screenshot, kernel error, ...
 };
 

@@ -178,7 +178,10 @@ void setUp(Viewer& v) {
   renderSettings.height = full.y;
   v.needed = neededKernel(v);
   renderSettings.kernel = v.needed;
+  renderSettings.backend = chooseBackend(v.device, v.options.backend);
   v.renderer = createRenderer(v.device, v.gpuScene, v.scene, renderSettings);
+  v.status.device = std::string(renderSettings.backend == Backend::kPipeline ? "ray-tracing pipeline" : "ray queries") +
+                    " on " + v.device.report.name;
 
   v.display = createDisplay(v.device, v.swapchain.format, full);
   bindAccumulation(v.device, v.display, v.renderer.accumulation.handle);

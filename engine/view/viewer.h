@@ -21,6 +21,7 @@ struct ViewerOptions {
   std::uint32_t height = 540;
   RenderSettings render;      // seed, max depth, jitter; the size follows the window
   IntegratorChoice integrator = IntegratorChoice::kAuto;
+  BackendChoice backend = BackendChoice::kAuto;
   std::optional<std::uint32_t> device;
   double targetMs = 50.0;
   std::uint32_t sppLimit = 1024;  // 0: refine forever

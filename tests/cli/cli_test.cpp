@@ -49,6 +49,9 @@ TEST(CliTest, UsageErrorsExitTwoAndNameTheOption) {
       {{"render", "--tonemap", "filmic"}, "--tonemap"},
       {{"render", "--integrator", "bidir"}, "--integrator"},
       {{"render", "--sampling", "stratified"}, "--sampling"},
+      {{"render", "--backend", "optix"}, "--backend"},
+      {{"view", "--backend", "cuda"}, "--backend"},
+      {{"sweep", "--model", "lambert", "--param", "rho_d", "--backend", "x"}, "--backend"},
       {{"render", "--env-strength", "-1"}, "--env-strength"},
       {{"render", "--env-strength", "nan"}, "--env-strength"},
       {{"render", "--env-strength", "2"}, "--env-strength: the scene has no environment image"},
@@ -89,7 +92,7 @@ TEST(CliTest, WithoutAVulkanDriverEveryCommandExitsThreeWithOneClearSentence) {
     const CommandResult result = runRaylab({command}, {"VK_ICD_FILENAMES="});
     EXPECT_EQ(result.exitCode, 3) << command << ": " << result.output;
     EXPECT_NE(result.output.find("tools/setup.sh"), std::string::npos) << result.output;
-    EXPECT_NE(result.output.find("ray queries"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("lavapipe with ray tracing"), std::string::npos) << result.output;
   }
 }
 
@@ -98,8 +101,44 @@ TEST(CliTest, DevicesListsTheCapableDevice) {
   EXPECT_EQ(result.exitCode, 0) << result.output;
   EXPECT_NE(result.output.find("raylab: yes"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("driver:"), std::string::npos) << result.output;
-  // Both ray-tracing interfaces are listed; the capable device has ray queries (what raylab's kernels use).
-  EXPECT_NE(result.output.find("ray queries: yes; ray-tracing pipelines: "), std::string::npos) << result.output;
+  // Both ray-tracing interfaces are listed, and the backends raylab runs with them.
+  EXPECT_NE(result.output.find("ray queries: yes; ray-tracing pipelines: yes"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("raylab: yes (backends: query, pipeline; auto: query)"), std::string::npos)
+      << result.output;
+}
+
+// A device with ray-tracing pipelines but no ray queries (NVIDIA's data-centre GPUs), simulated by hiding
+// lavapipe's ray queries: capable, `auto` takes the pipeline, and the image is the ray-query backend's.
+TEST(CliTest, ADeviceWithPipelinesOnlyRendersWithAuto) {
+  const std::vector<std::string> hidden = {"RAYLAB_HIDE_RAY_QUERIES=1"};
+  const CommandResult devices = runRaylab({"devices"}, hidden);
+  EXPECT_EQ(devices.exitCode, 0) << devices.output;
+  EXPECT_NE(devices.output.find("ray queries: hidden"), std::string::npos) << devices.output;
+  EXPECT_NE(devices.output.find("raylab: yes (backends: pipeline; auto: pipeline)"), std::string::npos)
+      << devices.output;
+
+  const std::string dir = scratchDir();
+  const std::vector<std::string> common = {"render", "--width", "40", "--height", "24", "--spp", "2", "--no-png",
+                                           "--stats"};
+  std::vector<std::string> pipelineArgs = common;
+  pipelineArgs.insert(pipelineArgs.end(), {"--out", dir + "/hidden_auto.exr"});
+  const CommandResult pipeline = runRaylab(pipelineArgs, hidden);
+  ASSERT_EQ(pipeline.exitCode, 0) << pipeline.output;
+  EXPECT_NE(pipeline.output.find("backend: pipeline"), std::string::npos) << pipeline.output;
+  std::vector<std::string> queryArgs = common;
+  queryArgs.insert(queryArgs.end(), {"--out", dir + "/query_auto.exr"});
+  const CommandResult query = runRaylab(queryArgs);
+  ASSERT_EQ(query.exitCode, 0) << query.output;
+  EXPECT_NE(query.output.find("backend: query"), std::string::npos) << query.output;
+  EXPECT_EQ(readExr(dir + "/hidden_auto.exr").rgba, readExr(dir + "/query_auto.exr").rgba);
+
+  // Asking for what the device lacks is the no-device exit, naming the option and what to use instead.
+  std::vector<std::string> forced = common;
+  forced.insert(forced.end(), {"--backend", "query", "--out", dir + "/never.exr"});
+  const CommandResult refused = runRaylab(forced, hidden);
+  EXPECT_EQ(refused.exitCode, 3) << refused.output;
+  EXPECT_NE(refused.output.find("--backend query"), std::string::npos) << refused.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/never.exr"));
 }
 
 TEST(CliTest, RenderWritesExrAndPngAndReportsTimings) {

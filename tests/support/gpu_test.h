@@ -31,11 +31,12 @@ class GpuTest : public ::testing::Test {
   std::uint32_t validationBefore_ = 0;
 };
 
-// Uploads `scene`, renders `spp` samples and returns the mean radiance image.
-// Every render also checks that the kernel dropped no NaN or Inf sample.
+// Uploads `scene`, renders `spp` samples on settings.backend and returns the mean radiance image.
+// Every render also checks that the kernel dropped no NaN or Inf sample, and the first render of each scene in a
+// test program that the other backend renders the same first samples bit for bit.
 Image renderImage(const Device& device, const Scene& scene, const RenderSettings& settings, std::uint32_t spp);
 
-// Traces rays against `scene` with the renderer's traversal.
+// Traces rays against `scene` with the renderer's traversal, on both backends, which must agree bit for bit.
 std::vector<gpu::ProbeHit> traceProbeRays(const Device& device, const Scene& scene,
                                           std::span<const gpu::ProbeRay> rays);
 

@@ -1,4 +1,5 @@
-// `raylab devices`: every Vulkan device, its driver, and whether raylab can run on it.
+// `raylab devices`: every Vulkan device, its driver, the ray-tracing interfaces it offers, and whether raylab
+// can run on it (with either of its two backends).
 #include <cstdio>
 
 #include "args.h"
@@ -11,8 +12,10 @@ namespace raylab {
 int runDevices(int argc, char** argv) {
   ArgParser args("raylab devices", "[options]",
                  "Lists every Vulkan device with its driver, the ray-tracing interfaces it offers (ray queries,\n"
-                 "ray-tracing pipelines) and whether raylab can run on it (today: ray queries, acceleration\n"
-                 "structures, buffer device addresses). Use the index with --device N.");
+                 "ray-tracing pipelines), and whether raylab can run on it: acceleration structures, buffer device\n"
+                 "addresses, and ray queries (--backend query) or ray-tracing pipelines (--backend pipeline).\n"
+                 "Use the index with --device N. RAYLAB_HIDE_RAY_QUERIES=1 hides ray queries, as a device with\n"
+                 "pipelines only would show them.");
   if (!args.parse(argc, argv)) return kExitOk;
 
   Instance instance = createInstance({});
@@ -24,12 +27,16 @@ int runDevices(int argc, char** argv) {
     std::printf("%u: %s [%s]\n   driver: %s, Vulkan %u.%u.%u\n", report.index, report.name.c_str(),
                 deviceTypeName(report.type), report.driver.c_str(), VK_API_VERSION_MAJOR(report.apiVersion),
                 VK_API_VERSION_MINOR(report.apiVersion), VK_API_VERSION_PATCH(report.apiVersion));
-    std::printf("   ray queries: %s; ray-tracing pipelines: %s", report.rayQueries ? "yes" : "no",
+    std::printf("   ray queries: %s; ray-tracing pipelines: %s",
+                report.rayQueries ? "yes" : report.rayQueriesHidden ? "hidden (RAYLAB_HIDE_RAY_QUERIES)" : "no",
                 report.rayTracingPipelines ? "yes" : "no");
     if (report.rayTracingPipelines) std::printf(" (max recursion depth %u)", report.maxRayRecursionDepth);
     std::printf("\n");
     if (report.capable()) {
-      std::printf("   raylab: yes\n");
+      std::string backends = report.queryBackend() ? "query" : "";
+      if (report.pipelineBackend()) backends += backends.empty() ? "pipeline" : ", pipeline";
+      std::printf("   raylab: yes (backends: %s; auto: %s)\n", backends.c_str(),
+                  report.queryBackend() ? "query" : "pipeline");
       anyCapable = true;
     } else {
       std::string missing;

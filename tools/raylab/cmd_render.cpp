@@ -197,9 +197,7 @@ int runRender(int argc, char** argv) {
   args.flag("--all-features", &o.allFeatures, "compile every model and feature in, not only what the scene uses");
   args.choice("--fresnel", &o.fresnel, {"exact", "schlick"},
               "Fresnel term of glass: exact (default) or Schlick's approximation (faster, less accurate)");
-  args.choice("--backend", &o.backend, {"auto", "query", "pipeline"},
-              "query: compute kernels with ray queries; pipeline: a ray-tracing pipeline; auto (default): ray "
-              "queries where the device has them");
+  addBackendOption(args, &o.backend);
   args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(argc, argv)) return kExitOk;
   o.settings.jitter = !o.noAntialiasing;

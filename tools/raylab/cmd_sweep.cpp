@@ -49,6 +49,7 @@ struct SweepOptions {
   float exposure = 0.0f;
   std::string toneMap = "clamp";
   std::optional<std::uint32_t> device;
+  std::string backend = "auto";
 };
 
 [[noreturn]] void usage(const std::string& message) {
@@ -190,6 +191,7 @@ std::vector<Image> renderCells(const SweepOptions& o, const SweepScene& sweep) {
     settings.height = o.cell;
     settings.seed = o.seed;
     settings.maxDepth = o.maxDepth;
+    settings.backend = chooseBackend(gpu.device, parseBackendChoice(o.backend));
     renderer = createRenderer(gpu.device, gpuScene, scene, settings);
     const std::uint32_t count = std::uint32_t(sweep.values.size());
     // One line for the whole sheet: its samples count those of every cell.
@@ -254,6 +256,7 @@ int runSweep(int argc, char** argv) {
   args.option("--max-depth", &o.maxDepth, "bounces after the primary hit (mirror, glass)", 0, 64);
   args.option("--exposure", &o.exposure, "exposure of the PNG in stops", -20.0f, 20.0f);
   args.choice("--tonemap", &o.toneMap, {"clamp", "reinhard", "aces"}, "tone curve of the PNG (default clamp)");
+  addBackendOption(args, &o.backend);
   args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(int(rest.size()), rest.data())) return kExitOk;
 

@@ -6,6 +6,7 @@
 
 #include "args.h"
 #include "commands.h"
+#include "gpu_session.h"
 #include "scene/load_scene.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -41,6 +42,7 @@ int runView(int argc, char** argv) {
   std::string scriptPath;
   std::string toneMap = "clamp";
   std::string integrator = "auto";
+  std::string backend = "auto";
   std::string environment;
   std::optional<float> environmentStrength;
   std::optional<float> environmentRotation;
@@ -83,8 +85,10 @@ int runView(int argc, char** argv) {
   args.option("--png", &o.screenshotPng, "FILE.png", "where --screenshot FILE.exr writes its PNG");
   args.option("--capture-window", &o.windowCapture, "FILE.png",
               "save the last frame's window, panel included (with --frames)");
+  addBackendOption(args, &backend);
   args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(argc, argv)) return kExitOk;
+  o.backend = parseBackendChoice(backend);
 
   if (!o.screenshot.empty() && !hasExtension(o.screenshot, ".exr") && !hasExtension(o.screenshot, ".png")) {
     throw Error("raylab view: --screenshot: '" + o.screenshot + "' must end in .exr or .png", kExitUsage);

@@ -17,6 +17,12 @@ GpuSession::GpuSession(std::optional<std::uint32_t> deviceIndex, bool quiet) {
   }
 }
 
+void addBackendOption(ArgParser& args, std::string* value) {
+  args.choice("--backend", value, {"auto", "query", "pipeline"},
+              "query: compute kernels with ray queries; pipeline: a ray-tracing pipeline (raygen, closest-hit, "
+              "miss and intersection programs); auto (default): ray queries where the device has them");
+}
+
 GpuSession::~GpuSession() {
   destroyDevice(device);
   destroyInstance(instance);

@@ -2,7 +2,10 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
+#include "args.h"
+#include "render/backend.h"
 #include "vk/device.h"
 
 namespace raylab {
@@ -17,5 +20,8 @@ struct GpuSession {
   GpuSession(const GpuSession&) = delete;
   GpuSession& operator=(const GpuSession&) = delete;
 };
+
+// --backend auto|query|pipeline, the same on every command that traces.
+void addBackendOption(ArgParser& args, std::string* value);
 
 }  // namespace raylab
