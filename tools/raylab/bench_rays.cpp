@@ -3,10 +3,13 @@
 // hit/miss and distance cross-check.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "args.h"
 #include "bench/bench_scenes.h"
@@ -18,6 +21,7 @@
 #include "render/renderer.h"
 #include "scene/gpu_scene.h"
 #include "util/error.h"
+#include "util/progress.h"
 #include "util/timer.h"
 
 namespace raylab {
@@ -72,15 +76,22 @@ double bestOf(std::uint32_t repeat, const Work& work) {
   return best;
 }
 
+// raylab's times on one backend.
+struct BackendTimes {
+  Backend backend = Backend::kQuery;
+  double seconds = 0.0;
+  double bareSeconds = 0.0;  // closest-hit sets only: traversal without surface reconstruction
+};
+
 struct SetResult {
   std::string scene;
   std::string set;
   std::size_t rays = 0;
-  double raylabSeconds = 0.0;
-  double raylabBareSeconds = 0.0;  // closest-hit sets only: traversal without surface reconstruction
+  std::vector<BackendTimes> raylab;  // per backend compared, in order
   double embreeOneSeconds = 0.0;
   double embreeAllSeconds = 0.0;
-  Agreement agreement;
+  Agreement agreement;               // the first backend against Embree
+  std::size_t backendsDiffer = 0;    // rays whose hit records differ between the backends (bit for bit)
 };
 
 double mrays(std::size_t rays, double seconds) { return seconds > 0.0 ? rays / seconds / 1e6 : 0.0; }
@@ -89,16 +100,19 @@ double mrays(std::size_t rays, double seconds) { return seconds > 0.0 ? rays / s
 // mix: what shading, payload, accumulation and divergence cost on top of traversal.
 struct KernelResult {
   std::string scene;
+  Backend backend = Backend::kQuery;
   double renderMrays = 0.0;  // rays the render kernel traced per second of its dispatch
   double bareMrays = 0.0;    // the same mix of primary and shadow rays as bare queries
 };
 
 KernelResult timeRenderKernel(const Device& device, const GpuScene& gpuScene, const Scene& scene, std::uint32_t size,
-                              std::uint32_t repeat, const SetResult& primary, const SetResult& shadow) {
+                              std::uint32_t repeat, const BackendTimes& primary, std::size_t primaryRays,
+                              const BackendTimes& shadow, std::size_t shadowRays) {
   RenderSettings settings;
   settings.width = size;
   settings.height = size;
   settings.jitter = false;
+  settings.backend = primary.backend;
   Renderer renderer = createRenderer(device, gpuScene, scene, settings);
   renderSamples(device, renderer, 1);  // the driver compiles the kernel here
   const RayCounts before = renderer.rays;
@@ -109,11 +123,108 @@ KernelResult timeRenderKernel(const Device& device, const GpuScene& gpuScene, co
 
   KernelResult result;
   result.scene = scene.name;
+  result.backend = primary.backend;
   result.renderMrays = (primaryPerSample + shadowPerSample) / seconds / 1e6;
-  const double bareSeconds = primaryPerSample * primary.raylabBareSeconds / primary.rays +
-                             shadowPerSample * shadow.raylabSeconds / shadow.rays;
+  const double bareSeconds = primaryPerSample * primary.bareSeconds / primaryRays +
+                             shadowPerSample * shadow.seconds / shadowRays;
   result.bareMrays = (primaryPerSample + shadowPerSample) / bareSeconds / 1e6;
   return result;
+}
+
+// Ray records of two backends that differ bit for bit.
+std::size_t differingHits(std::span<const gpu::ProbeHit> a, std::span<const gpu::ProbeHit> b) {
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) differ += std::memcmp(&a[i], &b[i], sizeof(gpu::ProbeHit)) != 0;
+  return differ;
+}
+
+struct BuildTimes {
+  std::string scene;
+  double raylab = 0.0;
+  double embree = 0.0;
+};
+
+// The first trace of each backend's probe: the driver compiles it there.
+struct FirstTrace {
+  std::string scene;
+  Backend backend = Backend::kQuery;
+  double seconds = 0.0;
+};
+
+void printJson(const Device& device, unsigned cores, std::uint32_t size, const std::vector<BuildTimes>& builds,
+               const std::vector<FirstTrace>& firsts, const std::vector<SetResult>& results,
+               const std::vector<KernelResult>& kernels) {
+  using nlohmann::ordered_json;
+  ordered_json report = {{"benchmark", "rays"}, {"device", device.report.name}, {"driver", device.report.driver},
+                         {"embree", embreeVersion()}, {"cores", cores}, {"size", size},
+                         {"clock", gCpuTime ? "cpu" : "wall"}};
+  report["builds"] = ordered_json::array();
+  for (const BuildTimes& b : builds) report["builds"].push_back({{"scene", b.scene}, {"raylab_s", b.raylab}, {"embree_s", b.embree}});
+  report["first_trace"] = ordered_json::array();
+  for (const FirstTrace& f : firsts) {
+    report["first_trace"].push_back({{"scene", f.scene}, {"backend", backendName(f.backend)}, {"seconds", f.seconds}});
+  }
+  report["sets"] = ordered_json::array();
+  for (const SetResult& r : results) {
+    ordered_json set = {{"scene", r.scene}, {"set", r.set}, {"rays", r.rays}};
+    for (const BackendTimes& t : r.raylab) {
+      const std::string name = backendName(t.backend);
+      set[name + "_mrays"] = mrays(r.rays, t.seconds);
+      set[name + "_bare_mrays"] = mrays(r.rays, t.bareSeconds);
+    }
+    set["embree_1_mrays"] = mrays(r.rays, r.embreeOneSeconds);
+    set["embree_all_mrays"] = mrays(r.rays, r.embreeAllSeconds);
+    set["mismatched"] = r.agreement.mismatched;
+    set["far_apart"] = r.agreement.farApart;
+    set["worst_relative_t"] = r.agreement.worstRelativeT;
+    set["backends_differ"] = r.backendsDiffer;
+    report["sets"].push_back(set);
+  }
+  report["render_kernel"] = ordered_json::array();
+  for (const KernelResult& k : kernels) {
+    report["render_kernel"].push_back({{"scene", k.scene}, {"backend", backendName(k.backend)},
+                                       {"render_mrays", k.renderMrays}, {"bare_mrays", k.bareMrays}});
+  }
+  std::printf("%s\n", report.dump().c_str());
+}
+
+void printTable(const Device& device, unsigned cores, std::uint32_t size, const std::vector<BuildTimes>& builds,
+                const std::vector<FirstTrace>& firsts, const std::vector<SetResult>& results,
+                const std::vector<KernelResult>& kernels) {
+  std::printf("device: %s (%s); Embree %s; %u cores; %ux%u primary rays; rates per %s second\n",
+              device.report.name.c_str(), device.report.driver.c_str(), embreeVersion().c_str(), cores, size, size,
+              gCpuTime ? "CPU" : "wall-clock");
+  std::printf("\nacceleration structure builds:\n");
+  for (const BuildTimes& b : builds) {
+    std::printf("  %-22s raylab %8.1f ms   Embree (%u threads) %8.1f ms\n", b.scene.c_str(), b.raylab * 1e3, cores,
+                b.embree * 1e3);
+  }
+  std::printf("\nfirst trace of the probe (the driver compiles it):\n");
+  for (const FirstTrace& f : firsts) {
+    std::printf("  %-22s %-9s %s\n", f.scene.c_str(), backendName(f.backend), formatSeconds(f.seconds).c_str());
+  }
+  std::printf("\n%-22s %-8s %9s", "scene", "rays", "count");
+  for (const BackendTimes& t : results.front().raylab) std::printf(" %10s %10s", backendName(t.backend), "(bare)");
+  std::printf(" %10s %10s %9s %14s %9s\n", "Embree 1t", "Embree all", "raylab /", "hit/miss", "backends");
+  std::printf("%-22s %-8s %9s", "", "", "");
+  for (std::size_t i = 0; i < results.front().raylab.size(); ++i) std::printf(" %10s %10s", "Mrays/s", "Mrays/s");
+  std::printf(" %10s %10s %9s %14s %9s\n", "Mrays/s", "Mrays/s", "Emb. all", "differ, t>1e-3", "differ");
+  for (const SetResult& r : results) {
+    std::printf("%-22s %-8s %9zu", r.scene.c_str(), r.set.c_str(), r.rays);
+    for (const BackendTimes& t : r.raylab) {
+      char bare[16] = "-";
+      if (t.bareSeconds > 0.0) std::snprintf(bare, sizeof bare, "%.2f", mrays(r.rays, t.bareSeconds));
+      std::printf(" %10.2f %10s", mrays(r.rays, t.seconds), bare);
+    }
+    std::printf(" %10.2f %10.2f %9.2f %8zu, %4zu %9zu\n", mrays(r.rays, r.embreeOneSeconds),
+                mrays(r.rays, r.embreeAllSeconds), r.embreeAllSeconds / r.raylab.front().seconds, r.agreement.mismatched,
+                r.agreement.farApart, r.backendsDiffer);
+  }
+  std::printf("\nrender kernel (1 spp, pixel centres) against bare queries of the same primary/shadow mix:\n");
+  for (const KernelResult& k : kernels) {
+    std::printf("  %-22s %-9s render %6.2f Mrays/s   bare %6.2f Mrays/s   kernel efficiency %3.0f%%\n",
+                k.scene.c_str(), backendName(k.backend), k.renderMrays, k.bareMrays, 100.0 * k.renderMrays / k.bareMrays);
+  }
 }
 
 }  // namespace
@@ -121,14 +232,16 @@ KernelResult timeRenderKernel(const Device& device, const GpuScene& gpuScene, co
 int benchRays(int argc, char** argv) {
   std::uint32_t size = 512, repeat = 3;
   std::string only;
+  std::string backendChoice = "all";
   bool json = false;
   std::optional<std::uint32_t> deviceIndex;
   ArgParser args("raylab bench rays", "[options]",
                  "Traces the same rays (primary rays through SIZE x SIZE pixel centres, shadow rays from every hit\n"
                  "to the light, one diffuse bounce per hit) of four fixed scenes (64 spheres tessellated to 1k,\n"
-                 "100k and 1M triangles, and as analytic spheres) with raylab's kernel and with Embree 3 (one\n"
-                 "thread, and as many threads as cores), and cross-checks hits and distances. Times are the best\n"
-                 "of --repeat runs, after a warm-up that compiles the kernel.");
+                 "100k and 1M triangles, and as analytic spheres) with raylab's kernel on each backend (ray\n"
+                 "queries, ray-tracing pipeline) and with Embree 3 (one thread, and as many threads as cores), and\n"
+                 "cross-checks hits and distances. Times are the best of --repeat runs, after a warm-up that\n"
+                 "compiles the kernel (its time is printed as the first trace).");
   args.option("--size", &size, "primary rays per image side", 16, 4096);
   args.option("--repeat", &repeat, "timed runs per measurement (best kept)", 1, 100);
   args.option("--scene", &only, "KEY", "only this scene: 1k, 100k, 1m or spheres");
@@ -136,17 +249,16 @@ int benchRays(int argc, char** argv) {
             "rate rays per CPU-second of the whole process instead of per wall-clock second: steadier on a\n"
             "                           shared machine, and fair between tracers using different thread counts");
   args.flag("--json", &json, "print one JSON object instead of the table");
+  addBenchBackendOption(args, &backendChoice);
   args.option("--device", &deviceIndex, "Vulkan device index from `raylab devices`");
   if (!args.parse(argc, argv)) return kExitOk;
 
   GpuSession gpu(deviceIndex, json);
+  const std::vector<Backend> backends = backendsToCompare(gpu.device, backendChoice);
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   std::vector<SetResult> results;
-  struct BuildTimes {
-    std::string scene;
-    double raylab, embree;
-  };
   std::vector<BuildTimes> builds;
+  std::vector<FirstTrace> firsts;
   std::vector<KernelResult> kernels;
 
   for (const BenchSceneInfo& info : allBenchScenes()) {
@@ -158,8 +270,14 @@ int benchRays(int argc, char** argv) {
     builds.push_back({scene.name, gpuScene.accelerationBuildSeconds, embreeAll.buildSeconds});
 
     const std::vector<gpu::ProbeRay> primary = primaryRays(scene, size, size);
-    RayProbe probe = createRayProbe(gpu.device, gpuScene, static_cast<std::uint32_t>(primary.size()));
-    const std::vector<gpu::ProbeHit> primaryHits = traceRays(gpu.device, probe, primary);  // also the warm-up
+    std::vector<RayProbe> probes;
+    std::vector<gpu::ProbeHit> primaryHits;
+    for (Backend backend : backends) {
+      probes.push_back(createRayProbe(gpu.device, gpuScene, static_cast<std::uint32_t>(primary.size()), backend));
+      const Stopwatch first;
+      primaryHits = traceRays(gpu.device, probes.back(), primary);  // also the warm-up
+      firsts.push_back({scene.name, backend, first.seconds()});
+    }
     const std::vector<gpu::ProbeRay> shadow = shadowRays(primaryHits, primary, scene.lights[0].record.position);
     const std::vector<gpu::ProbeRay> bounce = bounceRays(primaryHits, primary);
 
@@ -175,11 +293,20 @@ int benchRays(int argc, char** argv) {
       r.rays = set.rays->size();
       const auto count = static_cast<std::uint32_t>(r.rays);
       const std::uint32_t mode = set.occlusion ? gpu::kProbeOcclusion : gpu::kProbeClosest;
-      const std::vector<gpu::ProbeHit> raylabHits = traceRays(gpu.device, probe, *set.rays, mode);
-      r.raylabSeconds = bestOf(repeat, [&] { timeTraceRays(gpu.device, probe, count, mode, 1); });
-      if (!set.occlusion) {
-        traceRays(gpu.device, probe, *set.rays, gpu::kProbeClosestBare);
-        r.raylabBareSeconds = bestOf(repeat, [&] { timeTraceRays(gpu.device, probe, count, gpu::kProbeClosestBare, 1); });
+      std::vector<gpu::ProbeHit> raylabHits;
+      for (std::size_t b = 0; b < backends.size(); ++b) {
+        RayProbe& probe = probes[b];
+        BackendTimes times;
+        times.backend = backends[b];
+        const std::vector<gpu::ProbeHit> hits = traceRays(gpu.device, probe, *set.rays, mode);
+        if (b == 0) raylabHits = hits;
+        else r.backendsDiffer += differingHits(raylabHits, hits);
+        times.seconds = bestOf(repeat, [&] { timeTraceRays(gpu.device, probe, count, mode, 1); });
+        if (!set.occlusion) {
+          traceRays(gpu.device, probe, *set.rays, gpu::kProbeClosestBare);
+          times.bareSeconds = bestOf(repeat, [&] { timeTraceRays(gpu.device, probe, count, gpu::kProbeClosestBare, 1); });
+        }
+        r.raylab.push_back(times);
       }
       if (set.occlusion) {
         const std::vector<std::uint8_t> occluded = embreeTraceOcclusion(embreeAll, *set.rays);
@@ -194,9 +321,13 @@ int benchRays(int argc, char** argv) {
       }
       results.push_back(r);
     }
-    kernels.push_back(timeRenderKernel(gpu.device, gpuScene, scene, size, repeat, results[results.size() - 3],
-                                       results[results.size() - 2]));
-    destroyRayProbe(gpu.device, probe);
+    const SetResult& primaryResult = results[results.size() - 3];
+    const SetResult& shadowResult = results[results.size() - 2];
+    for (std::size_t b = 0; b < backends.size(); ++b) {
+      kernels.push_back(timeRenderKernel(gpu.device, gpuScene, scene, size, repeat, primaryResult.raylab[b],
+                                         primaryResult.rays, shadowResult.raylab[b], shadowResult.rays));
+    }
+    for (RayProbe& probe : probes) destroyRayProbe(gpu.device, probe);
     destroyEmbreeTracer(embreeAll);
     destroyEmbreeTracer(embreeOne);
     destroyGpuScene(gpu.device, gpuScene);
@@ -204,58 +335,9 @@ int benchRays(int argc, char** argv) {
   if (results.empty()) throw Error("raylab bench rays: --scene " + only + " is not one of 1k, 100k, 1m, spheres", kExitUsage);
 
   if (json) {
-    std::printf("{\"benchmark\": \"rays\", \"device\": \"%s\", \"driver\": \"%s\", \"embree\": \"%s\", \"cores\": %u, "
-                "\"size\": %u, \"clock\": \"%s\", \"builds\": [",
-                gpu.device.report.name.c_str(), gpu.device.report.driver.c_str(), embreeVersion().c_str(), cores, size,
-                gCpuTime ? "cpu" : "wall");
-    for (std::size_t i = 0; i < builds.size(); ++i) {
-      std::printf("%s{\"scene\": \"%s\", \"raylab_s\": %.6f, \"embree_s\": %.6f}", i ? ", " : "", builds[i].scene.c_str(),
-                  builds[i].raylab, builds[i].embree);
-    }
-    std::printf("], \"sets\": [");
-    for (std::size_t i = 0; i < results.size(); ++i) {
-      const SetResult& r = results[i];
-      std::printf("%s{\"scene\": \"%s\", \"set\": \"%s\", \"rays\": %zu, \"raylab_mrays\": %.4f, "
-                  "\"raylab_bare_mrays\": %.4f, \"embree_1_mrays\": %.4f, \"embree_all_mrays\": %.4f, "
-                  "\"mismatched\": %zu, \"far_apart\": %zu, \"worst_relative_t\": %.3g}",
-                  i ? ", " : "", r.scene.c_str(), r.set.c_str(), r.rays, mrays(r.rays, r.raylabSeconds),
-                  mrays(r.rays, r.raylabBareSeconds), mrays(r.rays, r.embreeOneSeconds),
-                  mrays(r.rays, r.embreeAllSeconds), r.agreement.mismatched, r.agreement.farApart,
-                  r.agreement.worstRelativeT);
-    }
-    std::printf("], \"render_kernel\": [");
-    for (std::size_t i = 0; i < kernels.size(); ++i) {
-      std::printf("%s{\"scene\": \"%s\", \"render_mrays\": %.4f, \"bare_mrays\": %.4f}", i ? ", " : "",
-                  kernels[i].scene.c_str(), kernels[i].renderMrays, kernels[i].bareMrays);
-    }
-    std::printf("]}\n");
-    return kExitOk;
-  }
-
-  std::printf("device: %s (%s); Embree %s; %u cores; %ux%u primary rays; rates per %s second\n",
-              gpu.device.report.name.c_str(), gpu.device.report.driver.c_str(), embreeVersion().c_str(), cores, size,
-              size, gCpuTime ? "CPU" : "wall-clock");
-  std::printf("\nacceleration structure builds:\n");
-  for (const BuildTimes& b : builds) {
-    std::printf("  %-22s raylab %8.1f ms   Embree (%u threads) %8.1f ms\n", b.scene.c_str(), b.raylab * 1e3, cores,
-                b.embree * 1e3);
-  }
-  std::printf("\n%-22s %-8s %9s %10s %10s %10s %10s %9s %10s\n", "scene", "rays", "count", "raylab", "bare query",
-              "Embree 1t", "Embree all", "raylab /", "hit/miss");
-  std::printf("%-22s %-8s %9s %10s %10s %10s %10s %9s %10s\n", "", "", "", "Mrays/s", "Mrays/s", "Mrays/s", "Mrays/s",
-              "Emb. all", "differ, t>1e-3");
-  for (const SetResult& r : results) {
-    char bare[16] = "-";
-    if (r.raylabBareSeconds > 0.0) std::snprintf(bare, sizeof bare, "%.2f", mrays(r.rays, r.raylabBareSeconds));
-    std::printf("%-22s %-8s %9zu %10.2f %10s %10.2f %10.2f %9.2f %5zu, %zu\n", r.scene.c_str(), r.set.c_str(), r.rays,
-                mrays(r.rays, r.raylabSeconds), bare, mrays(r.rays, r.embreeOneSeconds),
-                mrays(r.rays, r.embreeAllSeconds), r.embreeAllSeconds / r.raylabSeconds, r.agreement.mismatched,
-                r.agreement.farApart);
-  }
-  std::printf("\nrender kernel (1 spp, pixel centres) against bare queries of the same primary/shadow mix:\n");
-  for (const KernelResult& k : kernels) {
-    std::printf("  %-22s render %6.2f Mrays/s   bare %6.2f Mrays/s   kernel efficiency %3.0f%%\n", k.scene.c_str(),
-                k.renderMrays, k.bareMrays, 100.0 * k.renderMrays / k.bareMrays);
+    printJson(gpu.device, cores, size, builds, firsts, results, kernels);
+  } else {
+    printTable(gpu.device, cores, size, builds, firsts, results, kernels);
   }
   return kExitOk;
 }

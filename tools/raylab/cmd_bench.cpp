@@ -4,6 +4,10 @@
 #include <cstdlib>
 #include <string>
 #include <thread>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "args.h"
 #include "bench_commands.h"
@@ -23,8 +27,9 @@ namespace {
 
 struct VariantTiming {
   std::string name;
+  Backend backend = Backend::kQuery;
   std::string kernel;
-  double pipelineSeconds = 0.0;     // vkCreateComputePipelines
+  double pipelineSeconds = 0.0;     // vkCreateComputePipelines or vkCreateRayTracingPipelinesKHR, SBT included
   double firstSampleSeconds = 0.0;  // the first dispatch: lavapipe compiles the kernel with LLVM here
   double perSampleSeconds = 0.0;    // steady state
 };
@@ -34,6 +39,7 @@ VariantTiming timeVariant(const Device& device, const Scene& scene, RenderSettin
   GpuScene gpuScene = uploadScene(device, scene);
   VariantTiming timing;
   timing.name = name;
+  timing.backend = settings.backend;
   const Stopwatch pipelineClock;
   Renderer renderer = createRenderer(device, gpuScene, scene, settings);
   timing.pipelineSeconds = pipelineClock.seconds();
@@ -62,15 +68,18 @@ Scene lambertOnlyScene() {
 int benchKernels(int argc, char** argv) {
   std::uint32_t width = 640, height = 360, samples = 16;
   bool json = false;
+  std::string backend = "all";
   std::optional<std::uint32_t> deviceIndex;
   ArgParser args("raylab bench kernels", "[options]",
-                 "Compares the kernel specialised for a Lambert-only scene with the all-features kernel:\n"
-                 "driver compilation time and time per sample. Mesa's shader cache is disabled for this\n"
-                 "command so that compilation is measured, not a cache hit.");
+                 "Compares the kernel specialised for a Lambert-only scene with the all-features kernel, on\n"
+                 "each backend (ray queries, ray-tracing pipeline): pipeline creation, driver compilation (the\n"
+                 "first sample) and time per sample. Mesa's shader cache is disabled for this command so that\n"
+                 "compilation is measured, not a cache hit.");
   args.option("--width", &width, "image width", 1, 16384);
   args.option("--height", &height, "image height", 1, 16384);
   args.option("--spp", &samples, "samples timed per variant after the first", 1, 4096);
   args.flag("--json", &json, "print one JSON object instead of the table");
+  addBenchBackendOption(args, &backend);
   args.option("--device", &deviceIndex, "Vulkan device index from `raylab devices`");
   if (!args.parse(argc, argv)) return kExitOk;
 
@@ -78,39 +87,59 @@ int benchKernels(int argc, char** argv) {
   setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
   GpuSession gpu(deviceIndex, json);
   const Scene scene = lambertOnlyScene();
-  RenderSettings settings;
-  settings.width = width;
-  settings.height = height;
-  const VariantTiming specialised = timeVariant(gpu.device, scene, settings, "specialised", samples);
-  settings.kernel = allFeatures();
-  const VariantTiming everything = timeVariant(gpu.device, scene, settings, "all features", samples);
+  std::vector<std::pair<VariantTiming, VariantTiming>> timings;  // specialised, all features; per backend
+  for (Backend b : backendsToCompare(gpu.device, backend)) {
+    RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.backend = b;
+    const VariantTiming specialised = timeVariant(gpu.device, scene, settings, "specialised", samples);
+    settings.kernel = allFeatures();
+    timings.emplace_back(specialised, timeVariant(gpu.device, scene, settings, "all features", samples));
+  }
 
   const unsigned cores = std::thread::hardware_concurrency();
   if (json) {
-    std::printf("{\"benchmark\": \"kernels\", \"device\": \"%s\", \"driver\": \"%s\", \"cores\": %u, "
-                "\"width\": %u, \"height\": %u, \"variants\": [",
-                gpu.device.report.name.c_str(), gpu.device.report.driver.c_str(), cores, width, height);
-    for (const VariantTiming* t : {&specialised, &everything}) {
-      std::printf("%s{\"name\": \"%s\", \"pipeline_s\": %.6f, \"first_sample_s\": %.6f, \"per_sample_s\": %.6f}",
-                  t == &specialised ? "" : ", ", t->name.c_str(), t->pipelineSeconds, t->firstSampleSeconds,
-                  t->perSampleSeconds);
+    nlohmann::ordered_json variants = nlohmann::ordered_json::array();
+    for (const auto& [specialised, everything] : timings) {
+      for (const VariantTiming* t : {&specialised, &everything}) {
+        variants.push_back({{"name", t->name},
+                            {"backend", backendName(t->backend)},
+                            {"pipeline_s", t->pipelineSeconds},
+                            {"first_sample_s", t->firstSampleSeconds},
+                            {"per_sample_s", t->perSampleSeconds},
+                            {"compile_ratio_to_specialised", t->firstSampleSeconds / specialised.firstSampleSeconds},
+                            {"per_sample_ratio_to_specialised", t->perSampleSeconds / specialised.perSampleSeconds}});
+      }
     }
-    std::printf("], \"compile_ratio\": %.4f, \"per_sample_ratio\": %.4f}\n",
-                everything.firstSampleSeconds / specialised.firstSampleSeconds,
-                everything.perSampleSeconds / specialised.perSampleSeconds);
+    const nlohmann::ordered_json report = {{"benchmark", "kernels"}, {"device", gpu.device.report.name},
+                                           {"driver", gpu.device.report.driver}, {"cores", cores},
+                                           {"scene", scene.name}, {"width", width},
+                                           {"height", height}, {"variants", variants}};
+    std::printf("%s\n", report.dump().c_str());
     return kExitOk;
   }
   std::printf("device: %s (%s), %u cores; scene: %s, %ux%u\n", gpu.device.report.name.c_str(),
               gpu.device.report.driver.c_str(), cores, scene.name.c_str(), width, height);
-  std::printf("%-14s %12s %22s %12s\n", "kernel", "pipeline", "first sample (compile)", "per sample");
-  for (const VariantTiming* t : {&specialised, &everything}) {
-    std::printf("%-14s %12s %22s %12s\n", t->name.c_str(), formatSeconds(t->pipelineSeconds).c_str(),
-                formatSeconds(t->firstSampleSeconds).c_str(), formatSeconds(t->perSampleSeconds).c_str());
+  std::printf("%-9s %-14s %12s %22s %12s\n", "backend", "kernel", "pipeline", "first sample (compile)", "per sample");
+  for (const auto& [specialised, everything] : timings) {
+    for (const VariantTiming* t : {&specialised, &everything}) {
+      std::printf("%-9s %-14s %12s %22s %12s\n", backendName(t->backend), t->name.c_str(),
+                  formatSeconds(t->pipelineSeconds).c_str(), formatSeconds(t->firstSampleSeconds).c_str(),
+                  formatSeconds(t->perSampleSeconds).c_str());
+    }
   }
-  std::printf("specialised: %s\n", specialised.kernel.c_str());
-  std::printf("all features / specialised: compile %.2fx, per sample %.2fx\n",
-              everything.firstSampleSeconds / specialised.firstSampleSeconds,
-              everything.perSampleSeconds / specialised.perSampleSeconds);
+  std::printf("specialised: %s\n", timings.front().first.kernel.c_str());
+  for (const auto& [specialised, everything] : timings) {
+    std::printf("%s: all features / specialised: compile %.2fx, per sample %.2fx\n", backendName(specialised.backend),
+                everything.firstSampleSeconds / specialised.firstSampleSeconds,
+                everything.perSampleSeconds / specialised.perSampleSeconds);
+  }
+  if (timings.size() == 2) {
+    std::printf("pipeline / query (specialised): compile %.2fx, per sample %.2fx\n",
+                timings[1].first.firstSampleSeconds / timings[0].first.firstSampleSeconds,
+                timings[1].first.perSampleSeconds / timings[0].first.perSampleSeconds);
+  }
   return kExitOk;
 }
 

@@ -23,6 +23,19 @@ void addBackendOption(ArgParser& args, std::string* value) {
               "miss and intersection programs); auto (default): ray queries where the device has them");
 }
 
+void addBenchBackendOption(ArgParser& args, std::string* value) {
+  args.choice("--backend", value, {"all", "auto", "query", "pipeline"},
+              "all (default): every backend the device offers, side by side; or only auto, query or pipeline");
+}
+
+std::vector<Backend> backendsToCompare(const Device& device, const std::string& choice) {
+  if (choice != "all") return {chooseBackend(device, parseBackendChoice(choice))};
+  std::vector<Backend> backends;
+  if (device.rayQueries) backends.push_back(Backend::kQuery);
+  if (device.rayTracingPipelines) backends.push_back(Backend::kPipeline);
+  return backends;
+}
+
 GpuSession::~GpuSession() {
   destroyDevice(device);
   destroyInstance(instance);

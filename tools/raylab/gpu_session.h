@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "args.h"
 #include "render/backend.h"
@@ -23,5 +24,9 @@ struct GpuSession {
 
 // --backend auto|query|pipeline, the same on every command that traces.
 void addBackendOption(ArgParser& args, std::string* value);
+// The benchmarks' --backend: also `all` (their default), every backend the device offers, to compare them in
+// one run; backendsToCompare resolves it.
+void addBenchBackendOption(ArgParser& args, std::string* value);
+std::vector<Backend> backendsToCompare(const Device& device, const std::string& choice);
 
 }  // namespace raylab
