@@ -68,14 +68,25 @@ Scene loadQuietly(const fs::path& path, const std::string& camera = "") {
   return loadGltfFile(path.string(), {camera});
 }
 
-TEST_F(SceneRenderTest, EveryCommittedSceneRendersFinite) {
+// Both integrators, and (renderImage) both backends bit for bit alike.
+TEST_F(SceneRenderTest, EveryCommittedSceneRendersFiniteWithBothIntegrators) {
   const std::vector<fs::path> files = assetFiles();
   ASSERT_FALSE(files.empty()) << "no scenes in " << assetsDirectory() << ": run tools/scenes/make_scenes.py";
   for (const fs::path& file : files) {
-    SCOPED_TRACE(file.string());
-    const Image image = render(device(), loadQuietly(file), 64, 48, 2);
-    saveForInspection(image, file.stem().string());
-    expectSaneImage(image, file.stem().string());
+    const Scene scene = loadQuietly(file);
+    for (IntegratorChoice integrator : {IntegratorChoice::kSlides, IntegratorChoice::kPath}) {
+      const std::string name = file.stem().string() + "_" + integratorName(chooseIntegrator(scene, integrator));
+      SCOPED_TRACE(name);
+      RenderSettings settings;
+      settings.width = 64;
+      settings.height = 48;
+      KernelFeatures kernel = featuresOf(scene);
+      kernel.integrator = chooseIntegrator(scene, integrator);
+      settings.kernel = kernel;
+      const Image image = renderImage(device(), scene, settings, 2);
+      saveForInspection(image, name);
+      expectSaneImage(image, name);
+    }
   }
 }
 

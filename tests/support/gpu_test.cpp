@@ -8,6 +8,7 @@
 
 #include "render/ray_probe.h"
 #include "scene/gpu_scene.h"
+#include "shared/features.h"
 #include "util/error.h"
 
 namespace raylab::test {
@@ -65,8 +66,8 @@ void hashBytes(std::uint64_t& hash, const void* data, std::size_t size) {
   for (std::size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
 }
 
-// What makes a test scene what it is (its name, materials, lights, spheres, meshes, camera) and the image size:
-// renders that differ only in seed, sample count or kernel variant share it.
+// What makes a test scene what it is (its name, materials, lights, spheres, meshes, camera), the image size and
+// the integrator: renders that differ only in seed, sample count or sampling strategy share it.
 std::uint64_t sceneKey(const Scene& scene, const RenderSettings& settings) {
   std::uint64_t hash = 14695981039346656037ull;
   hashBytes(hash, scene.name.data(), scene.name.size());
@@ -76,13 +77,15 @@ std::uint64_t sceneKey(const Scene& scene, const RenderSettings& settings) {
   for (const Mesh& mesh : scene.meshes) hashBytes(hash, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
   hashBytes(hash, &scene.camera.position, sizeof scene.camera.position);
   hashBytes(hash, &scene.camera.target, sizeof scene.camera.target);
-  const std::uint32_t size[3] = {settings.width, settings.height, settings.maxDepth};
+  const std::uint32_t size[4] = {settings.width, settings.height, settings.maxDepth,
+                                 settings.kernel ? settings.kernel->integrator : gpu::kIntegratorSlides};
   hashBytes(hash, size, sizeof size);
   return hash;
 }
 
-// Each test scene is cross-checked on the other backend once per test program, on its first render: repeated
-// renders of one scene (seeds, sampling strategies) add nothing but the other backend's compilation time.
+// Each test scene is cross-checked on the other backend once per test program and integrator, on its first
+// render: repeated renders of one scene (seeds, sampling strategies) would add little but the other backend's
+// compilation time.
 bool firstRenderOf(const Scene& scene, const RenderSettings& settings) {
   static std::set<std::uint64_t> checked;
   return checked.insert(sceneKey(scene, settings)).second;
