@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "args.h"
+#include "gpu_session.h"
 #include "bench_commands.h"
 #include "scene/load_scene.h"
 #include "util/atomic_file.h"
@@ -66,8 +67,10 @@ void appendFramesCsv(std::string* csv, Size size, const std::vector<FrameRecord>
 }
 
 ViewTiming timeViewer(const Scene& scene, Size size, std::uint32_t warmupFrames, std::uint32_t orbitFrames,
-                      float degreesPerFrame, double targetMs, std::uint32_t spp, std::string* csv) {
+                      float degreesPerFrame, double targetMs, std::uint32_t spp, BackendChoice backend,
+                      std::string* csv) {
   ViewerOptions options;
+  options.backend = backend;
   options.width = size.width;
   options.height = size.height;
   options.targetMs = targetMs;
@@ -143,6 +146,7 @@ int benchView(int argc, char** argv) {
   bool json = false;
   std::string scenePath;
   std::string csvPath;
+  std::string backend = "auto";
   ArgParser args("raylab bench view", "[options]",
                  "Times the viewer on the default scene at 640x360 and 1280x720: frame times while the camera\n"
                  "orbits one step per frame, and the time from the last change until the window shows --spp\n"
@@ -159,6 +163,7 @@ int benchView(int argc, char** argv) {
   args.option("--frames-csv", &csvPath, "FILE",
               "also write every frame (size, index, phase, submit and completion time, traced size, preview, spp, "
               "pixel-samples, device seconds of tracing, display, blit and the whole frame) to FILE");
+  addBackendOption(args, &backend);
   if (!args.parse(argc, argv)) return kExitOk;
   if (degrees == 0.0f) degrees = 360.0f / float(orbitFrames);
 
@@ -169,16 +174,16 @@ int benchView(int argc, char** argv) {
   std::vector<ViewTiming> timings;
   for (const Size size : {Size{640, 360}, Size{1280, 720}}) {
     timings.push_back(timeViewer(scene, size, warmupFrames, orbitFrames, degrees, targetMs, spp,
-                                 csvPath.empty() ? nullptr : &csv));
+                                 parseBackendChoice(backend), csvPath.empty() ? nullptr : &csv));
   }
   if (!csvPath.empty()) writeFileAtomically(csvPath, csv);
   const std::string loadAfter = loadAverage();
   const unsigned cores = std::thread::hardware_concurrency();
 
   if (json) {
-    std::printf("{\"benchmark\": \"view\", \"scene\": \"%s\", \"cores\": %u, \"target_ms\": %.1f, \"spp\": %u, "
-                "\"load_before\": \"%s\", \"load_after\": \"%s\", \"sizes\": [",
-                scene.name.c_str(), cores, targetMs, spp, loadBefore.c_str(), loadAfter.c_str());
+    std::printf("{\"benchmark\": \"view\", \"scene\": \"%s\", \"backend\": \"%s\", \"cores\": %u, "
+                "\"target_ms\": %.1f, \"spp\": %u, \"load_before\": \"%s\", \"load_after\": \"%s\", \"sizes\": [",
+                scene.name.c_str(), backend.c_str(), cores, targetMs, spp, loadBefore.c_str(), loadAfter.c_str());
     for (std::size_t i = 0; i < timings.size(); ++i) {
       const ViewTiming& t = timings[i];
       std::printf("%s{\"width\": %u, \"height\": %u, \"first_frame_s\": %.4f, \"orbit_median_ms\": %.2f, "
@@ -193,8 +198,8 @@ int benchView(int argc, char** argv) {
     std::printf("]}\n");
     return kExitOk;
   }
-  std::printf("scene: %s; %u cores; target %.0f ms/frame; load average %s before, %s after\n", scene.name.c_str(),
-              cores, targetMs, loadBefore.c_str(), loadAfter.c_str());
+  std::printf("scene: %s; backend %s; %u cores; target %.0f ms/frame; load average %s before, %s after\n",
+              scene.name.c_str(), backend.c_str(), cores, targetMs, loadBefore.c_str(), loadAfter.c_str());
   std::printf("%-10s %12s %24s %22s %16s %22s %13s\n", "window", "first frame", "orbit ms/frame p50/p90/max",
               "preview (mean, widths)", "still to spp", "still ms/frame (other)", "ns/pixel-spp");
   for (const ViewTiming& t : timings) {
