@@ -4,6 +4,7 @@
 namespace raylab {
 
 int benchKernels(int argc, char** argv);
+int benchOrder(int argc, char** argv);
 int benchRays(int argc, char** argv);
 int benchView(int argc, char** argv);
 

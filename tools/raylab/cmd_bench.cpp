@@ -148,6 +148,7 @@ int runBench(int argc, char** argv) {
       "Usage: raylab bench <benchmark> [options]\n\nBenchmarks:\n"
       "  kernels    the scene-specialised kernel against the all-features kernel\n"
       "  rays       raylab against Embree 3 on the same rays of fixed scenes\n"
+      "  order      what ray and shading coherence is worth: the same bounce rays in five orders\n"
       "  view       the viewer's frame times while orbiting and its time to 16 spp (needs X11)\n"
       "\n`raylab bench <benchmark> --help` describes each.\n";
   if (argc < 1) throw Error("raylab bench: which benchmark?\n" + usage, kExitUsage);
@@ -158,6 +159,7 @@ int runBench(int argc, char** argv) {
   }
   if (which == "kernels") return benchKernels(argc - 1, argv + 1);
   if (which == "rays") return benchRays(argc - 1, argv + 1);
+  if (which == "order") return benchOrder(argc - 1, argv + 1);
   if (which == "view") return benchView(argc - 1, argv + 1);
   throw Error("raylab bench: unknown benchmark '" + which + "'\n" + usage, kExitUsage);
 }
