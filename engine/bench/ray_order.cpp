@@ -30,13 +30,14 @@ std::string_view rayOrderName(RayOrder order) {
     case RayOrder::kOctant: return "octant";
     case RayOrder::kOctantOrigin: return "octant+origin";
     case RayOrder::kOriginOctant: return "origin+octant";
+    case RayOrder::kReplicated: return "8 copies";
   }
   return "?";
 }
 
 std::span<const RayOrder> allRayOrders() {
   static constexpr std::array kOrders = {RayOrder::kGenerated, RayOrder::kRandom, RayOrder::kOctant,
-                                         RayOrder::kOctantOrigin, RayOrder::kOriginOctant};
+                                         RayOrder::kOctantOrigin, RayOrder::kOriginOctant, RayOrder::kReplicated};
   return kOrders;
 }
 
@@ -44,6 +45,10 @@ std::vector<std::uint32_t> rayPermutation(std::span<const gpu::ProbeRay> rays, R
   std::vector<std::uint32_t> permutation(rays.size());
   std::iota(permutation.begin(), permutation.end(), 0u);
   if (order == RayOrder::kGenerated) return permutation;
+  if (order == RayOrder::kReplicated) {
+    for (std::size_t i = 0; i < permutation.size(); ++i) permutation[i] = std::uint32_t(i / 8 * 8);
+    return permutation;
+  }
   if (order == RayOrder::kRandom) {
     std::mt19937 generator(20261202);
     std::shuffle(permutation.begin(), permutation.end(), generator);

@@ -18,6 +18,7 @@ enum class RayOrder {
   kOctant,        // stable by direction octant (3 bits)
   kOctantOrigin,  // octant, then a 30-bit Morton code of the origin within the rays' bounds
   kOriginOctant,  // the Morton code of the origin, then the octant
+  kReplicated,    // every 8th ray, 8 times in a row: each group of 8 lanes traces one ray (no divergence at all)
 };
 
 std::string_view rayOrderName(RayOrder order);
