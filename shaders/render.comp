@@ -22,6 +22,14 @@ layout(set = 0, binding = kBindingRayStats, scalar) buffer Stats { RayStats stat
 #include "kernel/miss.glsl"
 #include "kernel/raygen.glsl"
 
+// Lane utilisation: what this lane traced, and what its group spent, since the lanes last joined.
+uint laneSegments = 0u;
+uint groupSegments = 0u;
+void lanesJoin(uint segments) {
+  laneSegments += segments;
+  groupSegments += subgroupMax(segments);
+}
+
 void traceSegment(inout Payload p) {
   Hit hit;
   if (traceClosest(p.origin, p.direction, 0.0, kRayTMax, hit)) {
@@ -40,8 +48,12 @@ void main() {
   // One atomic per subgroup rather than per invocation.
   const uvec3 total = subgroupAdd(rays);
   const uint totalDropped = subgroupAdd(dropped);
+  const uint totalLaneSegments = subgroupAdd(laneSegments);
+  const uint totalGroupSegments = subgroupMax(groupSegments);
   if (subgroupElect()) {
     if (totalDropped > 0u) atomicAdd(stats.droppedSamples, totalDropped);
+    atomicAdd(stats.laneSegments, totalLaneSegments);
+    atomicAdd(stats.groupSegments, totalGroupSegments);
     atomicAdd(stats.primaryRays, total.x);
     atomicAdd(stats.shadowRays, total.y);
     atomicAdd(stats.secondaryRays, total.z);

@@ -236,6 +236,12 @@ void collectRayStats(Renderer& renderer) {
   renderer.rays.shadow += stats->shadowRays;
   renderer.rays.secondary += stats->secondaryRays;
   renderer.droppedSamples += stats->droppedSamples;
+  renderer.rays.laneSegments += stats->laneSegments;
+  renderer.rays.groupSegments += stats->groupSegments;
+}
+
+double laneUtilisation(const RayCounts& rays, std::uint32_t subgroupSize) {
+  return rays.groupSegments > 0 ? double(rays.laneSegments) / (double(subgroupSize) * double(rays.groupSegments)) : 0.0;
 }
 
 Image readImage(const Device& device, const Renderer& renderer) {

@@ -37,7 +37,14 @@ struct RayCounts {
   std::uint64_t shadow = 0;
   std::uint64_t secondary = 0;
   std::uint64_t total() const { return primary + shadow + secondary; }
+  // Lane utilisation of the ray-query backend (gpu::RayStats); both 0 on the pipeline backend.
+  std::uint64_t laneSegments = 0;
+  std::uint64_t groupSegments = 0;
 };
+
+// The share of its groups' segment slots the lanes used (lavapipe runs 8 lanes in lockstep, so a group runs until
+// its busiest lane is done); 0 when it was not measured.
+double laneUtilisation(const RayCounts& rays, std::uint32_t subgroupSize);
 
 struct Renderer {
   TraceKernel trace;    // the render programs on the chosen backend, specialised for `kernel`

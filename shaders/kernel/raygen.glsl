@@ -49,9 +49,8 @@ void keepSplit(inout Payload p, inout Pending pending[kMaxPending], inout uint p
   }
 }
 
-// One sample of `pixel`: the radiance along its camera path, every glass branch included. Adds the rays it
-// traced to `rays` (primary, shadow, secondary).
-vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
+// The camera path of sample `sampleIndex` of `pixel`, ready for its first segment.
+Payload startSample(uvec2 pixel, uint sampleIndex) {
   Payload p;
   p.rng = rngCreate(pixel, sampleIndex, params.seed);
   const vec2 offset = (params.flags & kFrameJitter) != 0u ? rngNext2(p.rng) : vec2(0.5);
@@ -66,6 +65,27 @@ vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
   p.lastPosition = p.origin;
   p.lastPdf = 0.0;
   p.lastSpecular = true;
+  return p;
+}
+
+// Adds a finished sample to the pixel's running sum. A NaN or Inf sample is a defect somewhere: it is dropped
+// (the pixel's count says how many it has) and counted, never spread over the image.
+void addSample(vec3 radiance, inout vec4 sum, inout uint dropped) {
+  if (any(isnan(radiance)) || any(isinf(radiance))) {
+    dropped += 1u;
+  } else {
+    sum += vec4(radiance, 1.0);
+  }
+}
+
+// Where the lanes of a group (lavapipe: 8 in lockstep) join again after `segments` segments of this lane: the
+// entry point may count lane utilisation there (render.comp does, with subgroup operations).
+void lanesJoin(uint segments);
+
+// One sample of `pixel`: the radiance along its camera path, every glass branch included. Adds the rays it
+// traced to `rays` (primary, shadow, secondary).
+vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
+  Payload p = startSample(pixel, sampleIndex);
   Pending pending[kMaxPending];
   uint pendingCount = 0u;
   uint segments = 0u;
@@ -87,26 +107,18 @@ vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
       p.done = false;
     }
   }
+  lanesJoin(segments);
   rays += uvec3(1u, p.shadowRays, segments - 1u);
   return p.radiance;
 }
 
 // Adds params.sampleCount samples to the pixel's running sum, one at a time and in order, exactly as separate
-// dispatches would add them: the sum, and so the image, does not depend on how many samples a dispatch
-// carries. Counts the rays traced and the samples dropped.
+// dispatches would add them: the sum, and so the image, does not depend on how many samples a dispatch carries.
+// Counts the rays traced and the samples dropped.
 void renderPixel(uvec2 pixel, inout uvec3 rays, inout uint dropped) {
   const uint index = pixel.y * params.width + pixel.x;
   vec4 sum = accumulation[index];
-  for (uint i = 0u; i < params.sampleCount; ++i) {
-    const vec3 radiance = traceSample(pixel, params.sampleIndex + i, rays);
-    // A NaN or Inf sample is a defect somewhere: it is dropped (the pixel's count says how many it has) and
-    // counted, never spread over the image.
-    if (any(isnan(radiance)) || any(isinf(radiance))) {
-      dropped += 1u;
-    } else {
-      sum += vec4(radiance, 1.0);
-    }
-  }
+  for (uint i = 0u; i < params.sampleCount; ++i) addSample(traceSample(pixel, params.sampleIndex + i, rays), sum, dropped);
   accumulation[index] = sum;
 }
 

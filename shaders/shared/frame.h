@@ -38,8 +38,13 @@ struct RayStats {
   uint shadowRays;
   uint secondaryRays;
   uint droppedSamples;  // NaN or Inf samples left out of the image
+  // Lane utilisation (the ray-query backend; the pipeline's stages have no subgroup operations): path segments
+  // the lanes traced, and the segments their groups spent, the longest lane's count between two points where the
+  // lanes join again. Utilisation = laneSegments / (subgroup size x groupSegments).
+  uint laneSegments;
+  uint groupSegments;
 };
-RL_CHECK_SIZE(RayStats, 16);
+RL_CHECK_SIZE(RayStats, 24);
 
 // trace_rays.comp: one ray in, its closest hit out.
 struct ProbeRay {
