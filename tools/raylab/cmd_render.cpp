@@ -109,6 +109,9 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
                 {"shadow", renderer.rays.shadow},
                 {"secondary", renderer.rays.secondary}}},
       {"rays_per_s", r.raysPerSecond},
+      {"lane_utilisation", renderer.rays.groupSegments > 0
+                               ? nlohmann::ordered_json(laneUtilisation(renderer.rays, device.subgroupSize))
+                               : nullptr},
       {"exr", o.exrPath},
       {"png", o.pngPath},
   };
@@ -276,6 +279,10 @@ int runRender(int argc, char** argv) {
     if (o.stats) {
       std::printf("kernel: %s\n", describe(renderer.kernel).c_str());
       std::printf("backend: %s\n", backendName(renderer.trace.backend));
+      if (renderer.rays.groupSegments > 0) {
+        std::printf("lane utilisation: %.1f%% of the %u-lane groups' path segments\n",
+                    100.0 * laneUtilisation(renderer.rays, gpu.device.subgroupSize), gpu.device.subgroupSize);
+      }
     }
     if (o.stats || renderer.droppedSamples > 0) {
       std::printf("dropped samples (NaN or Inf): %llu\n", static_cast<unsigned long long>(renderer.droppedSamples));
