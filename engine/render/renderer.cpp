@@ -7,6 +7,7 @@
 
 #include "shared/bindings.h"
 #include "shared/features.h"
+#include "shared/wavefront.h"
 #include "util/error.h"
 #include "vk/commands.h"
 #include "vk/debug_name.h"
@@ -35,11 +36,29 @@ SpecializationConstants specializationFor(const KernelFeatures& kernel) {
   return constants;
 }
 
-std::vector<DescriptorBinding> rendererBindings() {
+// The scene, the accumulation and the counters; on the ray-query backend also the wavefront's buffers, so that
+// the render kernel and the wavefront share one layout and one set.
+std::vector<DescriptorBinding> rendererBindings(Backend backend) {
   std::vector<DescriptorBinding> bindings = sceneBindings();
   bindings.push_back({gpu::kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   bindings.push_back({gpu::kBindingRayStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+  if (backend == Backend::kQuery) {
+    for (const DescriptorBinding& binding : wavefrontBindings()) bindings.push_back(binding);
+  }
   return bindings;
+}
+
+// The wavefront pushes WaveParams after FrameParams; the render kernel reads the first part.
+std::uint32_t pushConstantBytes(Backend backend) {
+  return backend == Backend::kQuery ? sizeof(gpu::FrameParams) + sizeof(gpu::WaveParams) : sizeof(gpu::FrameParams);
+}
+
+// Makes the wavefront's buffers the first time a kernel runs as a wavefront.
+void prepareWavefront(const Device& device, Renderer& renderer) {
+  renderer.wavefrontActive = usesWavefront(renderer.schedule, renderer.kernel, renderer.trace.backend);
+  if (renderer.wavefrontActive && !hasWavefrontBuffers(renderer.wavefront)) {
+    createWavefrontBuffers(device, renderer.wavefront, renderer.trace.descriptors.set);
+  }
 }
 
 }  // namespace
@@ -108,9 +127,15 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   applyCamera(params, scene.camera, settings.width, settings.height);
 
   renderer.kernel = settings.kernel.value_or(featuresOf(scene));
+  renderer.schedule = settings.schedule;
+  usesWavefront(renderer.schedule, renderer.kernel, settings.backend);  // refuses an impossible --schedule early
   SpecializationConstants constants = specializationFor(renderer.kernel);
-  renderer.trace = createTraceKernel(device, settings.backend, kRenderPrograms, rendererBindings(),
-                                     sizeof(gpu::FrameParams), &constants, gpuScene);
+  renderer.trace = createTraceKernel(device, settings.backend, kRenderPrograms, rendererBindings(settings.backend),
+                                     pushConstantBytes(settings.backend), &constants, gpuScene);
+  if (settings.backend == Backend::kQuery) {
+    renderer.wavefront.pipeline =
+        createComputePipeline(device, renderer.trace.pipelineLayout, "wavefront.comp", &constants);
+  }
 
   renderer.stats = createBuffer(device, sizeof(gpu::RayStats),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
@@ -119,18 +144,39 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
 
   writeSceneDescriptors(device, renderer.trace.descriptors.set, gpuScene);
   writeStorageBuffer(device, renderer.trace.descriptors.set, gpu::kBindingRayStats, renderer.stats.handle);
+  prepareWavefront(device, renderer);
   resizeRenderer(device, renderer, settings.width, settings.height);
   return renderer;
 }
 
-VkPipeline createRenderPipeline(const Device& device, const Renderer& renderer, const KernelFeatures& kernel) {
+RenderPipelines createRenderPipelines(const Device& device, const Renderer& renderer, const KernelFeatures& kernel) {
   SpecializationConstants constants = specializationFor(kernel);
-  return createTracePipeline(device, renderer.trace, &constants);
+  RenderPipelines pipelines;
+  pipelines.trace = createTracePipeline(device, renderer.trace, &constants);
+  if (renderer.trace.backend == Backend::kQuery) {
+    try {
+      pipelines.wavefront = createComputePipeline(device, renderer.trace.pipelineLayout, "wavefront.comp", &constants);
+    } catch (...) {
+      destroyRenderPipelines(device, pipelines);
+      throw;
+    }
+  }
+  return pipelines;
 }
 
-void swapRenderPipeline(const Device& device, Renderer& renderer, VkPipeline pipeline, const KernelFeatures& kernel) {
-  replaceTracePipeline(device, renderer.trace, pipeline);
+void destroyRenderPipelines(const Device& device, RenderPipelines& pipelines) {
+  if (pipelines.trace != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, pipelines.trace, nullptr);
+  if (pipelines.wavefront != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, pipelines.wavefront, nullptr);
+  pipelines = {};
+}
+
+void swapRenderPipelines(const Device& device, Renderer& renderer, RenderPipelines pipelines,
+                         const KernelFeatures& kernel) {
+  replaceTracePipeline(device, renderer.trace, pipelines.trace);
+  if (renderer.wavefront.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, renderer.wavefront.pipeline, nullptr);
+  renderer.wavefront.pipeline = pipelines.wavefront;
   renderer.kernel = kernel;
+  prepareWavefront(device, renderer);
 }
 
 void setCamera(Renderer& renderer, const Camera& camera) {
@@ -157,6 +203,7 @@ void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t widt
 void destroyRenderer(const Device& device, Renderer& renderer) {
   destroyBuffer(device, renderer.stats);
   destroyBuffer(device, renderer.accumulation);
+  destroyWavefront(device, renderer.wavefront);
   destroyTraceKernel(device, renderer.trace);
   renderer = {};
 }
@@ -215,7 +262,18 @@ void recordSamplePass(VkCommandBuffer cmd, const Renderer& renderer, std::uint32
   params.sampleIndex = sampleIndex;
   params.sampleCount = sampleCount;
   params.tileOrigin = tileOrigin;
-  recordTrace(cmd, renderer.trace, &params, tileSize.x, tileSize.y);
+  if (renderer.wavefrontActive) {
+    const glm::uvec2 size(params.width, params.height);
+    recordWavefrontPass(cmd, renderer.wavefront, renderer.trace.pipelineLayout, renderer.trace.descriptors.set, params,
+                        glm::min(tileSize, size - glm::min(tileOrigin, size)));
+    return;
+  }
+  // The push constants the layout declares: FrameParams, and on the ray-query backend room for WaveParams.
+  struct {
+    gpu::FrameParams frame;
+    gpu::WaveParams wave;
+  } push{params, {}};
+  recordTrace(cmd, renderer.trace, &push, tileSize.x, tileSize.y);
   computeBarrier(cmd);  // the next pass reads and adds to the same sums
 }
 

@@ -10,6 +10,7 @@
 #include "render/backend.h"
 #include "render/kernel_features.h"
 #include "render/trace_kernel.h"
+#include "render/wavefront.h"
 #include "scene/gpu_scene.h"
 #include "scene/scene.h"
 #include "shared/frame.h"
@@ -30,6 +31,7 @@ struct RenderSettings {
   float throughputCutoff = 1.0e-3f;   // paths whose weight falls below this stop
   std::optional<KernelFeatures> kernel;  // the kernel variant; default: exactly what the scene uses
   Backend backend = Backend::kQuery;     // chooseBackend picks it for the device
+  Schedule schedule = Schedule::kAutomatic;  // the wavefront for path kernels on ray queries (usesWavefront)
 };
 
 struct RayCounts {
@@ -48,6 +50,9 @@ double laneUtilisation(const RayCounts& rays, std::uint32_t subgroupSize);
 
 struct Renderer {
   TraceKernel trace;    // the render programs on the chosen backend, specialised for `kernel`
+  Wavefront wavefront;  // the ray-query backend's wavefront.comp, of trace's layout; buffers while it is in use
+  Schedule schedule = Schedule::kAutomatic;
+  bool wavefrontActive = false;  // usesWavefront(schedule, kernel, backend)
   Buffer accumulation;  // vec4 per pixel: radiance sum and sample count
   Buffer stats;         // RayStats per submission, host-visible
   KernelFeatures kernel;  // what the pipeline was specialised for
@@ -88,12 +93,19 @@ void setCamera(Renderer& renderer, const Camera& camera);
 // New image size: reallocates the accumulation buffer (and resets it). Throws Error(kExitUsage) beyond
 // kMaxImageSide or maxImagePixels, leaving the renderer as it was.
 void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t width, std::uint32_t height);
-// A pipeline of the renderer's layout and backend specialised for `kernel`; thread-safe, for building one in
-// the background. On lavapipe the driver compiles it at its first dispatch, not here.
-VkPipeline createRenderPipeline(const Device& device, const Renderer& renderer, const KernelFeatures& kernel);
-// Replaces the pipeline (the old one is destroyed: the device must not be using it), and the pipeline backend's
-// shader binding table with it.
-void swapRenderPipeline(const Device& device, Renderer& renderer, VkPipeline pipeline, const KernelFeatures& kernel);
+// The pipelines of a kernel variant: the render programs, and on the ray-query backend the wavefront.
+struct RenderPipelines {
+  VkPipeline trace = VK_NULL_HANDLE;
+  VkPipeline wavefront = VK_NULL_HANDLE;
+};
+// The pipelines of the renderer's layout and backend specialised for `kernel`; thread-safe, for building them in
+// the background. On lavapipe the driver compiles them at their first dispatch, not here.
+RenderPipelines createRenderPipelines(const Device& device, const Renderer& renderer, const KernelFeatures& kernel);
+void destroyRenderPipelines(const Device& device, RenderPipelines& pipelines);
+// Replaces the pipelines (the old ones are destroyed: the device must not be using them), the pipeline backend's
+// shader binding table with them, and makes the wavefront's buffers if the new kernel runs as a wavefront.
+void swapRenderPipelines(const Device& device, Renderer& renderer, RenderPipelines pipelines,
+                         const KernelFeatures& kernel);
 
 // Clears the accumulated samples (after a camera or parameter change).
 void resetAccumulation(const Device& device, Renderer& renderer);

@@ -29,8 +29,9 @@ Scene warmUpScene() {
   return scene;
 }
 
-// One 8x8 dispatch of `kernel` on a device of our own, on the viewer's backend.
-void warmUp(const Instance& instance, const DeviceReport& report, const KernelFeatures& kernel, Backend backend) {
+// One 8x8 dispatch of `kernel` on a device of our own, on the viewer's backend and schedule.
+void warmUp(const Instance& instance, const DeviceReport& report, const KernelFeatures& kernel, Backend backend,
+            Schedule schedule) {
   Device device = createDevice(instance, report);
   GpuScene gpuScene;
   Renderer renderer;
@@ -42,6 +43,7 @@ void warmUp(const Instance& instance, const DeviceReport& report, const KernelFe
     settings.height = 8;
     settings.kernel = kernel;
     settings.backend = backend;
+    settings.schedule = schedule;
     renderer = createRenderer(device, gpuScene, scene, settings);
     renderSamples(device, renderer, 1);
   } catch (...) {
@@ -66,14 +68,14 @@ std::unique_ptr<KernelBuild> startKernelBuild(const Instance& instance, const De
   build->thread = std::thread([&device, instance, rendererHandles = renderer, kernel, warm, b = build.get()] {
     const Stopwatch clock;
     try {
-      b->pipeline = createRenderPipeline(device, rendererHandles, kernel);
+      b->pipelines = createRenderPipelines(device, rendererHandles, kernel);
     } catch (const std::exception& error) {
       b->error = error.what();
     }
     // The warm-up only saves time: if it fails, the first dispatch on the viewer's queue compiles instead.
     if (warm && b->error.empty()) {
       try {
-        warmUp(instance, device.report, kernel, rendererHandles.trace.backend);
+        warmUp(instance, device.report, kernel, rendererHandles.trace.backend, rendererHandles.schedule);
         b->warmedUp = true;
       } catch (const std::exception&) {
         b->warmedUp = false;
@@ -85,22 +87,20 @@ std::unique_ptr<KernelBuild> startKernelBuild(const Instance& instance, const De
   return build;
 }
 
-VkPipeline finishKernelBuild(const Device& device, KernelBuild& build) {
+RenderPipelines finishKernelBuild(const Device& device, KernelBuild& build) {
   if (build.thread.joinable()) build.thread.join();
   if (!build.error.empty()) {
-    if (build.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, build.pipeline, nullptr);
-    build.pipeline = VK_NULL_HANDLE;
+    destroyRenderPipelines(device, build.pipelines);
     throw Error("building the kernel for " + describe(build.kernel) + " failed: " + build.error);
   }
-  const VkPipeline pipeline = build.pipeline;
-  build.pipeline = VK_NULL_HANDLE;
-  return pipeline;
+  const RenderPipelines pipelines = build.pipelines;
+  build.pipelines = {};
+  return pipelines;
 }
 
 void abandonKernelBuild(const Device& device, KernelBuild& build) {
   if (build.thread.joinable()) build.thread.join();
-  if (build.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, build.pipeline, nullptr);
-  build.pipeline = VK_NULL_HANDLE;
+  destroyRenderPipelines(device, build.pipelines);
 }
 
 }  // namespace raylab

@@ -25,7 +25,7 @@ struct KernelBuild {
   KernelFeatures kernel;
   std::thread thread;
   std::atomic<bool> finished{false};
-  VkPipeline pipeline = VK_NULL_HANDLE;  // on the viewer's device, of the renderer's layout
+  RenderPipelines pipelines;             // on the viewer's device, of the renderer's layout
   bool warmedUp = false;                 // the private-device warm-up ran
   double seconds = 0.0;
   std::string error;                     // set instead of pipeline when the build failed
@@ -35,8 +35,8 @@ struct KernelBuild {
 std::unique_ptr<KernelBuild> startKernelBuild(const Instance& instance, const Device& device, const Renderer& renderer,
                                               const KernelFeatures& kernel);
 
-// Waits for the thread (immediately when `finished`), hands over the pipeline; throws Error when the build failed.
-VkPipeline finishKernelBuild(const Device& device, KernelBuild& build);
+// Waits for the thread (immediately when `finished`), hands over the pipelines; throws Error when the build failed.
+RenderPipelines finishKernelBuild(const Device& device, KernelBuild& build);
 
 // Waits for the thread and destroys whatever it built (shutdown, or a newer build replacing this one).
 void abandonKernelBuild(const Device& device, KernelBuild& build);

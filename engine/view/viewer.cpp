@@ -303,9 +303,9 @@ void saveScreenshot(Viewer& v, const std::string& exrPath, const std::string& pn
 }
 
 void installKernel(Viewer& v) {
-  VkPipeline pipeline = VK_NULL_HANDLE;
+  RenderPipelines pipelines;
   try {
-    pipeline = finishKernelBuild(v.device, *v.build);
+    pipelines = finishKernelBuild(v.device, *v.build);
   } catch (const Error& error) {
     v.build.reset();
     if (v.automation) throw;
@@ -316,7 +316,7 @@ void installKernel(Viewer& v) {
   char message[160];
   std::snprintf(message, sizeof message, "kernel rebuilt in %.2f s%s: %s", v.build->seconds,
                 v.build->warmedUp ? " (compiled off-queue)" : "", describe(v.build->kernel).c_str());
-  swapRenderPipeline(v.device, v.renderer, pipeline, v.build->kernel);
+  swapRenderPipelines(v.device, v.renderer, pipelines, v.build->kernel);
   v.status.message = message;
   if (!v.options.quiet) std::printf("raylab view: %s\n", message);
   v.build.reset();

@@ -190,12 +190,13 @@ DeviceReport surveyOne(VkPhysicalDevice physical, std::uint32_t index, VkSurface
   if (!features.vulkan12.bufferDeviceAddress) report.missing.push_back("feature bufferDeviceAddress");
   if (!features.vulkan12.scalarBlockLayout) report.missing.push_back("feature scalarBlockLayout");
   if (!features.accelerationStructure.accelerationStructure) report.missing.push_back("feature accelerationStructure");
-  report.subgroupArithmetic = (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
-                              (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT);
-  const bool queries = report.rayQueries && report.subgroupArithmetic;
+  report.subgroupOperations = (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
+                              (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) &&
+                              (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_BALLOT_BIT);
+  const bool queries = report.rayQueries && report.subgroupOperations;
   if (!queries && !report.rayTracingPipelines) {
-    report.missing.push_back(report.rayQueries ? "ray-tracing pipelines, and subgroup arithmetic in compute shaders "
-                                                 "for its ray queries"
+    report.missing.push_back(report.rayQueries ? "ray-tracing pipelines, and subgroup arithmetic and ballot in "
+                                                 "compute shaders for its ray queries"
                                                : "ray queries or ray-tracing pipelines");
   }
   if (findQueueFamily(physical, surface) == VK_QUEUE_FAMILY_IGNORED) {
@@ -336,7 +337,7 @@ Device createDevice(const Instance& instance, const DeviceReport& report, VkSurf
   device.report = report;
   device.queueFamily = findQueueFamily(device.physical, surface);
 
-  device.rayQueries = report.rayQueries && report.subgroupArithmetic;
+  device.rayQueries = report.rayQueries && report.subgroupOperations;
   device.rayTracingPipelines = report.rayTracingPipelines;
 
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR rtProperties{

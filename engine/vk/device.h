@@ -37,10 +37,11 @@ struct DeviceReport {
   bool rayQueriesHidden = false;     // it has them, but RAYLAB_HIDE_RAY_QUERIES=1 makes raylab ignore them
   bool rayTracingPipelines = false;  // VK_KHR_ray_tracing_pipeline with its rayTracingPipeline feature
   std::uint32_t maxRayRecursionDepth = 0;
-  bool subgroupArithmetic = false;   // in compute shaders: the ray-query kernel sums its ray counts with it
+  bool subgroupOperations = false;   // arithmetic and ballot in compute shaders: the ray-query kernels sum their
+                                     // ray counts and compact the wavefront's queues with them
   std::vector<std::string> missing;  // what stops raylab from using it; empty when capable
   bool capable() const { return missing.empty(); }
-  bool queryBackend() const { return capable() && rayQueries && subgroupArithmetic; }
+  bool queryBackend() const { return capable() && rayQueries && subgroupOperations; }
   bool pipelineBackend() const { return capable() && rayTracingPipelines; }
 };
 

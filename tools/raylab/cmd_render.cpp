@@ -47,6 +47,7 @@ struct RenderOptions {
   std::string integrator = "auto";
   std::string sampling = "mis";
   std::string backend = "auto";
+  std::string schedule = "auto";
   std::string environment;
   std::optional<float> environmentStrength;
   std::optional<float> environmentRotation;
@@ -92,6 +93,7 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
       {"all_features", o.allFeatures},
       {"kernel", describe(renderer.kernel)},
       {"backend", backendName(renderer.trace.backend)},
+      {"schedule", renderer.wavefrontActive ? "wavefront" : "megakernel"},
       {"device", device.report.name},
       {"driver", device.report.driver},
       {"triangles", gpuScene.triangleCount},
@@ -201,6 +203,10 @@ int runRender(int argc, char** argv) {
   args.choice("--fresnel", &o.fresnel, {"exact", "schlick"},
               "Fresnel term of glass: exact (default) or Schlick's approximation (faster, less accurate)");
   addBackendOption(args, &o.backend);
+  args.choice("--schedule", &o.schedule, {"auto", "megakernel", "wavefront"},
+              "how paths are traced: megakernel (a lane per pixel until its path ends) or wavefront (one segment of "
+              "every live path per dispatch; the path integrator on ray queries only); auto (default): the "
+              "wavefront where it runs; the image is the same");
   args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(argc, argv)) return kExitOk;
   o.settings.jitter = !o.noAntialiasing;
@@ -233,6 +239,9 @@ int runRender(int argc, char** argv) {
 
   GpuSession gpu(o.device);
   o.settings.backend = chooseBackend(gpu.device, parseBackendChoice(o.backend));
+  o.settings.schedule = o.schedule == "megakernel" ? Schedule::kMegakernel
+                        : o.schedule == "wavefront" ? Schedule::kWavefront
+                                                    : Schedule::kAutomatic;
   checkImageSize(gpu.device, o.settings.width, o.settings.height);
   GpuScene gpuScene = uploadScene(gpu.device, scene);
   Renderer renderer;
@@ -278,7 +287,8 @@ int runRender(int argc, char** argv) {
     std::printf("acceleration structures: %s\n", formatSeconds(gpuScene.accelerationBuildSeconds).c_str());
     if (o.stats) {
       std::printf("kernel: %s\n", describe(renderer.kernel).c_str());
-      std::printf("backend: %s\n", backendName(renderer.trace.backend));
+      std::printf("backend: %s; schedule: %s\n", backendName(renderer.trace.backend),
+                  renderer.wavefrontActive ? "wavefront" : "megakernel");
       if (renderer.rays.groupSegments > 0) {
         std::printf("lane utilisation: %.1f%% of the %u-lane groups' path segments\n",
                     100.0 * laneUtilisation(renderer.rays, gpu.device.subgroupSize), gpu.device.subgroupSize);
