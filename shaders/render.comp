@@ -17,45 +17,14 @@ layout(push_constant, scalar) uniform Push { FrameParams params; };
 layout(set = 0, binding = kBindingAccumulation, scalar) buffer Accumulation { vec4 accumulation[]; };
 layout(set = 0, binding = kBindingRayStats, scalar) buffer Stats { RayStats stats; };
 
-#include "kernel/trace_query.glsl"
-#include "kernel/hit_program.glsl"
-#include "kernel/miss.glsl"
+#include "kernel/query_segment.glsl"
 #include "kernel/raygen.glsl"
-
-// Lane utilisation: what this lane traced, and what its group spent, since the lanes last joined.
-uint laneSegments = 0u;
-uint groupSegments = 0u;
-void lanesJoin(uint segments) {
-  laneSegments += segments;
-  groupSegments += subgroupMax(segments);
-}
-
-void traceSegment(inout Payload p) {
-  Hit hit;
-  if (traceClosest(p.origin, p.direction, 0.0, kRayTMax, hit)) {
-    closestHitProgram(hit, p);
-  } else {
-    miss(p);
-  }
-}
+#include "kernel/lane_utilisation.glsl"
 
 void main() {
   const uvec2 pixel = params.tileOrigin + gl_GlobalInvocationID.xy;
   uvec3 rays = uvec3(0u);
   uint dropped = 0u;
   if (pixel.x < params.width && pixel.y < params.height) renderPixel(pixel, rays, dropped);
-
-  // One atomic per subgroup rather than per invocation.
-  const uvec3 total = subgroupAdd(rays);
-  const uint totalDropped = subgroupAdd(dropped);
-  const uint totalLaneSegments = subgroupAdd(laneSegments);
-  const uint totalGroupSegments = subgroupMax(groupSegments);
-  if (subgroupElect()) {
-    if (totalDropped > 0u) atomicAdd(stats.droppedSamples, totalDropped);
-    atomicAdd(stats.laneSegments, totalLaneSegments);
-    atomicAdd(stats.groupSegments, totalGroupSegments);
-    atomicAdd(stats.primaryRays, total.x);
-    atomicAdd(stats.shadowRays, total.y);
-    atomicAdd(stats.secondaryRays, total.z);
-  }
+  addRayStats(rays, dropped, laneSegments, groupSegments);
 }

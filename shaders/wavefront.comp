@@ -30,19 +30,8 @@ layout(set = 0, binding = kBindingPathResults, scalar) buffer PathResults { vec4
 layout(set = 0, binding = kBindingPathQueues, scalar) buffer PathQueues { uint queues[]; };
 layout(set = 0, binding = kBindingWaveControl, scalar) buffer Control { WaveControl control; };
 
-#include "kernel/trace_query.glsl"
-#include "kernel/hit_program.glsl"
-#include "kernel/miss.glsl"
+#include "kernel/query_segment.glsl"
 #include "kernel/raygen.glsl"
-
-void traceSegment(inout Payload p) {
-  Hit hit;
-  if (traceClosest(p.origin, p.direction, 0.0, kRayTMax, hit)) {
-    closestHitProgram(hit, p);
-  } else {
-    miss(p);
-  }
-}
 
 void lanesJoin(uint segments) {}
 
@@ -154,19 +143,6 @@ void main() {
   } else {
     segment(i, rays, laneSegments);
   }
-  // One atomic per subgroup rather than per invocation. Every lane of a segment dispatch is one segment slot
-  // of its group.
-  const uvec3 total = subgroupAdd(rays);
-  const uint totalDropped = subgroupAdd(dropped);
-  const uint totalLaneSegments = subgroupAdd(laneSegments);
-  if (subgroupElect()) {
-    if (totalDropped > 0u) atomicAdd(stats.droppedSamples, totalDropped);
-    if (totalLaneSegments > 0u) {
-      atomicAdd(stats.laneSegments, totalLaneSegments);
-      atomicAdd(stats.groupSegments, 1u);
-    }
-    atomicAdd(stats.primaryRays, total.x);
-    atomicAdd(stats.shadowRays, total.y);
-    atomicAdd(stats.secondaryRays, total.z);
-  }
+  // A segment dispatch spends one segment of every group with a live lane.
+  addRayStats(rays, dropped, laneSegments, laneSegments);
 }

@@ -36,16 +36,33 @@ SpecializationConstants specializationFor(const KernelFeatures& kernel) {
   return constants;
 }
 
+// The render kernel clocking every pixel (render_heatmap.comp): ray queries, the megakernel.
+const TracePrograms kHeatmapPrograms{"render_heatmap.comp", 8, 8, {}};
+
 // The scene, the accumulation and the counters; on the ray-query backend also the wavefront's buffers, so that
-// the render kernel and the wavefront share one layout and one set.
-std::vector<DescriptorBinding> rendererBindings(Backend backend) {
+// the render kernel and the wavefront share one layout and one set; with the heat map its clock ticks.
+std::vector<DescriptorBinding> rendererBindings(Backend backend, bool heatmap) {
   std::vector<DescriptorBinding> bindings = sceneBindings();
   bindings.push_back({gpu::kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   bindings.push_back({gpu::kBindingRayStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   if (backend == Backend::kQuery) {
     for (const DescriptorBinding& binding : wavefrontBindings()) bindings.push_back(binding);
   }
+  if (heatmap) bindings.push_back({gpu::kBindingHeatmap, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   return bindings;
+}
+
+// Throws Error naming what is missing when the device or the settings cannot clock pixels.
+void checkHeatmap(const Device& device, const RenderSettings& settings) {
+  if (!settings.heatmap) return;
+  if (!device.shaderClock) {
+    throw Error("--heatmap needs VK_KHR_shader_clock's device clock, which " + device.report.name + " lacks",
+                kExitNoDevice);
+  }
+  if (settings.backend != Backend::kQuery) throw Error("--heatmap runs on the ray-query backend only", kExitUsage);
+  if (settings.schedule == Schedule::kWavefront) {
+    throw Error("--heatmap clocks the megakernel: it cannot run with --schedule wavefront", kExitUsage);
+  }
 }
 
 // The wavefront pushes WaveParams after FrameParams; the render kernel reads the first part.
@@ -127,10 +144,13 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   applyCamera(params, scene.camera, settings.width, settings.height);
 
   renderer.kernel = settings.kernel.value_or(featuresOf(scene));
-  renderer.schedule = settings.schedule;
+  checkHeatmap(device, settings);
+  // The heat map clocks each pixel's lane, so it keeps every pixel's samples in the megakernel.
+  renderer.schedule = settings.heatmap ? Schedule::kMegakernel : settings.schedule;
   usesWavefront(renderer.schedule, renderer.kernel, settings.backend);  // refuses an impossible --schedule early
   SpecializationConstants constants = specializationFor(renderer.kernel);
-  renderer.trace = createTraceKernel(device, settings.backend, kRenderPrograms, rendererBindings(settings.backend),
+  renderer.trace = createTraceKernel(device, settings.backend, settings.heatmap ? kHeatmapPrograms : kRenderPrograms,
+                                     rendererBindings(settings.backend, settings.heatmap),
                                      pushConstantBytes(settings.backend), &constants, gpuScene);
   if (settings.backend == Backend::kQuery) {
     renderer.wavefront.pipeline =
@@ -145,6 +165,7 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   writeSceneDescriptors(device, renderer.trace.descriptors.set, gpuScene);
   writeStorageBuffer(device, renderer.trace.descriptors.set, gpu::kBindingRayStats, renderer.stats.handle);
   prepareWavefront(device, renderer);
+  renderer.clocksPixels = settings.heatmap;  // resizeRenderer sizes the heat map with the accumulation
   resizeRenderer(device, renderer, settings.width, settings.height);
   return renderer;
 }
@@ -191,6 +212,14 @@ void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t widt
                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                        MemoryUse::kDevice, "accumulation");
   writeStorageBuffer(device, renderer.trace.descriptors.set, gpu::kBindingAccumulation, renderer.accumulation.handle);
+  if (renderer.clocksPixels) {
+    destroyBuffer(device, renderer.heatmap);
+    renderer.heatmap = createBuffer(device, VkDeviceSize(width) * height * sizeof(float),
+                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                    MemoryUse::kDevice, "heat map");
+    writeStorageBuffer(device, renderer.trace.descriptors.set, gpu::kBindingHeatmap, renderer.heatmap.handle);
+  }
   // The camera's aspect ratio follows the image.
   const float oldAspect = float(renderer.params.width) / float(renderer.params.height);
   const float newAspect = float(width) / float(height);
@@ -201,6 +230,7 @@ void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t widt
 }
 
 void destroyRenderer(const Device& device, Renderer& renderer) {
+  destroyBuffer(device, renderer.heatmap);
   destroyBuffer(device, renderer.stats);
   destroyBuffer(device, renderer.accumulation);
   destroyWavefront(device, renderer.wavefront);
@@ -211,6 +241,7 @@ void destroyRenderer(const Device& device, Renderer& renderer) {
 void resetAccumulation(const Device& device, Renderer& renderer) {
   submitAndWait(device, [&](VkCommandBuffer cmd) {
     vkCmdFillBuffer(cmd, renderer.accumulation.handle, 0, VK_WHOLE_SIZE, 0);
+    if (renderer.heatmap.handle != VK_NULL_HANDLE) vkCmdFillBuffer(cmd, renderer.heatmap.handle, 0, VK_WHOLE_SIZE, 0);
     computeBarrier(cmd);
   });
   renderer.samplesDone = 0;
@@ -312,6 +343,18 @@ Image readImage(const Device& device, const Renderer& renderer) {
     image.rgba[i + 3] = 1.0f;
   }
   return image;
+}
+
+CostMap readCostMap(const Device& device, const Renderer& renderer) {
+  if (renderer.heatmap.handle == VK_NULL_HANDLE) throw Error("readCostMap: the renderer was made without the heat map");
+  CostMap map;
+  map.width = renderer.params.width;
+  map.height = renderer.params.height;
+  map.ticks.resize(std::size_t(map.width) * map.height);
+  downloadBuffer(device, renderer.heatmap, map.ticks.data(), map.ticks.size() * sizeof(float));
+  const float perSample = 1.0f / float(std::max<std::uint32_t>(1, renderer.samplesDone));
+  for (float& ticks : map.ticks) ticks *= perSample;
+  return map;
 }
 
 }  // namespace raylab

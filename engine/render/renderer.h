@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "image/heatmap.h"
 #include "image/image.h"
 #include "render/backend.h"
 #include "render/kernel_features.h"
@@ -32,6 +33,7 @@ struct RenderSettings {
   std::optional<KernelFeatures> kernel;  // the kernel variant; default: exactly what the scene uses
   Backend backend = Backend::kQuery;     // chooseBackend picks it for the device
   Schedule schedule = Schedule::kAutomatic;  // the wavefront for path kernels on ray queries (usesWavefront)
+  bool heatmap = false;  // clock every pixel (render_heatmap.comp: the megakernel on ray queries, needs shaderClock)
 };
 
 struct RayCounts {
@@ -53,6 +55,8 @@ struct Renderer {
   Wavefront wavefront;  // the ray-query backend's wavefront.comp, of trace's layout; buffers while it is in use
   Schedule schedule = Schedule::kAutomatic;
   bool wavefrontActive = false;  // usesWavefront(schedule, kernel, backend)
+  bool clocksPixels = false;     // settings.heatmap
+  Buffer heatmap;                // float clock ticks per pixel, when clocksPixels
   Buffer accumulation;  // vec4 per pixel: radiance sum and sample count
   Buffer stats;         // RayStats per submission, host-visible
   KernelFeatures kernel;  // what the pipeline was specialised for
@@ -112,6 +116,9 @@ void resetAccumulation(const Device& device, Renderer& renderer);
 
 // The mean radiance per pixel so far, alpha 1.
 Image readImage(const Device& device, const Renderer& renderer);
+
+// With settings.heatmap: clock ticks per sample of every pixel so far.
+CostMap readCostMap(const Device& device, const Renderer& renderer);
 
 // Camera of FrameParams for an image of width x height; throws Error on a degenerate camera.
 void applyCamera(gpu::FrameParams& params, const Camera& camera, std::uint32_t width, std::uint32_t height);

@@ -82,8 +82,9 @@ struct FeatureChain {
   VkPhysicalDeviceRayQueryFeaturesKHR rayQuery{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
   VkPhysicalDeviceRayTracingPipelineFeaturesKHR rayTracingPipeline{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+  VkPhysicalDeviceShaderClockFeaturesKHR shaderClock{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_CLOCK_FEATURES_KHR};
 
-  FeatureChain(bool withRayQuery, bool withRayTracingPipeline) {
+  FeatureChain(bool withRayQuery, bool withRayTracingPipeline, bool withShaderClock = false) {
     core.pNext = &vulkan12;
     vulkan12.pNext = &accelerationStructure;
     void** tail = &accelerationStructure.pNext;
@@ -91,7 +92,11 @@ struct FeatureChain {
       *tail = &rayQuery;
       tail = &rayQuery.pNext;
     }
-    if (withRayTracingPipeline) *tail = &rayTracingPipeline;
+    if (withRayTracingPipeline) {
+      *tail = &rayTracingPipeline;
+      tail = &rayTracingPipeline.pNext;
+    }
+    if (withShaderClock) *tail = &shaderClock;
   }
   FeatureChain(const FeatureChain&) = delete;
   FeatureChain& operator=(const FeatureChain&) = delete;
@@ -359,14 +364,31 @@ Device createDevice(const Instance& instance, const DeviceReport& report, VkSurf
                        rtProperties.shaderGroupBaseAlignment, rtProperties.maxShaderGroupStride};
   vkGetPhysicalDeviceMemoryProperties(device.physical, &device.memory);
 
+  // Which optional extension the device has: the shader clock, for --heatmap only.
+  {
+    std::uint32_t count = 0;
+    vkEnumerateDeviceExtensionProperties(device.physical, nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> available(count);
+    vkEnumerateDeviceExtensionProperties(device.physical, nullptr, &count, available.data());
+    const bool hasClock = std::any_of(available.begin(), available.end(), [](const VkExtensionProperties& e) {
+      return std::strcmp(e.extensionName, VK_KHR_SHADER_CLOCK_EXTENSION_NAME) == 0;
+    });
+    if (hasClock) {
+      FeatureChain probe(false, false, true);
+      vkGetPhysicalDeviceFeatures2(device.physical, &probe.core);
+      device.shaderClock = probe.shaderClock.shaderDeviceClock == VK_TRUE;
+    }
+  }
+
   // Enable exactly what raylab uses, nothing the device merely offers: ray queries unless hidden, and
-  // ray-tracing pipelines where there are any, so that either backend can run.
-  FeatureChain features(device.rayQueries, device.rayTracingPipelines);
+  // ray-tracing pipelines where there are any, so that either backend can run; the device clock where offered.
+  FeatureChain features(device.rayQueries, device.rayTracingPipelines, device.shaderClock);
   features.vulkan12.bufferDeviceAddress = VK_TRUE;
   features.vulkan12.scalarBlockLayout = VK_TRUE;
   features.accelerationStructure.accelerationStructure = VK_TRUE;
   features.rayQuery.rayQuery = device.rayQueries ? VK_TRUE : VK_FALSE;
   features.rayTracingPipeline.rayTracingPipeline = device.rayTracingPipelines ? VK_TRUE : VK_FALSE;
+  features.shaderClock.shaderDeviceClock = device.shaderClock ? VK_TRUE : VK_FALSE;
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -377,6 +399,7 @@ Device createDevice(const Instance& instance, const DeviceReport& report, VkSurf
   std::vector<const char*> extensions = requiredDeviceExtensions(surface != VK_NULL_HANDLE);
   if (device.rayQueries) extensions.push_back(VK_KHR_RAY_QUERY_EXTENSION_NAME);
   if (device.rayTracingPipelines) extensions.push_back(VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME);
+  if (device.shaderClock) extensions.push_back(VK_KHR_SHADER_CLOCK_EXTENSION_NAME);
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   info.pNext = &features.core;
   info.queueCreateInfoCount = 1;

@@ -90,6 +90,7 @@ struct Device {
   // Which ray-tracing interfaces were enabled: each one the report offers (hidden ray queries excepted).
   bool rayQueries = false;
   bool rayTracingPipelines = false;
+  bool shaderClock = false;  // VK_KHR_shader_clock's device clock, where offered (raylab render --heatmap)
   RayTracingLimits rayTracing;
   ExtensionFunctions ext;
 };

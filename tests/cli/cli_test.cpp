@@ -50,6 +50,9 @@ TEST(CliTest, UsageErrorsExitTwoAndNameTheOption) {
       {{"render", "--integrator", "bidir"}, "--integrator"},
       {{"render", "--sampling", "stratified"}, "--sampling"},
       {{"render", "--backend", "optix"}, "--backend"},
+      {{"render", "--heatmap", "cost.exr"}, "--heatmap"},
+      {{"render", "--schedule", "streams"}, "--schedule"},
+      {{"render", "--integrator", "slides", "--schedule", "wavefront"}, "--schedule wavefront"},
       {{"view", "--backend", "cuda"}, "--backend"},
       {{"sweep", "--model", "lambert", "--param", "rho_d", "--backend", "x"}, "--backend"},
       {{"render", "--env-strength", "-1"}, "--env-strength"},
@@ -159,6 +162,30 @@ TEST(CliTest, RenderWritesExrAndPngAndReportsTimings) {
   for (std::size_t i = 0; i < image.rgba.size(); i += 4) brightest = std::max(brightest, image.rgba[i]);
   EXPECT_GT(brightest, 0.05f) << "the default scene rendered black";
   EXPECT_GT(std::filesystem::file_size(png), 100u);
+}
+
+// The cost map: a false-colour PNG and the raw clock ticks per sample beside it, positive where the scene is,
+// and the image itself unchanged by the clock.
+TEST(CliTest, HeatmapWritesTheCostOfEveryPixel) {
+  const std::string dir = scratchDir();
+  std::filesystem::remove(dir + "/cost.png");
+  std::filesystem::remove(dir + "/cost.exr");
+  const std::vector<std::string> common = {"render", "--width", "40", "--height", "24", "--spp", "2", "--no-png"};
+  std::vector<std::string> clocked = common;
+  clocked.insert(clocked.end(), {"--out", dir + "/clocked.exr", "--heatmap", dir + "/cost.png"});
+  const CommandResult result = runRaylab(clocked);
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_GT(std::filesystem::file_size(dir + "/cost.png"), 100u);
+  const Image ticks = readExr(dir + "/cost.exr");
+  ASSERT_EQ(ticks.width, 40u);
+  ASSERT_EQ(ticks.height, 24u);
+  std::size_t positive = 0;
+  for (std::size_t i = 0; i < ticks.rgba.size(); i += 4) positive += ticks.rgba[i] > 0.0f;
+  EXPECT_EQ(positive, std::size_t(40 * 24)) << "every pixel took some time";
+  std::vector<std::string> plain = common;
+  plain.insert(plain.end(), {"--out", dir + "/plain.exr"});
+  ASSERT_EQ(runRaylab(plain).exitCode, 0);
+  EXPECT_EQ(readExr(dir + "/clocked.exr").rgba, readExr(dir + "/plain.exr").rgba);
 }
 
 TEST(CliTest, ErrorsCarryOnePrefixAndBareBrdfSaysWhatIsMissing) {

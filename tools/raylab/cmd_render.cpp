@@ -35,6 +35,7 @@ struct RenderOptions {
   std::string exrPath;
   std::string pngPath;
   std::string reportPath;
+  std::string heatmapPath;
   float exposure = 0.0f;
   std::string toneMap = "clamp";
   bool noAntialiasing = false;
@@ -182,6 +183,9 @@ int runRender(int argc, char** argv) {
   args.option("--png", &o.pngPath, "FILE.png", "write the tone-mapped image here (sRGB, 8-bit; default out/<scene>.png)");
   args.flag("--no-exr", &o.noExr, "write no OpenEXR image");
   args.flag("--no-png", &o.noPng, "write no PNG image");
+  args.option("--heatmap", &o.heatmapPath, "FILE.png",
+              "also write the cost of every pixel (device clock ticks per sample, VK_KHR_shader_clock) in false colour, "
+              "and its raw values as FILE.exr; clocks the megakernel on ray queries");
   args.option("--report", &o.reportPath, "FILE.json",
               "also write the printed figures (times, rays, kernel, device) here as JSON, for scripts");
   args.option("--exposure", &o.exposure, "exposure of the PNG in stops (default 0)", -20.0f, 20.0f);
@@ -216,12 +220,14 @@ int runRender(int argc, char** argv) {
   if (!o.exrPath.empty()) requireExtension("--out", o.exrPath, ".exr");
   if (!o.pngPath.empty()) requireExtension("--png", o.pngPath, ".png");
   if (!o.reportPath.empty()) requireExtension("--report", o.reportPath, ".json");
+  if (!o.heatmapPath.empty()) requireExtension("--heatmap", o.heatmapPath, ".png");
+  o.settings.heatmap = !o.heatmapPath.empty();
   // Each output has its own default, so giving one never suppresses the other.
   const SceneRequest request{o.scene, o.camera, o.allowOutsideUris, o.environment, o.environmentStrength,
                              o.environmentRotation};
   if (o.exrPath.empty() && !o.noExr) o.exrPath = "out/" + sceneName(request) + ".exr";
   if (o.pngPath.empty() && !o.noPng) o.pngPath = "out/" + sceneName(request) + ".png";
-  if (o.exrPath.empty() && o.pngPath.empty() && o.reportPath.empty()) {
+  if (o.exrPath.empty() && o.pngPath.empty() && o.reportPath.empty() && o.heatmapPath.empty()) {
     throw Error("raylab render: --no-exr and --no-png leave nothing to write (add --report to time a render)",
                 kExitUsage);
   }
@@ -229,6 +235,10 @@ int runRender(int argc, char** argv) {
   if (!o.exrPath.empty()) checkOutputPath(o.exrPath, "--out");
   if (!o.pngPath.empty()) checkOutputPath(o.pngPath, "--png");
   if (!o.reportPath.empty()) checkOutputPath(o.reportPath, "--report");
+  if (!o.heatmapPath.empty()) {
+    checkOutputPath(o.heatmapPath, "--heatmap");
+    checkOutputPath(std::filesystem::path(o.heatmapPath).replace_extension(".exr").string(), "--heatmap");
+  }
 
   Scene scene = loadScene(request);
   KernelFeatures kernel = o.allFeatures ? allFeatures() : featuresOf(scene);
@@ -273,6 +283,11 @@ int runRender(int argc, char** argv) {
     const Image image = readImage(gpu.device, renderer);
     checkFinite(image);
     writeImages(o, image);
+    if (!o.heatmapPath.empty()) {
+      writeCostMap(o.heatmapPath, readCostMap(gpu.device, renderer), scene.name);
+      std::printf("wrote %s\nwrote %s\n", o.heatmapPath.c_str(),
+                  std::filesystem::path(o.heatmapPath).replace_extension(".exr").c_str());
+    }
 
     const std::uint32_t steadySamples = o.spp - 1;
     const double perSample = steadySamples > 0 ? steadySeconds / steadySamples : firstSampleSeconds;

@@ -1,0 +1,35 @@
+// The per-pixel cost map of `raylab render --heatmap`: clock ticks per sample as a false-colour PNG with a colour
+// bar and its scale, and the raw values as an OpenEXR image beside it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "image/bitmap_text.h"
+
+namespace raylab {
+
+struct CostMap {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<float> ticks;  // device clock ticks per sample, per pixel, top row first
+};
+
+// Statistics the legend prints: the median cost and the scale's top (the 99th percentile). Both are ranks, not
+// means: a lavapipe thread the OS preempts mid-dispatch leaves a few pixels with huge clock readings, which would
+// dominate a mean and wash out the map.
+struct CostScale {
+  double median = 0.0;
+  double top = 0.0;
+};
+CostScale costScale(const CostMap& map);
+
+// The map in false colour (dark blue: cheap, through green and yellow to white: the scale's top and above),
+// with a colour bar below it labelled in multiples of the median cost, and the median in ticks.
+Rgb8Image costMapImage(const CostMap& map, const std::string& title);
+
+// Writes the PNG at `pngPath` and the raw ticks (in every channel) as OpenEXR beside it (same name, .exr).
+void writeCostMap(const std::string& pngPath, const CostMap& map, const std::string& title);
+
+}  // namespace raylab

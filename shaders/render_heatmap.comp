@@ -1,0 +1,44 @@
+#version 460
+// render.comp with a clock around every pixel's samples (VK_KHR_shader_clock's device clock), for `raylab render
+// --heatmap`: where a scene's time goes. A lane's time is its group's (lavapipe runs 8 lanes in lockstep), so the
+// map shows the cost of each group of 8 pixels as every one of them. A separate entry point because the clock's
+// SPIR-V capability needs the extension, which raylab's other kernels must not require.
+#extension GL_EXT_ray_query : require
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_shader_realtime_clock : require
+#extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_basic : require
+
+#include "shared/frame.h"
+#include "kernel/scene_bindings.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(push_constant, scalar) uniform Push { FrameParams params; };
+layout(set = 0, binding = kBindingAccumulation, scalar) buffer Accumulation { vec4 accumulation[]; };
+layout(set = 0, binding = kBindingRayStats, scalar) buffer Stats { RayStats stats; };
+layout(set = 0, binding = kBindingHeatmap, scalar) buffer Heatmap { float clockTicks[]; };
+
+#include "kernel/query_segment.glsl"
+#include "kernel/raygen.glsl"
+#include "kernel/lane_utilisation.glsl"
+
+// Ticks from `start` to `end` of the 64-bit clock, read as two 32-bit halves (no 64-bit integers needed).
+float ticksBetween(uvec2 start, uvec2 end) {
+  const uint low = end.x - start.x;
+  const uint high = end.y - start.y - (end.x < start.x ? 1u : 0u);
+  return float(high) * 4294967296.0 + float(low);
+}
+
+void main() {
+  const uvec2 pixel = params.tileOrigin + gl_GlobalInvocationID.xy;
+  uvec3 rays = uvec3(0u);
+  uint dropped = 0u;
+  if (pixel.x < params.width && pixel.y < params.height) {
+    const uvec2 start = clockRealtime2x32EXT();
+    renderPixel(pixel, rays, dropped);
+    clockTicks[pixel.y * params.width + pixel.x] += ticksBetween(start, clockRealtime2x32EXT());
+  }
+  addRayStats(rays, dropped, laneSegments, groupSegments);
+}
