@@ -35,7 +35,13 @@ RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uin
   std::vector<DescriptorBinding> bindings = sceneBindings();
   bindings.push_back({gpu::kBindingProbeRays, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   bindings.push_back({gpu::kBindingProbeHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-  probe.kernel = createTraceKernel(device, backend, kProbePrograms, bindings, sizeof(gpu::ProbeParams), nullptr, gpuScene);
+  probe.kernel = createTraceKernel(device, backend, kProbePrograms, bindings, sizeof(gpu::ProbeParams), gpuScene);
+  try {
+    replaceTracePipeline(device, probe.kernel, createTracePipeline(device, probe.kernel, nullptr));
+  } catch (...) {
+    destroyTraceKernel(device, probe.kernel);
+    throw;
+  }
   probe.rays = createBuffer(device, VkDeviceSize(capacity) * sizeof(gpu::ProbeRay),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kDevice,
                             "probe rays");

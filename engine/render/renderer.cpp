@@ -148,14 +148,9 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   // The heat map clocks each pixel's lane, so it keeps every pixel's samples in the megakernel.
   renderer.schedule = settings.heatmap ? Schedule::kMegakernel : settings.schedule;
   usesWavefront(renderer.schedule, renderer.kernel, settings.backend);  // refuses an impossible --schedule early
-  SpecializationConstants constants = specializationFor(renderer.kernel);
   renderer.trace = createTraceKernel(device, settings.backend, settings.heatmap ? kHeatmapPrograms : kRenderPrograms,
                                      rendererBindings(settings.backend, settings.heatmap),
-                                     pushConstantBytes(settings.backend), &constants, gpuScene);
-  if (settings.backend == Backend::kQuery) {
-    renderer.wavefront.pipeline =
-        createComputePipeline(device, renderer.trace.pipelineLayout, "wavefront.comp", &constants);
-  }
+                                     pushConstantBytes(settings.backend), gpuScene);
 
   renderer.stats = createBuffer(device, sizeof(gpu::RayStats),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
@@ -164,7 +159,7 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
 
   writeSceneDescriptors(device, renderer.trace.descriptors.set, gpuScene);
   writeStorageBuffer(device, renderer.trace.descriptors.set, gpu::kBindingRayStats, renderer.stats.handle);
-  prepareWavefront(device, renderer);
+  swapRenderPipelines(device, renderer, createRenderPipelines(device, renderer, renderer.kernel), renderer.kernel);
   renderer.clocksPixels = settings.heatmap;  // resizeRenderer sizes the heat map with the accumulation
   resizeRenderer(device, renderer, settings.width, settings.height);
   return renderer;
@@ -173,14 +168,12 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
 RenderPipelines createRenderPipelines(const Device& device, const Renderer& renderer, const KernelFeatures& kernel) {
   SpecializationConstants constants = specializationFor(kernel);
   RenderPipelines pipelines;
-  pipelines.trace = createTracePipeline(device, renderer.trace, &constants);
-  if (renderer.trace.backend == Backend::kQuery) {
-    try {
-      pipelines.wavefront = createComputePipeline(device, renderer.trace.pipelineLayout, "wavefront.comp", &constants);
-    } catch (...) {
-      destroyRenderPipelines(device, pipelines);
-      throw;
-    }
+  // Only the one the schedule runs: on lavapipe creating a pipeline costs about 0.3 s of SPIR-V translation
+  // and optimisation, every run (Mesa's disk cache keeps only the LLVM compilation of its first dispatch).
+  if (usesWavefront(renderer.schedule, kernel, renderer.trace.backend)) {
+    pipelines.wavefront = createComputePipeline(device, renderer.trace.pipelineLayout, "wavefront.comp", &constants);
+  } else {
+    pipelines.trace = createTracePipeline(device, renderer.trace, &constants);
   }
   return pipelines;
 }

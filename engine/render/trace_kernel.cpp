@@ -39,7 +39,7 @@ std::string kernelName(const TraceKernel& kernel) {
 
 TraceKernel createTraceKernel(const Device& device, Backend backend, const TracePrograms& programs,
                               std::span<const DescriptorBinding> bindings, std::uint32_t pushConstantBytes,
-                              SpecializationConstants* constants, const GpuScene& gpuScene) {
+                              const GpuScene& gpuScene) {
   TraceKernel kernel;
   kernel.backend = backend;
   kernel.programs = &programs;
@@ -55,7 +55,6 @@ TraceKernel createTraceKernel(const Device& device, Backend backend, const Trace
       kernel.hitRecords = hitRecordsOf(gpuScene);
       kernel.cmdTraceRays = device.ext.cmdTraceRays;
     }
-    replaceTracePipeline(device, kernel, createTracePipeline(device, kernel, constants));
   } catch (...) {
     destroyTraceKernel(device, kernel);
     throw;
@@ -81,7 +80,8 @@ VkPipeline createTracePipeline(const Device& device, const TraceKernel& kernel, 
 }
 
 void replaceTracePipeline(const Device& device, TraceKernel& kernel, VkPipeline pipeline) {
-  if (kernel.backend == Backend::kPipeline) {
+  if (pipeline == VK_NULL_HANDLE) destroyShaderBindingTable(device, kernel.sbt);
+  if (kernel.backend == Backend::kPipeline && pipeline != VK_NULL_HANDLE) {
     ShaderBindingTable sbt;
     try {
       sbt = createShaderBindingTable(device, pipeline, kernel.programs->pipeline, kernel.hitRecords,

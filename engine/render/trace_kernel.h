@@ -41,18 +41,19 @@ struct TraceKernel {
   PFN_vkCmdTraceRaysKHR cmdTraceRays = nullptr;
 };
 
-// `programs` must outlive the kernel. The scene's TLAS instances decide the hit records; its buffers are not
-// bound here (writeSceneDescriptors does that).
+// The layouts and the set, without a pipeline yet (createTracePipeline, replaceTracePipeline). `programs` must
+// outlive the kernel. The scene's TLAS instances decide the hit records; its buffers are not bound here
+// (writeSceneDescriptors does that).
 TraceKernel createTraceKernel(const Device& device, Backend backend, const TracePrograms& programs,
                               std::span<const DescriptorBinding> bindings, std::uint32_t pushConstantBytes,
-                              SpecializationConstants* constants, const GpuScene& gpuScene);
+                              const GpuScene& gpuScene);
 void destroyTraceKernel(const Device& device, TraceKernel& kernel);
 
 // A pipeline of the kernel's layout with other specialization constants; thread-safe, for building one in the
 // background (the viewer). On lavapipe the driver compiles it at its first use, not here.
 VkPipeline createTracePipeline(const Device& device, const TraceKernel& kernel, SpecializationConstants* constants);
-// Installs `pipeline` (the old one is destroyed: the device must not be using it); the pipeline backend
-// rebuilds its shader binding table, whose handles belong to the pipeline.
+// Installs `pipeline` (the old one is destroyed: the device must not be using it; VK_NULL_HANDLE leaves none);
+// the pipeline backend rebuilds its shader binding table, whose handles belong to the pipeline.
 void replaceTracePipeline(const Device& device, TraceKernel& kernel, VkPipeline pipeline);
 
 // Binds the kernel and its set, pushes `push` and traces width x height invocations (compute: rounded up to
