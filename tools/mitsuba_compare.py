@@ -217,12 +217,13 @@ class Render:
 
 
 def render_raylab(raylab: Path, scene: Path, case: Case, out: Path, width: int, height: int, spp: int,
-                  seed: int) -> Render:
+                  seed: int, schedule: str = "auto") -> Render:
     exr = out / f"{case.name}_raylab_{spp}spp_seed{seed}.exr"
     report = exr.with_suffix(".json")
     run_raylab(raylab, ["render", str(scene), "--integrator", "path", "--max-depth", str(case.max_depth),
                         "--width", str(width), "--height", str(height), "--spp", str(spp), "--seed", str(seed),
-                        "--out", str(exr), "--no-png", "--report", str(report)], f"raylab on {case.name}")
+                        "--out", str(exr), "--no-png", "--report", str(report), "--schedule", schedule],
+               f"raylab on {case.name}")
     figures = json.loads(report.read_text())
     if figures.get("dropped_samples", 0):
         raise ToolError(f"raylab dropped {figures['dropped_samples']} NaN or Inf samples on {case.name}")
@@ -270,6 +271,8 @@ def parse_args() -> argparse.Namespace:
     parser.add_argument("--mitsuba-sampler", default="independent", choices=["independent", "stratified",
                         "multijitter", "orthogonal", "ldsampler"], help="Mitsuba's sample generator (default "
                         "independent; ldsampler is its low-discrepancy one, the counterpart of raylab's Sobol points)")
+    parser.add_argument("--schedule", default="auto", choices=["auto", "megakernel", "wavefront"],
+                        help="raylab's schedule (raylab render --schedule; default auto: the wavefront)")
     parser.add_argument("--variant", default="llvm_ad_rgb", help="Mitsuba variant (default llvm_ad_rgb; "
                         "scalar_rgb needs no libLLVM but is far slower)")
     parser.add_argument("--out", type=Path, default=REPO / "out" / "mitsuba_compare",
@@ -292,7 +295,7 @@ def main() -> None:
         raise ToolError(f"Mitsuba variant {args.variant} is unusable here ({error}); the LLVM variants need "
                         f"libLLVM 19 (tools/setup.sh installs libllvm19), or pass --variant scalar_rgb")
     args.out.mkdir(parents=True, exist_ok=True)
-    results = {"mitsuba_sampler": args.mitsuba_sampler,
+    results = {"mitsuba_sampler": args.mitsuba_sampler, "raylab_schedule": args.schedule,
                "machine": {"cpus": os.cpu_count(), "platform": platform.platform(), "mitsuba": mi.__version__,
                            "variant": args.variant, "load_average": os.getloadavg()},
                "width": args.width, "height": args.height, "spp": args.spp, "block": args.block, "scenes": {}}
@@ -302,8 +305,8 @@ def main() -> None:
         gltf = write_gltf(case, args.out)
         print(f"{name}: {args.width}x{args.height}, {args.spp} spp, max depth {case.max_depth} "
               f"(Mitsuba max_depth {case.max_depth + 2})", flush=True)
-        ours = render_raylab(raylab, gltf, case, args.out, args.width, args.height, args.spp, 1)
-        again = render_raylab(raylab, gltf, case, args.out, args.width, args.height, args.spp, 2)
+        ours = render_raylab(raylab, gltf, case, args.out, args.width, args.height, args.spp, 1, args.schedule)
+        again = render_raylab(raylab, gltf, case, args.out, args.width, args.height, args.spp, 2, args.schedule)
         theirs = render_mitsuba(case, args.out, args.width, args.height, args.spp, 3, args.mitsuba_sampler)
         theirs_again = render_mitsuba(case, args.out, args.width, args.height, args.spp, 4,
                                       args.mitsuba_sampler) if args.speed else None

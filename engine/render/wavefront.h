@@ -1,7 +1,8 @@
 // The path integrator as a wavefront on the ray-query backend (shaders/wavefront.comp): waves of paths that
 // advance one segment per dispatch, the paths still alive compacted into a queue between segments, so that no
 // lane of lavapipe's 8-lane groups idles while its neighbours finish longer paths. The megakernel stays for the
-// slides' integrator and for the pipeline backend (docs/performance.md: the measurements behind the choice).
+// slides' integrator, for the pipeline backend and for environment-lit scenes (docs/performance.md: the
+// measurements behind the choice).
 // The image is bit for bit the megakernel's.
 #pragma once
 
@@ -24,7 +25,8 @@ namespace raylab {
 // How a render traces its paths: as the wavefront or as the megakernel; `automatic` decides by kernel and backend.
 enum class Schedule { kAutomatic, kMegakernel, kWavefront };
 
-// The schedule a kernel runs with: the wavefront for path kernels on ray queries, the megakernel otherwise.
+// The schedule a kernel runs with: automatically the wavefront for path kernels on ray queries without an
+// environment image (where it measured faster), the megakernel otherwise.
 // Throws Error(kExitUsage) for a wavefront that cannot run (the slides' integrator splits paths at glass into a
 // queue of its own; the pipeline backend has no subgroup operations to compact queues with).
 bool usesWavefront(Schedule schedule, const KernelFeatures& kernel, Backend backend);

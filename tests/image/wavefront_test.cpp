@@ -81,12 +81,16 @@ TEST_F(WavefrontTest, AnImageOfSeveralWavesIsBitIdenticalToTheMegakernel) {
                  render(device(), scene, 256, 256, 8, Schedule::kWavefront), "several waves");
 }
 
-TEST_F(WavefrontTest, TheAutomaticChoiceIsTheWavefrontForPathKernelsOnRayQueriesOnly) {
+TEST_F(WavefrontTest, TheAutomaticChoiceIsTheWavefrontForPathKernelsOnRayQueriesWithoutAnEnvironmentImage) {
   KernelFeatures path;
   path.integrator = gpu::kIntegratorPath;
+  KernelFeatures environmentLit = path;
+  environmentLit.features |= gpu::kFeatureEnvironment;
   KernelFeatures slides;
   slides.integrator = gpu::kIntegratorSlides;
   EXPECT_TRUE(usesWavefront(Schedule::kAutomatic, path, Backend::kQuery));
+  EXPECT_FALSE(usesWavefront(Schedule::kAutomatic, environmentLit, Backend::kQuery));
+  EXPECT_TRUE(usesWavefront(Schedule::kWavefront, environmentLit, Backend::kQuery));
   EXPECT_FALSE(usesWavefront(Schedule::kAutomatic, path, Backend::kPipeline));
   EXPECT_FALSE(usesWavefront(Schedule::kAutomatic, slides, Backend::kQuery));
   EXPECT_FALSE(usesWavefront(Schedule::kMegakernel, path, Backend::kQuery));
