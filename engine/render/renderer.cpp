@@ -72,7 +72,8 @@ std::uint32_t pushConstantBytes(Backend backend) {
 
 // Makes the wavefront's buffers the first time a kernel runs as a wavefront.
 void prepareWavefront(const Device& device, Renderer& renderer) {
-  renderer.wavefrontActive = usesWavefront(renderer.schedule, renderer.kernel, renderer.trace.backend);
+  renderer.wavefrontActive =
+      usesWavefront(renderer.schedule, renderer.kernel, renderer.trace.backend, renderer.lightEscapes);
   if (renderer.wavefrontActive && !hasWavefrontBuffers(renderer.wavefront)) {
     createWavefrontBuffers(device, renderer.wavefront, renderer.trace.descriptors.set);
   }
@@ -147,7 +148,9 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   checkHeatmap(device, settings);
   // The heat map clocks each pixel's lane, so it keeps every pixel's samples in the megakernel.
   renderer.schedule = settings.heatmap ? Schedule::kMegakernel : settings.schedule;
-  usesWavefront(renderer.schedule, renderer.kernel, settings.backend);  // refuses an impossible --schedule early
+  renderer.lightEscapes = lightEscapes(scene);
+  // Refuses an impossible --schedule before anything is built.
+  usesWavefront(renderer.schedule, renderer.kernel, settings.backend, renderer.lightEscapes);
   renderer.trace = createTraceKernel(device, settings.backend, settings.heatmap ? kHeatmapPrograms : kRenderPrograms,
                                      rendererBindings(settings.backend, settings.heatmap),
                                      pushConstantBytes(settings.backend), gpuScene);
@@ -170,7 +173,7 @@ RenderPipelines createRenderPipelines(const Device& device, const Renderer& rend
   RenderPipelines pipelines;
   // Only the one the schedule runs: on lavapipe creating a pipeline costs about 0.3 s of SPIR-V translation
   // and optimisation, every run (Mesa's disk cache keeps only the LLVM compilation of its first dispatch).
-  if (usesWavefront(renderer.schedule, kernel, renderer.trace.backend)) {
+  if (usesWavefront(renderer.schedule, kernel, renderer.trace.backend, renderer.lightEscapes)) {
     pipelines.wavefront = createComputePipeline(device, renderer.trace.pipelineLayout, "wavefront.comp", &constants);
   } else {
     pipelines.trace = createTracePipeline(device, renderer.trace, &constants);

@@ -54,7 +54,8 @@ struct Renderer {
   TraceKernel trace;    // the render programs on the chosen backend, specialised for `kernel`
   Wavefront wavefront;  // the ray-query backend's wavefront.comp, of trace's layout; buffers while it is in use
   Schedule schedule = Schedule::kAutomatic;
-  bool wavefrontActive = false;  // usesWavefront(schedule, kernel, backend)
+  bool lightEscapes = false;     // of the scene, for the automatic schedule
+  bool wavefrontActive = false;  // usesWavefront(schedule, kernel, backend, lightEscapes)
   bool clocksPixels = false;     // settings.heatmap
   Buffer heatmap;                // float clock ticks per pixel, when clocksPixels
   Buffer accumulation;  // vec4 per pixel: radiance sum and sample count

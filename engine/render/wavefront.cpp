@@ -62,7 +62,11 @@ void recordWave(VkCommandBuffer cmd, const Wavefront& wavefront, VkPipelineLayou
 
 }  // namespace
 
-bool usesWavefront(Schedule schedule, const KernelFeatures& kernel, Backend backend) {
+bool lightEscapes(const Scene& scene) {
+  return scene.environment.hasImage() || std::max({scene.background.r, scene.background.g, scene.background.b}) > 0.0f;
+}
+
+bool usesWavefront(Schedule schedule, const KernelFeatures& kernel, Backend backend, bool lightEscapes) {
   const bool possible = kernel.integrator == gpu::kIntegratorPath && backend == Backend::kQuery;
   if (schedule == Schedule::kWavefront && !possible) {
     throw Error("--schedule wavefront: only the path integrator on the ray-query backend runs as a wavefront",
@@ -70,9 +74,9 @@ bool usesWavefront(Schedule schedule, const KernelFeatures& kernel, Backend back
   }
   if (schedule != Schedule::kAutomatic) return schedule == Schedule::kWavefront;
   // Measured (docs/performance.md): in closed scenes lit by emitters paths bounce long and unevenly, and the
-  // wavefront is 5-15% faster; under an environment image most paths escape after a bounce or two, the lanes
-  // stay busy anyway, and the megakernel needs 10-20% less CPU time.
-  return possible && (kernel.features & gpu::kFeatureEnvironment) == 0;
+  // wavefront is 5-15% faster; where light escapes (an environment image, a lit background) most paths leave
+  // after a bounce or two, the lanes stay busy anyway, and the megakernel needs 5-20% less CPU time.
+  return possible && !lightEscapes;
 }
 
 std::vector<DescriptorBinding> wavefrontBindings() {

@@ -15,6 +15,7 @@
 
 #include "render/backend.h"
 #include "render/kernel_features.h"
+#include "scene/scene.h"
 #include "shared/frame.h"
 #include "vk/device.h"
 #include "vk/pipeline.h"
@@ -25,11 +26,14 @@ namespace raylab {
 // How a render traces its paths: as the wavefront or as the megakernel; `automatic` decides by kernel and backend.
 enum class Schedule { kAutomatic, kMegakernel, kWavefront };
 
-// The schedule a kernel runs with: automatically the wavefront for path kernels on ray queries without an
-// environment image (where it measured faster), the megakernel otherwise.
-// Throws Error(kExitUsage) for a wavefront that cannot run (the slides' integrator splits paths at glass into a
-// queue of its own; the pipeline backend has no subgroup operations to compact queues with).
-bool usesWavefront(Schedule schedule, const KernelFeatures& kernel, Backend backend);
+// The schedule a kernel runs with: automatically the wavefront for path kernels on ray queries in closed scenes
+// (no environment image, a black background: `lightEscapes` false), where it measured faster, the megakernel
+// otherwise. Throws Error(kExitUsage) for a wavefront that cannot run (the slides' integrator splits paths at
+// glass into a queue of its own; the pipeline backend has no subgroup operations to compact queues with).
+bool usesWavefront(Schedule schedule, const KernelFeatures& kernel, Backend backend, bool lightEscapes);
+
+// True when paths that leave the scene see light: an environment image or a background that is not black.
+bool lightEscapes(const Scene& scene);
 
 // Paths one wave holds: 2^18 (the buffers take 31 MB).
 inline constexpr std::uint32_t kWaveCapacity = 1u << 18;

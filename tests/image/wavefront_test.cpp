@@ -81,21 +81,25 @@ TEST_F(WavefrontTest, AnImageOfSeveralWavesIsBitIdenticalToTheMegakernel) {
                  render(device(), scene, 256, 256, 8, Schedule::kWavefront), "several waves");
 }
 
-TEST_F(WavefrontTest, TheAutomaticChoiceIsTheWavefrontForPathKernelsOnRayQueriesWithoutAnEnvironmentImage) {
+// Automatically only for path kernels on ray queries in closed scenes, where it measured faster.
+TEST_F(WavefrontTest, TheAutomaticChoiceIsTheWavefrontForPathKernelsOnRayQueriesInClosedScenes) {
   KernelFeatures path;
   path.integrator = gpu::kIntegratorPath;
-  KernelFeatures environmentLit = path;
-  environmentLit.features |= gpu::kFeatureEnvironment;
   KernelFeatures slides;
   slides.integrator = gpu::kIntegratorSlides;
-  EXPECT_TRUE(usesWavefront(Schedule::kAutomatic, path, Backend::kQuery));
-  EXPECT_FALSE(usesWavefront(Schedule::kAutomatic, environmentLit, Backend::kQuery));
-  EXPECT_TRUE(usesWavefront(Schedule::kWavefront, environmentLit, Backend::kQuery));
-  EXPECT_FALSE(usesWavefront(Schedule::kAutomatic, path, Backend::kPipeline));
-  EXPECT_FALSE(usesWavefront(Schedule::kAutomatic, slides, Backend::kQuery));
-  EXPECT_FALSE(usesWavefront(Schedule::kMegakernel, path, Backend::kQuery));
-  EXPECT_THROW(usesWavefront(Schedule::kWavefront, slides, Backend::kQuery), Error);
-  EXPECT_THROW(usesWavefront(Schedule::kWavefront, path, Backend::kPipeline), Error);
+  EXPECT_TRUE(usesWavefront(Schedule::kAutomatic, path, Backend::kQuery, false));
+  EXPECT_FALSE(usesWavefront(Schedule::kAutomatic, path, Backend::kQuery, true));
+  EXPECT_TRUE(usesWavefront(Schedule::kWavefront, path, Backend::kQuery, true));
+  EXPECT_FALSE(usesWavefront(Schedule::kAutomatic, path, Backend::kPipeline, false));
+  EXPECT_FALSE(usesWavefront(Schedule::kAutomatic, slides, Backend::kQuery, false));
+  EXPECT_FALSE(usesWavefront(Schedule::kMegakernel, path, Backend::kQuery, false));
+  EXPECT_THROW(usesWavefront(Schedule::kWavefront, slides, Backend::kQuery, false), Error);
+  EXPECT_THROW(usesWavefront(Schedule::kWavefront, path, Backend::kPipeline, false), Error);
+
+  const Scene cornell = loadScene({std::string(RAYLAB_SOURCE_DIR) + "/assets/scenes/cornell_box_area.gltf", ""});
+  const Scene hdri = loadScene({std::string(RAYLAB_SOURCE_DIR) + "/assets/scenes/showcase_hdri.gltf", ""});
+  EXPECT_FALSE(lightEscapes(cornell));
+  EXPECT_TRUE(lightEscapes(hdri));
 }
 
 }  // namespace

@@ -210,8 +210,8 @@ int runRender(int argc, char** argv) {
   args.choice("--schedule", &o.schedule, {"auto", "megakernel", "wavefront"},
               "how paths are traced: megakernel (a lane per pixel until its path ends) or wavefront (one segment of "
               "every live path per dispatch; the path integrator on ray queries only); auto (default): the "
-              "wavefront for path kernels without an environment image, where it measured faster; the image is "
-              "the same");
+              "wavefront for path kernels in closed scenes (no environment image, black background), where it "
+              "measured faster; the image is the same");
   args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
   if (!args.parse(argc, argv)) return kExitOk;
   o.settings.jitter = !o.noAntialiasing;
