@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "render/renderer.h"
+#include "scene/camera_frame.h"
 
 namespace raylab {
 

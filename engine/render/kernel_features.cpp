@@ -1,6 +1,6 @@
 #include "render/kernel_features.h"
 
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "shared/features.h"
 
 namespace raylab {

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "scene/gpu_scene.h"
+#include "render/gpu_scene.h"
 #include "shared/frame.h"
 #include "vk/device.h"
 #include "render/trace_kernel.h"

@@ -105,27 +105,6 @@ void checkImageSize(const Device& device, std::uint32_t width, std::uint32_t hei
   }
 }
 
-void applyCamera(gpu::FrameParams& params, const Camera& camera, std::uint32_t width, std::uint32_t height) {
-  const glm::vec3 forward = camera.target - camera.position;
-  const glm::vec3 right = glm::cross(forward, camera.up);
-  if (!(glm::length(forward) > 0.0f) || !(glm::length(right) > 0.0f)) {
-    throw Error("camera '" + camera.name + "': position, target and up do not define a view direction");
-  }
-  if (!(camera.yfov > 0.0f && camera.yfov < 3.1f)) {
-    throw Error("camera '" + camera.name + "': vertical field of view " + std::to_string(camera.yfov) +
-                " rad is outside (0, 3.1)");
-  }
-  const float tanHalf = std::tan(0.5f * camera.yfov);
-  const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  const glm::vec3 w = glm::normalize(forward);
-  const glm::vec3 u = glm::normalize(right);
-  const glm::vec3 v = glm::cross(u, w);
-  params.cameraOrigin = camera.position;
-  params.cameraForward = w;
-  params.cameraRight = u * (tanHalf * aspect);
-  params.cameraUp = v * tanHalf;
-}
-
 Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Scene& scene,
                         const RenderSettings& settings) {
   checkImageSize(device, settings.width, settings.height);

@@ -12,7 +12,8 @@
 #include "render/kernel_features.h"
 #include "render/trace_kernel.h"
 #include "render/wavefront.h"
-#include "scene/gpu_scene.h"
+#include "scene/camera_frame.h"
+#include "render/gpu_scene.h"
 #include "scene/scene.h"
 #include "shared/frame.h"
 #include "vk/device.h"
@@ -120,8 +121,5 @@ Image readImage(const Device& device, const Renderer& renderer);
 
 // With settings.heatmap: clock ticks per sample of every pixel so far.
 CostMap readCostMap(const Device& device, const Renderer& renderer);
-
-// Camera of FrameParams for an image of width x height; throws Error on a degenerate camera.
-void applyCamera(gpu::FrameParams& params, const Camera& camera, std::uint32_t width, std::uint32_t height);
 
 }  // namespace raylab

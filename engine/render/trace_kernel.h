@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "render/backend.h"
-#include "scene/gpu_scene.h"
+#include "render/gpu_scene.h"
 #include "vk/device.h"
 #include "vk/pipeline.h"
 #include "vk/ray_tracing_pipeline.h"

@@ -9,7 +9,7 @@
 #include <stb_image.h>
 
 #include "scene/gltf_files.h"
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "util/error.h"
 
 namespace raylab::gltf {

@@ -1,6 +1,6 @@
 #include "scene/scene.h"
 
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 
 namespace raylab {
 

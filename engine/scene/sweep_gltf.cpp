@@ -8,7 +8,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "scene/shapes.h"
 #include "util/atomic_file.h"
 #include "util/error.h"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "util/error.h"
 
 namespace raylab {

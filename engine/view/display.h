@@ -17,7 +17,7 @@
 #include <glm/glm.hpp>
 
 #include "image/image.h"
-#include "view/scheduler.h"
+#include "view_logic/scheduler.h"
 #include "vk/device.h"
 #include "vk/compute_kernel.h"
 #include "vk/resources.h"

@@ -4,7 +4,7 @@
 #include <cstring>
 #include <exception>
 
-#include "scene/gpu_scene.h"
+#include "render/gpu_scene.h"
 #include "util/error.h"
 #include "util/timer.h"
 

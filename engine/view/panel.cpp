@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "shared/features.h"
 #include "util/progress.h"
-#include "view/scene_edits.h"
+#include "view_logic/scene_edits.h"
 
 namespace raylab {
 

@@ -13,18 +13,19 @@
 #include <memory>
 
 #include "render/kernel_features.h"
-#include "scene/gpu_scene.h"
+#include "render/gpu_scene.h"
 #include "shared/features.h"
 #include "shared/frame.h"
 #include "util/error.h"
 #include "util/files.h"
 #include "util/timer.h"
-#include "view/camera_controller.h"
+#include "view/camera_input.h"
+#include "view_logic/camera_controller.h"
 #include "view/display.h"
 #include "view/frame_slot.h"
 #include "view/kernel_build.h"
 #include "view/panel.h"
-#include "view/scheduler.h"
+#include "view_logic/scheduler.h"
 #include "view/swapchain.h"
 #include "view/ui.h"
 #include "view/window.h"
@@ -87,6 +88,7 @@ struct Viewer {
 
   Scheduler scheduler;
   CameraController controller;
+  CursorTracker cursor;
   Camera camera;
   ViewSettings settings;
   PanelStatus status;
@@ -636,8 +638,8 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
     edits = drawPanel(v.scene, v.settings, v.selection, v.status, v.controller.sceneSize,
                       float(v.swapchain.extent.height));
   }
-  if (updateCamera(v.controller, v.camera, v.window, input, !uiWantsMouse(), !uiWantsKeyboard(),
-                   now - v.lastCameraUpdate)) {
+  if (updateCamera(v.controller, v.camera, pollCameraInput(v.window, input, v.cursor), !uiWantsMouse(),
+                   !uiWantsKeyboard(), now - v.lastCameraUpdate)) {
     v.changed = true;
   }
   v.lastCameraUpdate = now;

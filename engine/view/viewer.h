@@ -12,7 +12,7 @@
 #include "image/image.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
-#include "view/script.h"
+#include "view_logic/script.h"
 
 namespace raylab {
 

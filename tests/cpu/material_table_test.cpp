@@ -8,7 +8,7 @@
 #include <regex>
 #include <sstream>
 
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 
 namespace raylab::test {
 namespace {

@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "reference/brdf_reference.h"
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "util/error.h"
 
 namespace raylab::test {

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "brdf/brdf_cases.h"
+#include "brdf_eval/brdf_cases.h"
 #include "util/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

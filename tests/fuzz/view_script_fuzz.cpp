@@ -6,7 +6,7 @@
 #include "scene/default_scene.h"
 #include "util/error.h"
 #include "util/log.h"
-#include "view/script.h"
+#include "view_logic/script.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const raylab::Scene scene = [] {

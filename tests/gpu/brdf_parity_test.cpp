@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "brdf/device_evaluator.h"
+#include "brdf_eval/device_evaluator.h"
 #include "reference/brdf_reference.h"
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "support/gpu_test.h"
 
 namespace raylab::test {

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "render/renderer.h"
-#include "scene/gpu_scene.h"
+#include "render/gpu_scene.h"
 #include "scene/default_scene.h"
 #include "scene/shapes.h"
 #include "support/analytic.h"

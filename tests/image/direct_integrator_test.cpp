@@ -8,7 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/renderer.h"
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "scene/shapes.h"
 #include "support/analytic.h"
 #include "support/gpu_test.h"

@@ -15,7 +15,7 @@
 #include "image/path_test_support.h"
 #include "render/kernel_features.h"
 #include "scene/environment_tables.h"
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "scene/shapes.h"
 #include "shared/features.h"
 #include "support/analytic.h"

@@ -16,7 +16,7 @@
 #include "reference/albedo.h"
 #include "render/kernel_features.h"
 #include "render/renderer.h"
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "scene/shapes.h"
 #include "shared/features.h"
 #include "image/path_test_support.h"

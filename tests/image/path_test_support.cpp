@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "render/kernel_features.h"
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "shared/features.h"
 #include "support/analytic.h"
 #include "support/gpu_test.h"

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "render/renderer.h"
-#include "scene/gpu_scene.h"
+#include "render/gpu_scene.h"
 #include "scene/load_scene.h"
 #include "shared/features.h"
 #include "support/gpu_test.h"

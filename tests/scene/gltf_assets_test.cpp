@@ -8,7 +8,7 @@
 #include <map>
 
 #include "gltf_test_support.h"
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 
 namespace raylab::test {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "gltf_test_support.h"
 #include "scene/gltf_materials.h"
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 
 namespace raylab::test {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "render/renderer.h"
+#include "scene/camera_frame.h"
 
 namespace raylab::test {
 

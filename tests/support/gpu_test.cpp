@@ -7,7 +7,7 @@
 #include <set>
 
 #include "render/ray_probe.h"
-#include "scene/gpu_scene.h"
+#include "render/gpu_scene.h"
 #include "shared/features.h"
 #include "util/error.h"
 

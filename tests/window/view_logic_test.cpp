@@ -9,9 +9,9 @@
 #include "scene/gltf_test_support.h"
 #include "scene/scene.h"
 #include "util/error.h"
-#include "view/camera_controller.h"
-#include "view/scheduler.h"
-#include "view/script.h"
+#include "view_logic/camera_controller.h"
+#include "view_logic/scheduler.h"
+#include "view_logic/script.h"
 
 namespace raylab::test {
 namespace {

@@ -19,7 +19,7 @@
 #include "gpu_session.h"
 #include "render/ray_probe.h"
 #include "render/renderer.h"
-#include "scene/gpu_scene.h"
+#include "render/gpu_scene.h"
 #include "util/error.h"
 #include "util/progress.h"
 #include "util/timer.h"

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "args.h"
-#include "brdf/brdf_cases.h"
-#include "brdf/device_evaluator.h"
+#include "brdf_eval/brdf_cases.h"
+#include "brdf_eval/device_evaluator.h"
 #include "brdf_commands.h"
 #include "gpu_session.h"
 #include "reference/albedo.h"

@@ -16,7 +16,7 @@
 #include "render/kernel_features.h"
 #include "render/renderer.h"
 #include "scene/default_scene.h"
-#include "scene/gpu_scene.h"
+#include "render/gpu_scene.h"
 #include "util/error.h"
 #include "util/progress.h"
 #include "util/timer.h"

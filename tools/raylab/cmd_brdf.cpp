@@ -6,9 +6,9 @@
 #include <string>
 
 #include "args.h"
-#include "brdf/brdf_cases.h"
-#include "brdf/cpu_evaluator.h"
-#include "brdf/device_evaluator.h"
+#include "brdf_eval/brdf_cases.h"
+#include "brdf_eval/cpu_evaluator.h"
+#include "brdf_eval/device_evaluator.h"
 #include "brdf_commands.h"
 #include "commands.h"
 #include "gpu_session.h"

@@ -16,7 +16,7 @@
 #include "image/image.h"
 #include "render/renderer.h"
 #include "scene/load_scene.h"
-#include "scene/gpu_scene.h"
+#include "render/gpu_scene.h"
 #include "util/error.h"
 #include "shared/features.h"
 #include "util/atomic_file.h"

@@ -10,7 +10,7 @@
 #include "scene/load_scene.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
-#include "view/script.h"
+#include "view_logic/script.h"
 #include "view/viewer.h"
 
 namespace raylab {

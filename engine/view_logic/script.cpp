@@ -1,4 +1,4 @@
-#include "view/script.h"
+#include "view_logic/script.h"
 
 #include <algorithm>
 #include <charconv>
@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <sstream>
 
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "shared/scene_records.h"
 #include "util/error.h"
 #include "util/files.h"
-#include "view/scene_edits.h"
+#include "view_logic/scene_edits.h"
 
 namespace raylab {
 

@@ -2,7 +2,7 @@
 // inputs, promoted to double, with the directions normalised and the frame built in double.
 #pragma once
 
-#include "brdf/brdf_cases.h"
+#include "brdf_eval/brdf_cases.h"
 
 namespace raylab {
 

@@ -1,4 +1,4 @@
-#include "brdf/device_evaluator.h"
+#include "brdf_eval/device_evaluator.h"
 
 #include <string>
 

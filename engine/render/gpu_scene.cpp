@@ -1,4 +1,4 @@
-#include "scene/gpu_scene.h"
+#include "render/gpu_scene.h"
 
 #include <cstdio>
 #include <string>

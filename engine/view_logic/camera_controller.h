@@ -1,12 +1,12 @@
 // Camera motion for the viewer: orbit around the target, pan, zoom and fly, as pure functions on Camera
-// (scripts call them directly) plus the mapping from mouse and keyboard to them. Every operation keeps the
-// camera valid for applyCamera: the view direction never becomes parallel to the up vector.
+// (scripts call them directly) plus the mapping from one frame's mouse and keyboard state to them (the window
+// reads that state: view/camera_input.h). Every operation keeps the camera valid for applyCamera: the view
+// direction never becomes parallel to the up vector.
 #pragma once
 
 #include <glm/glm.hpp>
 
 #include "scene/scene.h"
-#include "view/window.h"
 
 namespace raylab {
 
@@ -28,15 +28,26 @@ float sceneSize(const Scene& scene);
 struct CameraController {
   Camera home;  // what "reset view" returns to
   float sceneSize = 1.0f;
-  glm::dvec2 lastCursor{0.0};
-  bool hadCursor = false;
 };
 
 CameraController makeCameraController(const Scene& scene);
 
-// Applies this frame's mouse and keyboard to `camera`; true when it moved. `mouseFree`/`keyboardFree`: the UI
-// does not want them. `seconds`: time since the last call (fly speed).
-bool updateCamera(CameraController& controller, Camera& camera, const Window& window, const WindowInput& input,
-                  bool mouseFree, bool keyboardFree, double seconds);
+// One frame of the mouse and the keyboard, as far as the camera cares.
+struct CameraInput {
+  glm::vec2 cursorDelta{0.0f};  // pixels the cursor moved since the last frame
+  float viewHeight = 1.0f;      // pixels: pan moves the scene with the cursor
+  bool shift = false;
+  bool left = false;            // buttons held
+  bool middle = false;
+  bool right = false;
+  glm::vec3 fly{0.0f};          // keys held while flying: x right (D - A), y up (E - Q), z forward (W - S)
+  double scroll = 0.0;          // wheel steps, positive away from the user
+  bool reset = false;           // R or Home was pressed
+};
+
+// Applies this frame's input to `camera`; true when it moved. `mouseFree`/`keyboardFree`: the UI does not want
+// them. `seconds`: time since the last call (fly speed).
+bool updateCamera(const CameraController& controller, Camera& camera, const CameraInput& input, bool mouseFree,
+                  bool keyboardFree, double seconds);
 
 }  // namespace raylab

@@ -1,8 +1,8 @@
-#include "view/scene_edits.h"
+#include "view_logic/scene_edits.h"
 
 #include <cmath>
 
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 
 namespace raylab {
 

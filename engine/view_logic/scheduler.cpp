@@ -1,4 +1,4 @@
-#include "view/scheduler.h"
+#include "view_logic/scheduler.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "brdf/cpu_evaluator.h"
+#include "brdf_eval/cpu_evaluator.h"
 
 #include "reference/brdf_reference.h"
 

@@ -1,7 +1,4 @@
-#include "view/camera_controller.h"
-
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
+#include "view_logic/camera_controller.h"
 
 #include <algorithm>
 #include <cmath>
@@ -108,32 +105,19 @@ CameraController makeCameraController(const Scene& scene) {
   return controller;
 }
 
-bool updateCamera(CameraController& controller, Camera& camera, const Window& window, const WindowInput& input,
-                  bool mouseFree, bool keyboardFree, double seconds) {
-  GLFWwindow* handle = window.handle;
-  glm::dvec2 cursor;
-  glfwGetCursorPos(handle, &cursor.x, &cursor.y);
-  const glm::vec2 delta = controller.hadCursor ? glm::vec2(cursor - controller.lastCursor) : glm::vec2(0.0f);
-  controller.lastCursor = cursor;
-  controller.hadCursor = true;
-
-  const bool shift = glfwGetKey(handle, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
-                     glfwGetKey(handle, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
-  const bool left = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-  const bool middle = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-  const bool right = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-  int width = 1, height = 1;
-  glfwGetWindowSize(handle, &width, &height);
-
+bool updateCamera(const CameraController& controller, Camera& camera, const CameraInput& input, bool mouseFree,
+                  bool keyboardFree, double seconds) {
+  const glm::vec2 delta = input.cursorDelta;
+  const float height = std::max(input.viewHeight, 1.0f);
   bool moved = false;
   if (mouseFree && delta != glm::vec2(0.0f)) {
-    if ((left && shift) || middle) {
-      panCamera(camera, -delta.x / float(std::max(height, 1)), delta.y / float(std::max(height, 1)));
+    if ((input.left && input.shift) || input.middle) {
+      panCamera(camera, -delta.x / height, delta.y / height);
       moved = true;
-    } else if (left) {
+    } else if (input.left) {
       orbitCamera(camera, -delta.x * kOrbitRadiansPerPixel, delta.y * kOrbitRadiansPerPixel);
       moved = true;
-    } else if (right) {
+    } else if (input.right) {
       lookCamera(camera, -delta.x * kLookRadiansPerPixel, -delta.y * kLookRadiansPerPixel);
       moved = true;
     }
@@ -143,27 +127,14 @@ bool updateCamera(CameraController& controller, Camera& camera, const Window& wi
     moved = true;
   }
   // Fly: WASD/QE while the right button is held, as in most 3D tools.
-  if (keyboardFree && right) {
-    glm::vec3 move(0.0f);
-    if (glfwGetKey(handle, GLFW_KEY_W) == GLFW_PRESS) move.z += 1.0f;
-    if (glfwGetKey(handle, GLFW_KEY_S) == GLFW_PRESS) move.z -= 1.0f;
-    if (glfwGetKey(handle, GLFW_KEY_D) == GLFW_PRESS) move.x += 1.0f;
-    if (glfwGetKey(handle, GLFW_KEY_A) == GLFW_PRESS) move.x -= 1.0f;
-    if (glfwGetKey(handle, GLFW_KEY_E) == GLFW_PRESS) move.y += 1.0f;
-    if (glfwGetKey(handle, GLFW_KEY_Q) == GLFW_PRESS) move.y -= 1.0f;
-    if (move != glm::vec3(0.0f)) {
-      const float speed = kFlyScenesPerSecond * controller.sceneSize * (shift ? kFastFlyFactor : 1.0f);
-      flyCamera(camera, glm::normalize(move) * speed * float(std::min(seconds, 0.25)));
-      moved = true;
-    }
+  if (keyboardFree && input.right && input.fly != glm::vec3(0.0f)) {
+    const float speed = kFlyScenesPerSecond * controller.sceneSize * (input.shift ? kFastFlyFactor : 1.0f);
+    flyCamera(camera, glm::normalize(input.fly) * speed * float(std::min(seconds, 0.25)));
+    moved = true;
   }
-  if (keyboardFree) {
-    for (int key : input.keysPressed) {
-      if (key == GLFW_KEY_R || key == GLFW_KEY_HOME) {
-        camera = controller.home;
-        moved = true;
-      }
-    }
+  if (keyboardFree && input.reset) {
+    camera = controller.home;
+    moved = true;
   }
   return moved;
 }

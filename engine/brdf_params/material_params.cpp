@@ -1,4 +1,4 @@
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 
 #include <cmath>
 #include <cstdio>

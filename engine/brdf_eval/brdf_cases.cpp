@@ -1,11 +1,11 @@
-#include "brdf/brdf_cases.h"
+#include "brdf_eval/brdf_cases.h"
 
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <set>
 
-#include "scene/material_params.h"
+#include "brdf_params/material_params.h"
 #include "util/error.h"
 
 namespace raylab {
