@@ -10,6 +10,10 @@
 
 namespace raylab {
 
+// The largest image side raylab renders, shows or reads as a texture; a render's pixel count is further bounded by
+// the device (maxImagePixels in render/renderer.h).
+inline constexpr std::uint32_t kMaxImageSide = 16384;
+
 struct Image {
   std::uint32_t width = 0;
   std::uint32_t height = 0;

@@ -21,8 +21,6 @@
 
 namespace raylab {
 
-// The largest image side any command accepts; the pixel count is further bounded by maxImagePixels.
-inline constexpr std::uint32_t kMaxImageSide = 16384;
 
 struct RenderSettings {
   std::uint32_t width = 640;

@@ -8,8 +8,9 @@
 
 #include <stb_image.h>
 
-#include "scene/gltf_files.h"
 #include "brdf_params/material_params.h"
+#include "image/image.h"
+#include "scene/gltf_files.h"
 #include "util/error.h"
 
 namespace raylab::gltf {
@@ -141,10 +142,10 @@ class TextureConverter {
                      ")");
     }
     const std::uint64_t texels = std::uint64_t(width) * std::uint64_t(height);
-    if (texels > kMaxImageTexels || width > 16384 || height > 16384) {
+    if (texels > kMaxImageTexels || width > int(kMaxImageSide) || height > int(kMaxImageSide)) {
       document_.fail(where + ": is " + std::to_string(width) + "x" + std::to_string(height) +
                      ", over raylab's limit of " + std::to_string(kMaxImageTexels) +
-                     " texels and 16384 a side (docs/scenes.md, Limits); scale it down");
+                     " texels and " + std::to_string(kMaxImageSide) + " a side (docs/scenes.md, Limits); scale it down");
     }
     decodedTexels_ += texels;
     if (decodedTexels_ > kMaxSceneTexels) {

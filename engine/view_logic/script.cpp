@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "brdf_params/material_params.h"
+#include "image/image.h"
 #include "shared/scene_records.h"
 #include "util/error.h"
 #include "util/files.h"
@@ -107,8 +108,8 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
     event.action = ScriptAction::kResize;
     const std::uint32_t width = parseCount(words[3], where, "the width");
     const std::uint32_t height = parseCount(words[4], where, "the height");
-    if (width < 8 || height < 8 || width > 16384 || height > 16384) {
-      throw Error(where + ": the window size must be within 8..16384 pixels a side");
+    if (width < 8 || height < 8 || width > kMaxImageSide || height > kMaxImageSide) {
+      throw Error(where + ": the window size must be within 8.." + std::to_string(kMaxImageSide) + " pixels a side");
     }
     event.value = glm::vec3(float(width), float(height), 0.0f);
     event.valueCount = 2;

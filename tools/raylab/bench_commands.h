@@ -1,11 +1,12 @@
-// The benchmarks behind `raylab bench <name>`; each parses its own arguments.
+// The commands below `raylab bench` that live outside cmd_bench.cpp.
 #pragma once
+
+#include <CLI/CLI.hpp>
 
 namespace raylab {
 
-int benchKernels(int argc, char** argv);
-int benchOrder(int argc, char** argv);
-int benchRays(int argc, char** argv);
-int benchView(int argc, char** argv);
+void addBenchRaysCommand(CLI::App& bench);
+void addBenchOrderCommand(CLI::App& bench);
+void addBenchViewCommand(CLI::App& bench);
 
 }  // namespace raylab

@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "args.h"
+#include "cli.h"
 #include "bench/bench_scenes.h"
 #include "bench/embree_tracer.h"
 #include "bench/ray_order.h"
@@ -84,29 +84,21 @@ std::vector<gpu::BrdfEvalCase> shadingCases(std::size_t count, bool sortedByMode
   return cases;
 }
 
-}  // namespace
-
-int benchOrder(int argc, char** argv) {
-  std::uint32_t size = 512, repeat = 3, shadingCount = 1u << 18;
+struct OrderOptions {
+  std::uint32_t size = 512;
+  std::uint32_t repeat = 3;
+  std::uint32_t shadingCount = 1u << 18;
   std::string only;
   bool json = false;
-  std::optional<std::uint32_t> deviceIndex;
-  ArgParser args("raylab bench order", "[options]",
-                 "Measures what ray and shading coherence is worth on the device: one diffuse bounce from each of\n"
-                 "SIZE x SIZE primary hits of the fixed scenes of `bench rays`, traced by raylab's probe (ray\n"
-                 "queries) and by Embree 3 (one thread, single rays) in five orders: as generated (pixel order),\n"
-                 "shuffled, by direction octant, by octant then a Morton code of the origin, and by that Morton\n"
-                 "code then octant; rates per CPU second of the process, best of --repeat. Then the BRDF library\n"
-                 "on the device with 8 models mixed in every group of 8 lanes against sorted by model.");
-  args.option("--size", &size, "primary rays per image side", 16, 4096);
-  args.option("--repeat", &repeat, "timed runs per measurement (best kept)", 1, 100);
-  args.option("--scene", &only, "KEY", "only this scene: 1k, 100k, 1m or spheres");
-  args.option("--shading-cases", &shadingCount, "BRDF evaluations of the shading measurement", 1024, 1u << 22);
-  args.flag("--json", &json, "print one JSON object instead of the tables");
-  args.option("--device", &deviceIndex, "Vulkan device index from `raylab devices`");
-  if (!args.parse(argc, argv)) return kExitOk;
+  std::optional<std::uint32_t> device;
+};
 
-  GpuSession gpu(deviceIndex, json);
+int benchOrder(const OrderOptions& o) {
+  const std::uint32_t size = o.size, repeat = o.repeat, shadingCount = o.shadingCount;
+  const std::string& only = o.only;
+  const bool json = o.json;
+
+  GpuSession gpu(o.device, json);
   std::vector<OrderResult> results;
   for (const BenchSceneInfo& info : allBenchScenes()) {
     if (!only.empty() && only != info.key) continue;
@@ -195,6 +187,28 @@ int benchOrder(int argc, char** argv) {
   }
   std::printf("  mixed / sorted: %.2fx the time\n", shading[0].seconds / shading[1].seconds);
   return kExitOk;
+}
+
+}  // namespace
+
+void addBenchOrderCommand(CLI::App& bench) {
+  auto o = std::make_shared<OrderOptions>();
+  CLI::App* command = addCommand(
+      bench, "order",
+      "what ray and shading coherence is worth: the same bounce rays in several orders\n"
+      "Measures what ray and shading coherence is worth on the device: one diffuse bounce from each of SIZE x "
+      "SIZE primary hits of the fixed scenes of `bench rays`, traced by raylab's probe (ray queries) and by Embree "
+      "3 (one thread, single rays) in six orders: as generated (pixel order), shuffled, by direction octant, by "
+      "octant then a Morton code of the origin, by that Morton code then octant, and every 8th ray 8 times (the "
+      "bound of any reordering); rates per CPU second of the process, best of --repeat. Then the BRDF library on "
+      "the device with 8 models mixed in every group of 8 lanes against sorted by model.",
+      [o] { return benchOrder(*o); });
+  addCount(command, "--size", o->size, "primary rays per image side", 16, 4096);
+  addCount(command, "--repeat", o->repeat, "timed runs per measurement (best kept)", 1, 100);
+  addChoice(command, "--scene", o->only, {"1k", "100k", "1m", "spheres"}, "only this scene");
+  addCount(command, "--shading-cases", o->shadingCount, "BRDF evaluations of the shading measurement", 1024, 1u << 22);
+  addFlag(command, "--json", o->json, "print one JSON object instead of the tables");
+  addDeviceOption(command, o->device);
 }
 
 }  // namespace raylab

@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "args.h"
+#include "cli.h"
 #include "bench/bench_scenes.h"
 #include "bench/embree_tracer.h"
 #include "bench/ray_sets.h"
@@ -227,34 +227,24 @@ void printTable(const Device& device, unsigned cores, std::uint32_t size, const 
   }
 }
 
-}  // namespace
-
-int benchRays(int argc, char** argv) {
-  std::uint32_t size = 512, repeat = 3;
+struct RaysOptions {
+  std::uint32_t size = 512;
+  std::uint32_t repeat = 3;
   std::string only;
+  bool cpuTime = false;
   std::string backendChoice = "all";
   bool json = false;
-  std::optional<std::uint32_t> deviceIndex;
-  ArgParser args("raylab bench rays", "[options]",
-                 "Traces the same rays (primary rays through SIZE x SIZE pixel centres, shadow rays from every hit\n"
-                 "to the light, one diffuse bounce per hit) of four fixed scenes (64 spheres tessellated to 1k,\n"
-                 "100k and 1M triangles, and as analytic spheres) with raylab's kernel on each backend (ray\n"
-                 "queries, ray-tracing pipeline) and with Embree 3 (one thread, and as many threads as cores), and\n"
-                 "cross-checks hits and distances. Times are the best of --repeat runs, after a warm-up that\n"
-                 "compiles the kernel (its time is printed as the first trace).");
-  args.option("--size", &size, "primary rays per image side", 16, 4096);
-  args.option("--repeat", &repeat, "timed runs per measurement (best kept)", 1, 100);
-  args.option("--scene", &only, "KEY", "only this scene: 1k, 100k, 1m or spheres");
-  args.flag("--cpu-time", &gCpuTime,
-            "rate rays per CPU-second of the whole process instead of per wall-clock second: steadier on a\n"
-            "                           shared machine, and fair between tracers using different thread counts");
-  args.flag("--json", &json, "print one JSON object instead of the table");
-  addBenchBackendOption(args, &backendChoice);
-  args.option("--device", &deviceIndex, "Vulkan device index from `raylab devices`");
-  if (!args.parse(argc, argv)) return kExitOk;
+  std::optional<std::uint32_t> device;
+};
 
-  GpuSession gpu(deviceIndex, json);
-  const std::vector<Backend> backends = backendsToCompare(gpu.device, backendChoice);
+int benchRays(const RaysOptions& o) {
+  const std::uint32_t size = o.size, repeat = o.repeat;
+  const std::string& only = o.only;
+  const bool json = o.json;
+  gCpuTime = o.cpuTime;
+
+  GpuSession gpu(o.device, json);
+  const std::vector<Backend> backends = backendsToCompare(gpu.device, o.backendChoice);
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   std::vector<SetResult> results;
   std::vector<BuildTimes> builds;
@@ -340,6 +330,31 @@ int benchRays(int argc, char** argv) {
     printTable(gpu.device, cores, size, builds, firsts, results, kernels);
   }
   return kExitOk;
+}
+
+}  // namespace
+
+void addBenchRaysCommand(CLI::App& bench) {
+  auto o = std::make_shared<RaysOptions>();
+  CLI::App* command = addCommand(
+      bench, "rays",
+      "raylab's two backends against Embree 3 on the same rays of fixed scenes\n"
+      "Traces the same rays (primary rays through SIZE x SIZE pixel centres, shadow rays from every hit to the "
+      "light, one diffuse bounce per hit) of four fixed scenes (64 spheres tessellated to 1k, 100k and 1M "
+      "triangles, and as analytic spheres) with raylab's kernel on each backend (ray queries, ray-tracing "
+      "pipeline) and with Embree 3 (one thread, and as many threads as cores), and cross-checks hits and "
+      "distances. Times are the best of --repeat runs, after a warm-up that compiles the kernel (its time is "
+      "printed as the first trace).",
+      [o] { return benchRays(*o); });
+  addCount(command, "--size", o->size, "primary rays per image side", 16, 4096);
+  addCount(command, "--repeat", o->repeat, "timed runs per measurement (best kept)", 1, 100);
+  addChoice(command, "--scene", o->only, {"1k", "100k", "1m", "spheres"}, "only this scene");
+  addFlag(command, "--cpu-time", o->cpuTime,
+          "rate rays per CPU-second of the whole process instead of per wall-clock second: steadier on a shared "
+          "machine, and fair between tracers using different thread counts");
+  addFlag(command, "--json", o->json, "print one JSON object instead of the table");
+  addBenchBackendOption(command, o->backendChoice);
+  addDeviceOption(command, o->device);
 }
 
 }  // namespace raylab

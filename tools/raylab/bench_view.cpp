@@ -10,8 +10,7 @@
 #include <thread>
 #include <vector>
 
-#include "args.h"
-#include "gpu_session.h"
+#include "cli.h"
 #include "bench_commands.h"
 #include "scene/load_scene.h"
 #include "util/atomic_file.h"
@@ -137,34 +136,26 @@ ViewTiming timeViewer(const Scene& scene, Size size, std::uint32_t warmupFrames,
   return timing;
 }
 
-}  // namespace
-
-int benchView(int argc, char** argv) {
-  std::uint32_t warmupFrames = 8, orbitFrames = 60, spp = 16;
+struct ViewBenchOptions {
+  std::uint32_t warmupFrames = 8;
+  std::uint32_t orbitFrames = 60;
+  std::uint32_t spp = 16;
   float targetMs = 50.0f;
   float degrees = 0.0f;
   bool json = false;
   std::string scenePath;
   std::string csvPath;
   std::string backend = "auto";
-  ArgParser args("raylab bench view", "[options]",
-                 "Times the viewer on the default scene at 640x360 and 1280x720: frame times while the camera\n"
-                 "orbits one step per frame, and the time from the last change until the window shows --spp\n"
-                 "samples per pixel at full resolution. Needs an X11 display (headless: xvfb-run -a). The first\n"
-                 "frames (the driver compiling the kernels) are not timed.");
-  args.option("--warmup", &warmupFrames, "frames before the orbit starts", 1, 1000);
-  args.option("--orbit-frames", &orbitFrames, "frames of orbiting", 2, 100000);
-  args.option("--degrees", &degrees, "orbit step per frame (default: a full turn, back to the scene's view)", 0.0f,
-              90.0f);
-  args.option("--target-ms", &targetMs, "the viewer's frame-time target", 5.0f, 1000.0f);
-  args.option("--spp", &spp, "samples per pixel to reach when still", 1, 4096);
-  args.option("--scene", &scenePath, "FILE", "a glTF scene instead of the built-in one");
-  args.flag("--json", &json, "print one JSON object instead of the table");
-  args.option("--frames-csv", &csvPath, "FILE",
-              "also write every frame (size, index, phase, submit and completion time, traced size, preview, spp, "
-              "pixel-samples, device seconds of tracing, display, blit and the whole frame) to FILE");
-  addBackendOption(args, &backend);
-  if (!args.parse(argc, argv)) return kExitOk;
+};
+
+int benchView(const ViewBenchOptions& o) {
+  const std::uint32_t warmupFrames = o.warmupFrames, orbitFrames = o.orbitFrames, spp = o.spp;
+  const float targetMs = o.targetMs;
+  const bool json = o.json;
+  const std::string& scenePath = o.scenePath;
+  const std::string& csvPath = o.csvPath;
+  const std::string& backend = o.backend;
+  float degrees = o.degrees;
   if (degrees == 0.0f) degrees = 360.0f / float(orbitFrames);
 
   const Scene scene = loadScene({scenePath, ""});
@@ -221,6 +212,32 @@ int benchView(int argc, char** argv) {
   std::printf("still ms/frame (other): interval between still frames, and the device time per frame that is not\n"
               "tracing (display pass, blit, UI). First frame > 0.5 s: the shader cache was cold.\n");
   return kExitOk;
+}
+
+}  // namespace
+
+void addBenchViewCommand(CLI::App& bench) {
+  auto o = std::make_shared<ViewBenchOptions>();
+  CLI::App* command = addCommand(
+      bench, "view",
+      "the viewer's frame times while orbiting and its time to 16 spp (needs X11)\n"
+      "Times the viewer on the default scene at 640x360 and 1280x720: frame times while the camera orbits one "
+      "step per frame, and the time from the last change until the window shows --spp samples per pixel at full "
+      "resolution. Needs an X11 display (headless: xvfb-run -a). The first frames (the driver compiling the "
+      "kernels) are not timed.",
+      [o] { return benchView(*o); });
+  addCount(command, "--warmup", o->warmupFrames, "frames before the orbit starts", 1, 1000);
+  addCount(command, "--orbit-frames", o->orbitFrames, "frames of orbiting", 2, 100000);
+  addNumber(command, "--degrees", o->degrees, "orbit step per frame (0: a full turn, back to the scene's view)", 0.0f,
+            90.0f);
+  addNumber(command, "--target-ms", o->targetMs, "the viewer's frame-time target", 5.0f, 1000.0f);
+  addCount(command, "--spp", o->spp, "samples per pixel to reach when still", 1, 4096);
+  addText(command, "--scene", o->scenePath, "FILE", "a glTF scene instead of the built-in one");
+  addFlag(command, "--json", o->json, "print one JSON object instead of the table");
+  addText(command, "--frames-csv", o->csvPath, "FILE",
+          "also write every frame (size, index, phase, submit and completion time, traced size, preview, spp, "
+          "pixel-samples, device seconds of tracing, display, blit and the whole frame) to FILE");
+  addBackendOption(command, o->backend);
 }
 
 }  // namespace raylab

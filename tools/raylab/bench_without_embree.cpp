@@ -1,21 +1,27 @@
-// `raylab bench rays|order` in a build without Embree (-DRAYLAB_EMBREE=OFF): they measure raylab against it.
+// `raylab bench rays|order` in a build without Embree (-DRAYLAB_EMBREE=OFF): they measure raylab against it,
+// so they say so and exit 2.
+#include <string>
+
 #include "bench_commands.h"
+#include "cli.h"
 #include "util/error.h"
 
 namespace raylab {
 
 namespace {
 
-[[noreturn]] void withoutEmbree(const char* benchmark) {
-  throw Error(std::string("raylab bench ") + benchmark +
-                  " measures raylab against Embree 3, and this raylab was built without it (-DRAYLAB_EMBREE=OFF); "
-                  "configure with -DRAYLAB_EMBREE=ON (Debian libembree-dev)",
-              kExitUsage);
+void addWithoutEmbree(CLI::App& bench, const std::string& name) {
+  addCommand(bench, name, "(not in this build: it measures raylab against Embree 3)", [name]() -> int {
+    throw Error("raylab bench " + name +
+                    " measures raylab against Embree 3, and this raylab was built without it (-DRAYLAB_EMBREE=OFF); "
+                    "configure with -DRAYLAB_EMBREE=ON (Debian libembree-dev)",
+                kExitUsage);
+  });
 }
 
 }  // namespace
 
-int benchRays(int, char**) { withoutEmbree("rays"); }
-int benchOrder(int, char**) { withoutEmbree("order"); }
+void addBenchRaysCommand(CLI::App& bench) { addWithoutEmbree(bench, "rays"); }
+void addBenchOrderCommand(CLI::App& bench) { addWithoutEmbree(bench, "order"); }
 
 }  // namespace raylab

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "args.h"
+#include "cli.h"
 #include "brdf_eval/brdf_cases.h"
 #include "brdf_eval/device_evaluator.h"
 #include "brdf_commands.h"
@@ -117,42 +117,32 @@ std::string formatCsv(const std::string& model, const std::string& params, const
 
 }  // namespace
 
-int runBrdfAlbedo(int argc, char** argv) {
+namespace {
+
+struct AlbedoOptions {
   std::string model;
   std::string params;
-  std::string anglesText = "0,10,20,30,40,50,60,70,80,85,88,89,89.9";
+  std::string angles = "0,10,20,30,40,50,60,70,80,85,88,89,89.9";
   float phiDeg = 0.0f;
   std::string backend = "cpu";
   std::uint32_t samples = 1u << 18;
   std::uint32_t seed = 1;
   float tolerance = 1e-6f;
   std::string outPath;
-  std::optional<std::uint32_t> deviceIndex;
-  ArgParser args(kCommand, "--model MODEL [--params 'k=v;k=v'] [options]",
-                 "Prints the directional albedo a(wo), the integral of f(wi, wo) cos_i over the hemisphere of wi,\n"
-                 "of one material at the outgoing angles theta_o of --angles (azimuth --phi from the tangent), as\n"
-                 "CSV: model,params,backend,theta_o,phi_o,albedo_r,albedo_g,albedo_b,error,evaluations. The\n"
-                 "models are reciprocal, so a(wo) is also the fraction of light arriving from wo that is\n"
-                 "reflected. The cpu backend integrates the double-precision reference by adaptive cubature\n"
-                 "(error: its estimate, largest channel); the gpu backend averages f cos_i / pdf over samples of\n"
-                 "the device's bsdfSample (error: one standard error, largest channel). delta, the mirror weight\n"
-                 "of the integrator, is not part of f and does not change the albedo. Glass is a delta BSDF:\n"
-                 "its reflectance is F_exact of `raylab brdf eval`.");
-  args.option("--model", &model, "MODEL",
-              "lambert, phong, blinnphong, cooktorrance, ward, ward_duer, ward_gmd, ashikhmin_shirley");
-  args.option("--params", &params, "'k=v;k=v'",
-              "parameters as in `raylab brdf eval` (RGB as r/g/b); others take defaults");
-  args.option("--angles", &anglesText, "LIST",
-              "theta_o in degrees, in [0, 90), comma-separated (default 0,10,...,80,85,88,89,89.9)");
-  args.option("--phi", &phiDeg, "azimuth of wo from the tangent, degrees", 0.0f, 360.0f);
-  args.choice("--backend", &backend, {"cpu", "gpu"}, "reference cubature (default) or device Monte Carlo");
-  args.option("--samples", &samples, "gpu backend: samples per angle", 1, 1u << 22);
-  args.option("--seed", &seed, "gpu backend: seed of the uniform numbers", 0, UINT32_MAX);
-  args.option("--tolerance", &tolerance, "cpu backend: relative tolerance of the cubature", 1e-12f, 1e-2f);
-  args.option("--out", &outPath, "FILE.csv", "write the CSV here instead of standard output");
-  args.option("--device", &deviceIndex,
-              "gpu backend: Vulkan device index from `raylab devices` (default: best capable)");
-  if (!args.parse(argc, argv)) return kExitOk;
+  std::optional<std::uint32_t> device;
+};
+
+int albedo(const AlbedoOptions& o) {
+  const std::string& model = o.model;
+  const std::string& params = o.params;
+  const std::string& anglesText = o.angles;
+  const double phiDeg = o.phiDeg;
+  const std::string& backend = o.backend;
+  const std::uint32_t samples = o.samples;
+  const std::uint32_t seed = o.seed;
+  const double tolerance = o.tolerance;
+  const std::string& outPath = o.outPath;
+  const std::optional<std::uint32_t>& deviceIndex = o.device;
   if (!outPath.empty()) checkOutputPath(outPath, "--out");
   if (model.empty()) {
     throw Error(std::string(kCommand) + ": --model is required (see `raylab brdf albedo --help`)", kExitUsage);
@@ -200,6 +190,37 @@ int runBrdfAlbedo(int argc, char** argv) {
   std::fprintf(stderr, "%s: %s, %zu angles on the %s backend in %.2f s\n", kCommand, model.c_str(), angles.size(),
                backend.c_str(), clock.seconds());
   return kExitOk;
+}
+
+}  // namespace
+
+void addBrdfAlbedoCommand(CLI::App& brdf) {
+  auto o = std::make_shared<AlbedoOptions>();
+  CLI::App* command = addCommand(
+      brdf, "albedo",
+      "directional albedo of one material against the outgoing angle, as CSV\n"
+      "Prints the directional albedo a(wo), the integral of f(wi, wo) cos_i over the hemisphere of wi, of one "
+      "material at the outgoing angles theta_o of --angles (azimuth --phi from the tangent), as CSV: model,params,"
+      "backend,theta_o,phi_o,albedo_r,albedo_g,albedo_b,error,evaluations. The models are reciprocal, so a(wo) is "
+      "also the fraction of light arriving from wo that is reflected. The cpu backend integrates the "
+      "double-precision reference by adaptive cubature (error: its estimate, largest channel); the gpu backend "
+      "averages f cos_i / pdf over samples of the device's bsdfSample (error: one standard error, largest "
+      "channel). delta, the mirror weight of the integrator, is not part of f and does not change the albedo. "
+      "Glass is a delta BSDF: its reflectance is F_exact of `raylab brdf eval`.",
+      [o] { return albedo(*o); });
+  addText(command, "--model", o->model, "MODEL",
+          "lambert, phong, blinnphong, cooktorrance, ward, ward_duer, ward_gmd, ashikhmin_shirley");
+  addText(command, "--params", o->params, "'k=v;k=v'",
+          "parameters as in `raylab brdf eval` (RGB as r/g/b); others take defaults");
+  addText(command, "--angles", o->angles, "LIST", "theta_o in degrees, in [0, 90), comma-separated")
+      ->capture_default_str();
+  addNumber(command, "--phi", o->phiDeg, "azimuth of wo from the tangent, degrees", 0.0f, 360.0f);
+  addChoice(command, "--backend", o->backend, {"cpu", "gpu"}, "reference cubature or device Monte Carlo");
+  addCount(command, "--samples", o->samples, "gpu backend: samples per angle", 1, 1u << 22);
+  addCount(command, "--seed", o->seed, "gpu backend: seed of the uniform numbers", 0, UINT32_MAX);
+  addNumber(command, "--tolerance", o->tolerance, "cpu backend: relative tolerance of the cubature", 1e-12f, 1e-2f);
+  addText(command, "--out", o->outPath, "FILE.csv", "write the CSV here instead of standard output");
+  addDeviceOption(command, o->device);
 }
 
 }  // namespace raylab

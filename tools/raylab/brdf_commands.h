@@ -1,8 +1,10 @@
-// The subcommands behind `raylab brdf <name>` that live outside cmd_brdf.cpp; each parses its own arguments.
+// The commands below `raylab brdf` that live outside cmd_brdf.cpp.
 #pragma once
+
+#include <CLI/CLI.hpp>
 
 namespace raylab {
 
-int runBrdfAlbedo(int argc, char** argv);
+void addBrdfAlbedoCommand(CLI::App& brdf);
 
 }  // namespace raylab

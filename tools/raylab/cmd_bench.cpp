@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "args.h"
+#include "cli.h"
 #include "bench_commands.h"
 #include "commands.h"
 #include "gpu_session.h"
@@ -63,29 +63,23 @@ Scene lambertOnlyScene() {
   return scene;
 }
 
-}  // namespace
-
-int benchKernels(int argc, char** argv) {
-  std::uint32_t width = 640, height = 360, samples = 16;
+struct KernelsOptions {
+  std::uint32_t width = 640;
+  std::uint32_t height = 360;
+  std::uint32_t samples = 16;
   bool json = false;
   std::string backend = "all";
-  std::optional<std::uint32_t> deviceIndex;
-  ArgParser args("raylab bench kernels", "[options]",
-                 "Compares the kernel specialised for a Lambert-only scene with the all-features kernel, on\n"
-                 "each backend (ray queries, ray-tracing pipeline): pipeline creation, driver compilation (the\n"
-                 "first sample) and time per sample. Mesa's shader cache is disabled for this command so that\n"
-                 "compilation is measured, not a cache hit.");
-  args.option("--width", &width, "image width", 1, 16384);
-  args.option("--height", &height, "image height", 1, 16384);
-  args.option("--spp", &samples, "samples timed per variant after the first", 1, 4096);
-  args.flag("--json", &json, "print one JSON object instead of the table");
-  addBenchBackendOption(args, &backend);
-  args.option("--device", &deviceIndex, "Vulkan device index from `raylab devices`");
-  if (!args.parse(argc, argv)) return kExitOk;
+  std::optional<std::uint32_t> device;
+};
+
+int benchKernels(const KernelsOptions& o) {
+  const std::uint32_t width = o.width, height = o.height, samples = o.samples;
+  const bool json = o.json;
+  const std::string& backend = o.backend;
 
   // Must be set before the driver initialises its disk cache.
   setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
-  GpuSession gpu(deviceIndex, json);
+  GpuSession gpu(o.device, json);
   const Scene scene = lambertOnlyScene();
   std::vector<std::pair<VariantTiming, VariantTiming>> timings;  // specialised, all features; per backend
   for (Backend b : backendsToCompare(gpu.device, backend)) {
@@ -143,25 +137,30 @@ int benchKernels(int argc, char** argv) {
   return kExitOk;
 }
 
-int runBench(int argc, char** argv) {
-  const std::string usage =
-      "Usage: raylab bench <benchmark> [options]\n\nBenchmarks:\n"
-      "  kernels    the scene-specialised kernel against the all-features kernel\n"
-      "  rays       raylab against Embree 3 on the same rays of fixed scenes\n"
-      "  order      what ray and shading coherence is worth: the same bounce rays in five orders\n"
-      "  view       the viewer's frame times while orbiting and its time to 16 spp (needs X11)\n"
-      "\n`raylab bench <benchmark> --help` describes each.\n";
-  if (argc < 1) throw Error("raylab bench: which benchmark?\n" + usage, kExitUsage);
-  const std::string which = argv[0];
-  if (which == "--help" || which == "-h") {
-    std::fputs(usage.c_str(), stdout);
-    return kExitOk;
-  }
-  if (which == "kernels") return benchKernels(argc - 1, argv + 1);
-  if (which == "rays") return benchRays(argc - 1, argv + 1);
-  if (which == "order") return benchOrder(argc - 1, argv + 1);
-  if (which == "view") return benchView(argc - 1, argv + 1);
-  throw Error("raylab bench: unknown benchmark '" + which + "'\n" + usage, kExitUsage);
+}  // namespace
+
+void addBenchCommands(CLI::App& raylab) {
+  CLI::App* bench = addCommandGroup(
+      raylab, "bench",
+      "benchmarks: kernel variants, the backends against Embree, ray order, the viewer\n"
+      "Benchmarks print machine-independent ratios where they can, and absolute figures with the driver (Mesa, "
+      "LLVM) and core count recorded. They measure; they do not assert (docs/performance.md).");
+  auto o = std::make_shared<KernelsOptions>();
+  CLI::App* command = addCommand(
+      *bench, "kernels",
+      "the scene-specialised kernel against the all-features kernel, on each backend\n"
+      "Compares the kernel specialised for a Lambert-only scene with the all-features kernel, on each backend "
+      "(ray queries, ray-tracing pipeline): pipeline creation, driver compilation (the first sample) and time per "
+      "sample. Mesa's shader cache is disabled for this command so that compilation is measured, not a cache hit.",
+      [o] { return benchKernels(*o); });
+  addImageSizeOptions(command, o->width, o->height, "image");
+  addCount(command, "--spp", o->samples, "samples timed per variant after the first", 1, 4096);
+  addFlag(command, "--json", o->json, "print one JSON object instead of the table");
+  addBenchBackendOption(command, o->backend);
+  addDeviceOption(command, o->device);
+  addBenchRaysCommand(*bench);
+  addBenchOrderCommand(*bench);
+  addBenchViewCommand(*bench);
 }
 
 }  // namespace raylab

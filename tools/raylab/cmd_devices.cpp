@@ -2,21 +2,16 @@
 // can run on it (with either of its two backends).
 #include <cstdio>
 
-#include "args.h"
+#include "cli.h"
 #include "commands.h"
 #include "util/error.h"
 #include "vk/device.h"
 
 namespace raylab {
 
-int runDevices(int argc, char** argv) {
-  ArgParser args("raylab devices", "[options]",
-                 "Lists every Vulkan device with its driver, the ray-tracing interfaces it offers (ray queries,\n"
-                 "ray-tracing pipelines), and whether raylab can run on it: acceleration structures, buffer device\n"
-                 "addresses, and ray queries (--backend query) or ray-tracing pipelines (--backend pipeline).\n"
-                 "Use the index with --device N. RAYLAB_HIDE_RAY_QUERIES=1 hides ray queries, as a device with\n"
-                 "pipelines only would show them.");
-  if (!args.parse(argc, argv)) return kExitOk;
+namespace {
+
+int listDevices() {
 
   Instance instance = createInstance({});
   const std::vector<DeviceReport> reports = surveyDevices(instance);
@@ -46,6 +41,19 @@ int runDevices(int argc, char** argv) {
   }
   if (!anyCapable) throw Error(noCapableDeviceMessage(reports), kExitNoDevice);
   return kExitOk;
+}
+
+}  // namespace
+
+void addDevicesCommand(CLI::App& raylab) {
+  addCommand(raylab, "devices",
+             "list Vulkan devices and whether raylab can use them\n"
+             "Lists every Vulkan device with its driver, the ray-tracing interfaces it offers (ray queries, "
+             "ray-tracing pipelines), and whether raylab can run on it: acceleration structures, buffer device "
+             "addresses, and ray queries (--backend query) or ray-tracing pipelines (--backend pipeline). Use the "
+             "index with --device N. RAYLAB_HIDE_RAY_QUERIES=1 hides ray queries, as a device with pipelines only "
+             "would show them.",
+             listDevices);
 }
 
 }  // namespace raylab

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "args.h"
+#include "cli.h"
 #include "commands.h"
 #include "gpu_session.h"
 #include "image/image.h"
@@ -28,8 +28,7 @@ namespace raylab {
 namespace {
 
 struct RenderOptions {
-  std::string scene;
-  std::string camera;
+  SceneRequest request;
   RenderSettings settings;
   std::uint32_t spp = 16;
   std::string exrPath;
@@ -40,7 +39,6 @@ struct RenderOptions {
   std::string toneMap = "clamp";
   bool noAntialiasing = false;
   bool noExr = false;
-  bool allowOutsideUris = false;
   bool noPng = false;
   bool stats = false;
   bool allFeatures = false;
@@ -49,23 +47,8 @@ struct RenderOptions {
   std::string sampling = "mis";
   std::string backend = "auto";
   std::string schedule = "auto";
-  std::string environment;
-  std::optional<float> environmentStrength;
-  std::optional<float> environmentRotation;
   std::optional<std::uint32_t> device;
 };
-
-IntegratorChoice parseIntegrator(const std::string& name) {
-  if (name == "slides") return IntegratorChoice::kSlides;
-  if (name == "path") return IntegratorChoice::kPath;
-  return IntegratorChoice::kAuto;
-}
-
-ToneMap parseToneMap(const std::string& name) {
-  if (name == "aces") return ToneMap::kAces;
-  if (name == "reinhard") return ToneMap::kReinhard;
-  return ToneMap::kClamp;
-}
 
 // The figures the command prints, for scripts (tools/speed_vs_error.py): seconds, counts and what was rendered.
 struct RenderReport {
@@ -81,7 +64,7 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
                  const Device& device, const Renderer& renderer, const RenderReport& r) {
   const nlohmann::ordered_json report = {
       {"scene", scene.name},
-      {"scene_file", o.scene},
+      {"scene_file", o.request.path},
       {"width", o.settings.width},
       {"height", o.settings.height},
       {"spp", o.spp},
@@ -154,78 +137,18 @@ void writeImages(const RenderOptions& o, const Image& image) {
   attempt(o.pngPath, [&] { writePng(o.pngPath, image, o.exposure, parseToneMap(o.toneMap)); });
 }
 
-void requireExtension(const std::string& option, const std::string& path, const std::string& extension) {
-  if (std::filesystem::path(path).extension() != extension) {
-    throw Error("raylab render: " + option + ": '" + path + "' must end in " + extension, kExitUsage);
-  }
-}
-
-}  // namespace
-
-int runRender(int argc, char** argv) {
-  RenderOptions o;
-  ArgParser args("raylab render", "[SCENE] [options]",
-                 "Renders SCENE (glTF 2.0) or, without SCENE, the built-in default scene, and writes a linear\n"
-                 "OpenEXR image and a tone-mapped sRGB PNG. The same command gives a bit-identical image on\n"
-                 "the same device. Without --out and --png it writes out/<scene>.exr and out/<scene>.png.");
-  args.positional("SCENE", &o.scene, "a .gltf or .glb file (default: the built-in scene)");
-  args.option("--camera", &o.camera, "NAME", "the glTF camera (or its node) to render from (default: the first)");
-  args.flag("--allow-outside-uris", &o.allowOutsideUris,
-            "let the scene's buffers and images lie outside its directory (only for files you trust)");
-  args.option("--width", &o.settings.width, "image width in pixels (default 640)", 1, kMaxImageSide);
-  args.option("--height", &o.settings.height, "image height in pixels (default 360)", 1, kMaxImageSide);
-  args.option("--spp", &o.spp, "samples per pixel (default 16)", 1, 1u << 20);
-  args.option("--seed", &o.settings.seed, "random seed of the sample pattern (default 0)", 0, UINT32_MAX);
-  args.option("--max-depth", &o.settings.maxDepth, "bounces after the primary hit (mirror, glass; default 8)", 0, 64);
-  args.flag("--no-aa", &o.noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
-  args.option("--out", &o.exrPath, "FILE.exr",
-              "write the linear image here (OpenEXR, float32 RGBA; default out/<scene>.exr)");
-  args.option("--png", &o.pngPath, "FILE.png", "write the tone-mapped image here (sRGB, 8-bit; default out/<scene>.png)");
-  args.flag("--no-exr", &o.noExr, "write no OpenEXR image");
-  args.flag("--no-png", &o.noPng, "write no PNG image");
-  args.option("--heatmap", &o.heatmapPath, "FILE.png",
-              "also write the cost of every pixel (device clock ticks per sample, VK_KHR_shader_clock) in false colour, "
-              "and its raw values as FILE.exr; clocks the megakernel on ray queries");
-  args.option("--report", &o.reportPath, "FILE.json",
-              "also write the printed figures (times, rays, kernel, device) here as JSON, for scripts");
-  args.option("--exposure", &o.exposure, "exposure of the PNG in stops (default 0)", -20.0f, 20.0f);
-  args.choice("--tonemap", &o.toneMap, {"clamp", "reinhard", "aces"}, "tone curve of the PNG (default clamp)");
-  args.choice("--integrator", &o.integrator, {"auto", "slides", "path"},
-              "slides: equation 2 of the slides (mirror weight, direct light); path: the rendering equation; "
-              "auto (default): path when the scene has an emissive surface or an environment image");
-  args.option("--env", &o.environment, "FILE.exr",
-              "light the scene with this equirectangular HDR image (+Y up), replacing the scene's own");
-  args.option("--env-strength", &o.environmentStrength, "multiplies the environment image (default: the scene's, or 1)",
-              0.0f, 1e30f);
-  args.option("--env-rotation", &o.environmentRotation,
-              "turns the environment image about +Y, degrees counter-clockwise seen from above (default: the scene's, or 0)",
-              -360.0f, 360.0f);
-  args.choice("--sampling", &o.sampling, {"mis", "bsdf", "light"},
-              "path integrator: how emitters are estimated, MIS of light and BSDF sampling (default) or one alone");
-  args.flag("--stats", &o.stats, "print which BRDF models and features the kernel was compiled with");
-  args.flag("--all-features", &o.allFeatures, "compile every model and feature in, not only what the scene uses");
-  args.choice("--fresnel", &o.fresnel, {"exact", "schlick"},
-              "Fresnel term of glass: exact (default) or Schlick's approximation (faster, less accurate)");
-  addBackendOption(args, &o.backend);
-  args.choice("--schedule", &o.schedule, {"auto", "megakernel", "wavefront"},
-              "how paths are traced: megakernel (a lane per pixel until its path ends) or wavefront (one segment of "
-              "every live path per dispatch; the path integrator on ray queries only); auto (default): the "
-              "wavefront for path kernels in closed scenes (no environment image, black background), where it "
-              "measured faster; the image is the same");
-  args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
-  if (!args.parse(argc, argv)) return kExitOk;
+// The render the options ask for; `o` by value: defaults are filled in.
+void render(RenderOptions o) {
   o.settings.jitter = !o.noAntialiasing;
-
   if (!o.exrPath.empty() && o.noExr) throw Error("raylab render: --out and --no-exr contradict each other", kExitUsage);
   if (!o.pngPath.empty() && o.noPng) throw Error("raylab render: --png and --no-png contradict each other", kExitUsage);
-  if (!o.exrPath.empty()) requireExtension("--out", o.exrPath, ".exr");
-  if (!o.pngPath.empty()) requireExtension("--png", o.pngPath, ".png");
-  if (!o.reportPath.empty()) requireExtension("--report", o.reportPath, ".json");
-  if (!o.heatmapPath.empty()) requireExtension("--heatmap", o.heatmapPath, ".png");
+  if (!o.exrPath.empty()) requireExtension("raylab render", "--out", o.exrPath, ".exr");
+  if (!o.pngPath.empty()) requireExtension("raylab render", "--png", o.pngPath, ".png");
+  if (!o.reportPath.empty()) requireExtension("raylab render", "--report", o.reportPath, ".json");
+  if (!o.heatmapPath.empty()) requireExtension("raylab render", "--heatmap", o.heatmapPath, ".png");
   o.settings.heatmap = !o.heatmapPath.empty();
   // Each output has its own default, so giving one never suppresses the other.
-  const SceneRequest request{o.scene, o.camera, o.allowOutsideUris, o.environment, o.environmentStrength,
-                             o.environmentRotation};
+  const SceneRequest& request = o.request;
   if (o.exrPath.empty() && !o.noExr) o.exrPath = "out/" + sceneName(request) + ".exr";
   if (o.pngPath.empty() && !o.noPng) o.pngPath = "out/" + sceneName(request) + ".png";
   if (o.exrPath.empty() && o.pngPath.empty() && o.reportPath.empty() && o.heatmapPath.empty()) {
@@ -244,7 +167,7 @@ int runRender(int argc, char** argv) {
   Scene scene = loadScene(request);
   KernelFeatures kernel = o.allFeatures ? allFeatures() : featuresOf(scene);
   kernel.schlickFresnel = o.fresnel == "schlick";
-  kernel.integrator = chooseIntegrator(scene, parseIntegrator(o.integrator));
+  kernel.integrator = chooseIntegrator(scene, parseIntegratorChoice(o.integrator));
   kernel.sampling = o.sampling == "bsdf" ? gpu::kSamplingBsdf : o.sampling == "light" ? gpu::kSamplingLight : gpu::kSamplingMis;
   o.settings.kernel = kernel;
 
@@ -333,7 +256,53 @@ int runRender(int argc, char** argv) {
   }
   destroyRenderer(gpu.device, renderer);
   destroyGpuScene(gpu.device, gpuScene);
-  return kExitOk;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& raylab) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* command = addCommand(
+      raylab, "render",
+      "render a scene offscreen to OpenEXR and PNG\n"
+      "Renders SCENE (glTF 2.0) or, without SCENE, the built-in default scene, and writes a linear OpenEXR image "
+      "and a tone-mapped sRGB PNG. The same command gives a bit-identical image on the same device. Without --out "
+      "and --png it writes out/<scene>.exr and out/<scene>.png.",
+      [o] {
+        render(*o);
+        return kExitOk;
+      });
+  addSceneOptions(command, o->request);
+  addImageSizeOptions(command, o->settings.width, o->settings.height, "image");
+  addCount(command, "--spp", o->spp, "samples per pixel", 1, 1u << 20);
+  addSampleOptions(command, o->settings);
+  addFlag(command, "--no-aa", o->noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
+  addText(command, "--out", o->exrPath, "FILE.exr",
+          "write the linear image here (OpenEXR, float32 RGBA; default out/<scene>.exr)");
+  addText(command, "--png", o->pngPath, "FILE.png", "write the tone-mapped image here (sRGB, 8-bit; default out/<scene>.png)");
+  addFlag(command, "--no-exr", o->noExr, "write no OpenEXR image");
+  addFlag(command, "--no-png", o->noPng, "write no PNG image");
+  addText(command, "--heatmap", o->heatmapPath, "FILE.png",
+          "also write the cost of every pixel (device clock ticks per sample, VK_KHR_shader_clock) in false colour, "
+          "and its raw values as FILE.exr; clocks the megakernel on ray queries");
+  addText(command, "--report", o->reportPath, "FILE.json",
+          "also write the printed figures (times, rays, kernel, device) here as JSON, for scripts");
+  addToneOptions(command, o->exposure, o->toneMap, "the PNG");
+  addIntegratorOption(command, o->integrator);
+  addChoice(command, "--sampling", o->sampling, {"mis", "bsdf", "light"},
+            "path integrator: how emitters are estimated, MIS of light and BSDF sampling, or one alone");
+  addFlag(command, "--stats", o->stats,
+          "print the kernel variant (models, features), the backend and schedule, and the lane utilisation");
+  addFlag(command, "--all-features", o->allFeatures, "compile every model and feature in, not only what the scene uses");
+  addChoice(command, "--fresnel", o->fresnel, {"exact", "schlick"},
+            "Fresnel term of glass: exact, or Schlick's approximation (faster, less accurate)");
+  addBackendOption(command, o->backend);
+  addChoice(command, "--schedule", o->schedule, {"auto", "megakernel", "wavefront"},
+            "how paths are traced: megakernel (a lane per pixel until its path ends) or wavefront (one segment of "
+            "every live path per dispatch; the path integrator on ray queries only); auto: the wavefront for path "
+            "kernels in closed scenes (no environment image, black background), where it measured faster; the "
+            "image is the same");
+  addDeviceOption(command, o->device);
 }
 
 }  // namespace raylab

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "args.h"
+#include "cli.h"
 #include "commands.h"
 #include "gpu_session.h"
 #include "image/contact_sheet.h"
@@ -44,8 +44,7 @@ struct SweepOptions {
   std::string gltfPath;
   std::uint32_t cell = 192;  // labels as long as "alpha_x = 0.00139" fit at twice the font's size
   std::uint32_t spp = 64;
-  std::uint32_t seed = 0;
-  std::uint32_t maxDepth = 8;
+  RenderSettings render;     // --seed and --max-depth; the size is the cell's
   float exposure = 0.0f;
   std::string toneMap = "clamp";
   std::optional<std::uint32_t> device;
@@ -58,23 +57,6 @@ struct SweepOptions {
 
 std::string rangeText(const ParamInfo& param) {
   return "[" + formatSweepValue(param.min) + ", " + formatSweepValue(param.max) + "]";
-}
-
-// ArgParser keeps one value per option; --set may be given many times, so it is taken out of argv first.
-std::vector<char*> takeSets(int argc, char** argv, std::vector<std::string>& sets) {
-  std::vector<char*> rest;
-  for (int i = 0; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--set") {
-      if (i + 1 >= argc) usage("--set: missing value (K=V)");
-      sets.emplace_back(argv[++i]);
-    } else if (arg.rfind("--set=", 0) == 0) {
-      sets.push_back(arg.substr(6));
-    } else {
-      rest.push_back(argv[i]);
-    }
-  }
-  return rest;
 }
 
 // A finite number, or a usage error naming the option.
@@ -167,12 +149,6 @@ SweepSpec validatedSpec(const SweepOptions& o) {
   return spec;
 }
 
-ToneMap parseToneMap(const std::string& name) {
-  if (name == "aces") return ToneMap::kAces;
-  if (name == "reinhard") return ToneMap::kReinhard;
-  return ToneMap::kClamp;
-}
-
 // Renders every cell and returns them in order. One render per cell, not one render of the whole row: each
 // sphere is rendered alone, at the same place, under the same camera and light, so that every sphere is seen
 // and lit from exactly the same directions, as on the slides, and differences between cells come from the
@@ -186,11 +162,9 @@ std::vector<Image> renderCells(const SweepOptions& o, const SweepScene& sweep) {
   Renderer renderer;
   std::vector<Image> cells;
   try {
-    RenderSettings settings;
+    RenderSettings settings = o.render;
     settings.width = o.cell;
     settings.height = o.cell;
-    settings.seed = o.seed;
-    settings.maxDepth = o.maxDepth;
     settings.backend = chooseBackend(gpu.device, parseBackendChoice(o.backend));
     renderer = createRenderer(gpu.device, gpuScene, scene, settings);
     const std::uint32_t count = std::uint32_t(sweep.values.size());
@@ -226,40 +200,8 @@ std::vector<Image> renderCells(const SweepOptions& o, const SweepScene& sweep) {
   return cells;
 }
 
-}  // namespace
-
-int runSweep(int argc, char** argv) {
-  SweepOptions o;
-  std::vector<char*> rest = takeSets(argc, argv, o.sets);
-  std::string unusedSet;  // declared for --help only: takeSets has already consumed every --set
-  ArgParser args(kCommand, "--model M --param P [options]",
-                 "Renders a row of spheres sweeping one parameter of one BRDF model, like the figures of the\n"
-                 "original slides, into a contact sheet: one cell per value, each labelled, under a title line.\n"
-                 "Every sphere is seen and lit from the same directions (upper front left, one point light).\n"
-                 "Writes FILE.png (tone-mapped, with text) and FILE.exr beside it (linear cells, no text).\n"
-                 "--gltf writes the sweep's scene instead (and also renders when --out is given).\n"
-                 "Models and parameters are those of `raylab brdf` and docs/brdfs.md.");
-  args.option("--model", &o.model, "M", "the BRDF model: " + modelNames());
-  args.option("--param", &o.param, "P", "the parameter to sweep (one of the model's, or delta)");
-  args.option("--from", &o.from, "X", "first value (default: the parameter's minimum)");
-  args.option("--to", &o.to, "X", "last value (default: the parameter's maximum)");
-  args.option("--steps", &o.steps, "number of spheres (default 8)", 2, 64);
-  args.flag("--log", &o.log, "geometric steps (default for exponents and roughnesses)");
-  args.flag("--linear", &o.linear, "linear steps (default for the others)");
-  args.option("--set", &unusedSet, "K=V",
-              "another parameter of the model, RGB as r/g/b (repeatable), e.g. --set rho_d=0.2/0.1/0.05");
-  args.option("--out", &o.pngPath, "FILE.png", "the contact sheet (default out/sweep_<model>_<param>.png)");
-  args.option("--gltf", &o.gltfPath, "FILE.gltf", "write the sweep's scene as glTF 2.0");
-  args.option("--cell", &o.cell, "cell size in pixels (default 192)", 16, 2048);
-  args.option("--spp", &o.spp, "samples per pixel (default 64)", 1, 1u << 16);
-  args.option("--seed", &o.seed, "random seed of the sample pattern", 0, UINT32_MAX);
-  args.option("--max-depth", &o.maxDepth, "bounces after the primary hit (mirror, glass)", 0, 64);
-  args.option("--exposure", &o.exposure, "exposure of the PNG in stops", -20.0f, 20.0f);
-  args.choice("--tonemap", &o.toneMap, {"clamp", "reinhard", "aces"}, "tone curve of the PNG (default clamp)");
-  addBackendOption(args, &o.backend);
-  args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
-  if (!args.parse(int(rest.size()), rest.data())) return kExitOk;
-
+// The sweep the options ask for; `o` by value: defaults are filled in.
+void sweep(SweepOptions o) {
   const SweepSpec spec = validatedSpec(o);
   const bool render = o.gltfPath.empty() || !o.pngPath.empty();
   if (o.pngPath.empty()) o.pngPath = "out/sweep_" + spec.model + "_" + spec.param + ".png";
@@ -282,7 +224,7 @@ int runSweep(int argc, char** argv) {
     writeSweepGltf(sweep, o.gltfPath);
     std::printf("wrote %s\n", o.gltfPath.c_str());
   }
-  if (!render) return kExitOk;
+  if (!render) return;
 
   const std::vector<Image> cells = renderCells(o, sweep);
   const std::string title = sweepTitle(sweep);
@@ -294,7 +236,42 @@ int runSweep(int argc, char** argv) {
   writePng(o.pngPath, annotateContactSheet(layout, sheet, o.exposure, parseToneMap(o.toneMap), title, labels));
   std::printf("%s\nwrote %s (%ux%u)\nwrote %s\n", title.c_str(), o.pngPath.c_str(), layout.width, layout.height,
               exrPath.c_str());
-  return kExitOk;
+}
+
+}  // namespace
+
+void addSweepCommand(CLI::App& raylab) {
+  auto o = std::make_shared<SweepOptions>();
+  CLI::App* command = addCommand(
+      raylab, "sweep",
+      "render a parameter sweep of one BRDF model into a labelled contact sheet\n"
+      "Renders a row of spheres sweeping one parameter of one BRDF model, like the figures of the original "
+      "slides, into a contact sheet: one cell per value, each labelled, under a title line. Every sphere is seen "
+      "and lit from the same directions (upper front left, one point light). Writes FILE.png (tone-mapped, with "
+      "text) and FILE.exr beside it (linear cells, no text). --gltf writes the sweep's scene instead (and also "
+      "renders when --out is given). Models and parameters are those of `raylab brdf` and docs/brdfs.md.",
+      [o] {
+        sweep(*o);
+        return kExitOk;
+      });
+  addText(command, "--model", o->model, "M", "the BRDF model: " + modelNames());
+  addText(command, "--param", o->param, "P", "the parameter to sweep (one of the model's, or delta)");
+  addText(command, "--from", o->from, "X", "first value (default: the parameter's minimum)");
+  addText(command, "--to", o->to, "X", "last value (default: the parameter's maximum)");
+  addCount(command, "--steps", o->steps, "number of spheres", 2, 64);
+  addFlag(command, "--log", o->log, "geometric steps (default for exponents and roughnesses)");
+  addFlag(command, "--linear", o->linear, "linear steps (default for the others)");
+  command->add_option("--set", o->sets, "another parameter of the model, RGB as r/g/b (repeatable), e.g. --set "
+                                        "rho_d=0.2/0.1/0.05")
+      ->type_name("K=V");
+  addText(command, "--out", o->pngPath, "FILE.png", "the contact sheet (default out/sweep_<model>_<param>.png)");
+  addText(command, "--gltf", o->gltfPath, "FILE.gltf", "write the sweep's scene as glTF 2.0");
+  addCount(command, "--cell", o->cell, "cell size in pixels", 16, 2048);
+  addCount(command, "--spp", o->spp, "samples per pixel", 1, 1u << 16);
+  addSampleOptions(command, o->render);
+  addToneOptions(command, o->exposure, o->toneMap, "the PNG");
+  addBackendOption(command, o->backend);
+  addDeviceOption(command, o->device);
 }
 
 }  // namespace raylab

@@ -4,9 +4,8 @@
 #include <optional>
 #include <string>
 
-#include "args.h"
+#include "cli.h"
 #include "commands.h"
-#include "gpu_session.h"
 #include "scene/load_scene.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -21,96 +20,44 @@ bool hasExtension(const std::string& path, const std::string& extension) {
   return std::filesystem::path(path).extension() == extension;
 }
 
-void requireExtension(const std::string& option, const std::string& path, const std::string& extension) {
-  if (std::filesystem::path(path).extension() != extension) {
-    throw Error("raylab view: " + option + ": '" + path + "' must end in " + extension, kExitUsage);
-  }
-}
-
-ToneMap parseToneMap(const std::string& name) {
-  if (name == "aces") return ToneMap::kAces;
-  if (name == "reinhard") return ToneMap::kReinhard;
-  return ToneMap::kClamp;
-}
-
-}  // namespace
-
-int runView(int argc, char** argv) {
-  ViewerOptions o;
-  std::string scenePath;
-  std::string camera;
+// What `raylab view` was given, before it becomes ViewerOptions.
+struct ViewCommandOptions {
+  ViewerOptions viewer;
+  SceneRequest request;
   std::string scriptPath;
   std::string toneMap = "clamp";
   std::string integrator = "auto";
   std::string backend = "auto";
-  std::string environment;
-  std::optional<float> environmentStrength;
-  std::optional<float> environmentRotation;
   float targetMs = 50.0f;
   bool noAntialiasing = false;
-  bool allowOutsideUris = false;
   bool noPanel = false;
   std::optional<std::uint32_t> frames;
-  ArgParser args("raylab view", "[SCENE] [options]",
-                 "Opens a window on SCENE (glTF 2.0) or, without SCENE, the built-in default scene, and renders\n"
-                 "it with the same kernel as `raylab render`, progressively: while the view changes it traces a\n"
-                 "reduced resolution sized to hold --target-ms per frame, and when still it refines every pixel\n"
-                 "at full resolution. Needs an X11 display; headless, run it under `xvfb-run -a`.\n"
-                 "Controls (docs/viewer.md): left drag orbit, shift+left or middle drag pan, wheel zoom, right\n"
-                 "drag look + WASD/QE fly, R/Home reset view, F1/Tab panel, F12/P screenshot, Esc quit.");
-  args.positional("SCENE", &scenePath, "a .gltf or .glb file (default: the built-in scene)");
-  args.option("--camera", &camera, "NAME", "the scene's camera to start from (default: its first)");
-  args.flag("--allow-outside-uris", &allowOutsideUris,
-            "let the scene's buffers and images lie outside its directory (only for files you trust)");
-  args.option("--width", &o.width, "window width in pixels", 8, 16384);
-  args.option("--height", &o.height, "window height in pixels", 8, 16384);
-  args.option("--seed", &o.render.seed, "random seed of the sample pattern", 0, UINT32_MAX);
-  args.option("--max-depth", &o.render.maxDepth, "bounces after the primary hit (mirror, glass)", 0, 64);
-  args.choice("--integrator", &integrator, {"auto", "slides", "path"},
-              "as raylab render: slides, path, or auto (default: path when the scene has an emissive surface or "
-              "an environment image)");
-  args.option("--env", &environment, "FILE.exr", "as raylab render: light the scene with this HDR image (+Y up)");
-  args.option("--env-strength", &environmentStrength, "multiplies the environment image", 0.0f, 1e30f);
-  args.option("--env-rotation", &environmentRotation, "turns the environment image about +Y, degrees", -360.0f, 360.0f);
-  args.flag("--no-aa", &noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
-  args.option("--target-ms", &targetMs, "frame time to hold while the view changes", 5.0f, 1000.0f);
-  args.option("--spp-limit", &o.sppLimit, "stop refining at this many samples per pixel; 0: never", 0, 1u << 20);
-  args.option("--exposure", &o.exposure, "display exposure in stops", -20.0f, 20.0f);
-  args.choice("--tonemap", &toneMap, {"clamp", "reinhard", "aces"}, "display tone curve (default clamp)");
-  args.flag("--no-panel", &noPanel, "start with the panel hidden (F1 shows it)");
-  args.option("--frames", &frames, "run N frames and exit; each frame without a change adds one full pass");
-  args.option("--script", &scriptPath, "FILE", "replay camera and parameter changes (format in docs/viewer.md)");
-  args.option("--screenshot", &o.screenshot, "FILE.exr|FILE.png",
-              "save the last frame's image: the EXR and the PNG, the one not named beside the other");
-  args.option("--png", &o.screenshotPng, "FILE.png", "where --screenshot FILE.exr writes its PNG");
-  args.option("--capture-window", &o.windowCapture, "FILE.png",
-              "save the last frame's window, panel included (with --frames)");
-  addBackendOption(args, &backend);
-  args.option("--device", &o.device, "Vulkan device index from `raylab devices` (default: best capable)");
-  if (!args.parse(argc, argv)) return kExitOk;
-  o.backend = parseBackendChoice(backend);
+};
+
+void view(ViewCommandOptions command) {
+  ViewerOptions& o = command.viewer;
+  const std::optional<std::uint32_t>& frames = command.frames;
+  o.backend = parseBackendChoice(command.backend);
 
   if (!o.screenshot.empty() && !hasExtension(o.screenshot, ".exr") && !hasExtension(o.screenshot, ".png")) {
     throw Error("raylab view: --screenshot: '" + o.screenshot + "' must end in .exr or .png", kExitUsage);
   }
-  if (!o.screenshotPng.empty()) requireExtension("--png", o.screenshotPng, ".png");
+  if (!o.screenshotPng.empty()) requireExtension("raylab view", "--png", o.screenshotPng, ".png");
   if (!o.screenshotPng.empty() && !hasExtension(o.screenshot, ".exr")) {
     throw Error("raylab view: --png names the PNG of --screenshot FILE.exr, which is missing", kExitUsage);
   }
-  if (!o.windowCapture.empty()) requireExtension("--capture-window", o.windowCapture, ".png");
+  if (!o.windowCapture.empty()) requireExtension("raylab view", "--capture-window", o.windowCapture, ".png");
   if (!o.windowCapture.empty() && !frames) {
     throw Error("raylab view: --capture-window needs --frames (it captures the last frame)", kExitUsage);
   }
   if (frames && *frames == 0) throw Error("raylab view: --frames must be at least 1", kExitUsage);
   o.frames = frames;
-  o.targetMs = targetMs;
-  o.toneMap = parseToneMap(toneMap);
-  o.render.jitter = !noAntialiasing;
-  o.integrator = integrator == "path" ? IntegratorChoice::kPath
-                 : integrator == "slides" ? IntegratorChoice::kSlides
-                                          : IntegratorChoice::kAuto;
-  o.panel = !noPanel;
-  if (!scriptPath.empty()) o.script = loadScript(scriptPath);
+  o.targetMs = command.targetMs;
+  o.toneMap = parseToneMap(command.toneMap);
+  o.render.jitter = !command.noAntialiasing;
+  o.integrator = parseIntegratorChoice(command.integrator);
+  o.panel = !command.noPanel;
+  if (!command.scriptPath.empty()) o.script = loadScript(command.scriptPath);
   // With --frames N the viewer exits after frame N - 1: a later event would never happen.
   for (const ScriptEvent& event : o.script) {
     if (frames && event.frame >= *frames) {
@@ -134,10 +81,48 @@ int runView(int argc, char** argv) {
     checkOutputPath(paths.png, event.where);
   }
 
-  const Scene scene = loadScene({scenePath, camera, allowOutsideUris, environment, environmentStrength,
-                                 environmentRotation});
-  runViewer(scene, o);
-  return kExitOk;
+  runViewer(loadScene(command.request), o);
+}
+
+}  // namespace
+
+void addViewCommand(CLI::App& raylab) {
+  auto o = std::make_shared<ViewCommandOptions>();
+  CLI::App* command = addCommand(
+      raylab, "view",
+      "open an interactive window on a scene (X11; headless: xvfb-run -a)\n"
+      "Opens a window on SCENE (glTF 2.0) or, without SCENE, the built-in default scene, and renders it with the "
+      "same kernel as `raylab render`, progressively: while the view changes it traces a reduced resolution sized "
+      "to hold --target-ms per frame, and when still it refines every pixel at full resolution. Needs an X11 "
+      "display; headless, run it under `xvfb-run -a`.\n"
+      "Controls (docs/viewer.md): left drag orbit, shift+left or middle drag pan, wheel zoom, right drag look + "
+      "WASD/QE fly, R/Home reset view, F1/Tab panel, F12/P screenshot, Esc quit.",
+      [o] {
+        view(*o);
+        return kExitOk;
+      });
+  addSceneOptions(command, o->request);
+  addImageSizeOptions(command, o->viewer.width, o->viewer.height, "image", 8);
+  addSampleOptions(command, o->viewer.render);
+  addIntegratorOption(command, o->integrator);
+  addFlag(command, "--no-aa", o->noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
+  addNumber(command, "--target-ms", o->targetMs, "frame time to hold while the view changes", 5.0f, 1000.0f);
+  addCount(command, "--spp-limit", o->viewer.sppLimit, "stop refining at this many samples per pixel; 0: never", 0,
+           1u << 20);
+  addToneOptions(command, o->viewer.exposure, o->toneMap, "the display");
+  addFlag(command, "--no-panel", o->noPanel, "start with the panel hidden (F1 shows it)");
+  command->add_option_function<std::uint32_t>(
+             "--frames", [o](const std::uint32_t& n) { o->frames = n; },
+             "run N frames and exit; each frame without a change adds one full pass")
+      ->type_name("N");
+  addText(command, "--script", o->scriptPath, "FILE", "replay camera and parameter changes (format in docs/viewer.md)");
+  addText(command, "--screenshot", o->viewer.screenshot, "FILE.exr|FILE.png",
+          "save the last frame's image: the EXR and the PNG, the one not named beside the other");
+  addText(command, "--png", o->viewer.screenshotPng, "FILE.png", "where --screenshot FILE.exr writes its PNG");
+  addText(command, "--capture-window", o->viewer.windowCapture, "FILE.png",
+          "save the last frame's window, panel included (with --frames)");
+  addBackendOption(command, o->backend);
+  addDeviceOption(command, o->viewer.device);
 }
 
 }  // namespace raylab

@@ -1,14 +1,15 @@
-// raylab's subcommands. Each parses its own arguments (argv starts after the command name) and returns the
-// process exit code; errors travel as raylab::Error.
+// raylab's commands on the command line (cli.h): each adds itself, its options and what it runs to the tree.
 #pragma once
+
+#include <CLI/CLI.hpp>
 
 namespace raylab {
 
-int runRender(int argc, char** argv);
-int runDevices(int argc, char** argv);
-int runBench(int argc, char** argv);
-int runView(int argc, char** argv);
-int runBrdf(int argc, char** argv);
-int runSweep(int argc, char** argv);
+void addRenderCommand(CLI::App& raylab);
+void addSweepCommand(CLI::App& raylab);
+void addViewCommand(CLI::App& raylab);
+void addBrdfCommands(CLI::App& raylab);
+void addBenchCommands(CLI::App& raylab);
+void addDevicesCommand(CLI::App& raylab);
 
 }  // namespace raylab

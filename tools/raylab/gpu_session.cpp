@@ -17,17 +17,6 @@ GpuSession::GpuSession(std::optional<std::uint32_t> deviceIndex, bool quiet) {
   }
 }
 
-void addBackendOption(ArgParser& args, std::string* value) {
-  args.choice("--backend", value, {"auto", "query", "pipeline"},
-              "query: compute kernels with ray queries; pipeline: a ray-tracing pipeline (raygen, closest-hit, "
-              "miss and intersection programs); auto (default): ray queries where the device has them");
-}
-
-void addBenchBackendOption(ArgParser& args, std::string* value) {
-  args.choice("--backend", value, {"all", "auto", "query", "pipeline"},
-              "all (default): every backend the device offers, side by side; or only auto, query or pipeline");
-}
-
 std::vector<Backend> backendsToCompare(const Device& device, const std::string& choice) {
   if (choice != "all") return {chooseBackend(device, parseBackendChoice(choice))};
   std::vector<Backend> backends;

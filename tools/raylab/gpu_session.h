@@ -5,7 +5,6 @@
 #include <string>
 #include <vector>
 
-#include "args.h"
 #include "render/backend.h"
 #include "vk/device.h"
 
@@ -22,11 +21,7 @@ struct GpuSession {
   GpuSession& operator=(const GpuSession&) = delete;
 };
 
-// --backend auto|query|pipeline, the same on every command that traces.
-void addBackendOption(ArgParser& args, std::string* value);
-// The benchmarks' --backend: also `all` (their default), every backend the device offers, to compare them in
-// one run; backendsToCompare resolves it.
-void addBenchBackendOption(ArgParser& args, std::string* value);
+// The benchmarks' --backend (cli.h): `all` is every backend the device offers, to compare them in one run.
 std::vector<Backend> backendsToCompare(const Device& device, const std::string& choice);
 
 }  // namespace raylab
