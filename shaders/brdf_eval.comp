@@ -9,7 +9,7 @@
 #include "brdf/bsdf.glsl"
 #include "common/frame.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kBrdfWorkgroupSize) in;
 
 layout(push_constant) uniform Push { uint caseCount; };
 layout(set = 0, binding = kBindingBrdfCases, scalar) readonly buffer Cases { BrdfEvalCase cases[]; };

@@ -8,7 +8,7 @@
 #include "shared/brdf_eval.h"
 #include "brdf/bsdf.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kBrdfWorkgroupSize) in;
 
 layout(push_constant, scalar) uniform Push { BrdfSampleParams params; };
 layout(set = 0, binding = kBindingBrdfUniforms, scalar) readonly buffer Uniforms { vec3 uniforms[]; };

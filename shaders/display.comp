@@ -8,7 +8,7 @@
 
 #include "shared/display.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = kDisplayWorkgroupSize, local_size_y = kDisplayWorkgroupSize) in;
 
 layout(push_constant, scalar) uniform Push { DisplayParams params; };
 layout(set = 0, binding = kBindingDisplayAccumulation, scalar) readonly buffer Accumulation { vec4 accumulation[]; };

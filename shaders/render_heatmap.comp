@@ -13,7 +13,7 @@
 #include "shared/frame.h"
 #include "kernel/scene_bindings.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = kRenderWorkgroupSize, local_size_y = kRenderWorkgroupSize) in;
 
 layout(push_constant, scalar) uniform Push { FrameParams params; };
 layout(set = 0, binding = kBindingAccumulation, scalar) buffer Accumulation { vec4 accumulation[]; };

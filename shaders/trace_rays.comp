@@ -10,7 +10,7 @@
 #include "shared/frame.h"
 #include "kernel/scene_bindings.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kProbeWorkgroupSize) in;
 
 layout(push_constant, scalar) uniform Push { ProbeParams params; };
 layout(set = 0, binding = kBindingProbeRays, scalar) readonly buffer Rays { ProbeRay rays[]; };

@@ -11,9 +11,7 @@ namespace raylab {
 
 namespace {
 
-constexpr std::uint32_t kWorkgroupSize = 64;  // local_size_x of brdf_eval.comp and brdf_sample.comp
-
-std::uint32_t workgroups(std::uint32_t count) { return (count + kWorkgroupSize - 1) / kWorkgroupSize; }
+std::uint32_t workgroups(std::uint32_t count) { return (count + gpu::kBrdfWorkgroupSize - 1) / gpu::kBrdfWorkgroupSize; }
 
 void checkCapacity(const char* what, std::size_t count, std::uint32_t capacity) {
   if (count > capacity) {

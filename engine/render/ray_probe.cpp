@@ -12,10 +12,10 @@ namespace raylab {
 
 namespace {
 
-// The probe once per backend: trace_rays.comp (local size 64), or its raygen with the probe's closest-hit and
+// The probe once per backend: trace_rays.comp, or its raygen with the probe's closest-hit and
 // miss programs (the hit goes back to the raygen) and the shadow rays' miss program.
 const TracePrograms kProbePrograms{
-    "trace_rays.comp", 64, 1,
+    "trace_rays.comp", gpu::kProbeWorkgroupSize, 1,
     RayTracingProgram{"trace_rays.rgen",
                       {"probe.rmiss", "shadow.rmiss"},
                       {{"probe.rchit", ""}, {"probe.rchit", "sphere.rint"}},

@@ -17,11 +17,11 @@ namespace raylab {
 
 namespace {
 
-// The render programs, once per backend: render.comp (local size 8 x 8), or the pipeline's raygen, the path
+// The render programs, once per backend: render.comp, or the pipeline's raygen, the path
 // and shadow miss programs, and closest hit on both hit groups, the spheres' with their intersection program.
 // Shadow rays, traced from the closest-hit program, are the one level of recursion.
 const TracePrograms kRenderPrograms{
-    "render.comp", 8, 8,
+    "render.comp", gpu::kRenderWorkgroupSize, gpu::kRenderWorkgroupSize,
     RayTracingProgram{"render.rgen",
                       {"render.rmiss", "shadow.rmiss"},
                       {{"render.rchit", ""}, {"render.rchit", "sphere.rint"}},
@@ -37,7 +37,7 @@ SpecializationConstants specializationFor(const KernelFeatures& kernel) {
 }
 
 // The render kernel clocking every pixel (render_heatmap.comp): ray queries, the megakernel.
-const TracePrograms kHeatmapPrograms{"render_heatmap.comp", 8, 8, {}};
+const TracePrograms kHeatmapPrograms{"render_heatmap.comp", gpu::kRenderWorkgroupSize, gpu::kRenderWorkgroupSize, {}};
 
 // The scene, the accumulation and the counters; on the ray-query backend also the wavefront's buffers, so that
 // the render kernel and the wavefront share one layout and one set; with the heat map its clock ticks.

@@ -12,7 +12,7 @@ namespace raylab {
 
 namespace {
 
-constexpr std::uint32_t kWorkgroupSize = 8;  // display.comp: local_size 8 x 8
+constexpr std::uint32_t kWorkgroupSize = gpu::kDisplayWorkgroupSize;
 constexpr VkImageLayout kRestingLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
 
 constexpr DescriptorBinding kBindings[] = {

@@ -10,6 +10,8 @@ RL_NAMESPACE_BEGIN
 
 // One row of a CSV: a material and its directions in world space as read (the kernel normalises wi, wo
 // and n and builds the shading frame from n and the tangent hint t). Glass reads only wi and n.
+RL_CONST uint kBrdfWorkgroupSize = 64;  // brdf_eval.comp and brdf_sample.comp
+
 struct BrdfEvalCase {
   MaterialRecord material;
   vec3 wi;

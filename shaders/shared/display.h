@@ -8,6 +8,8 @@
 
 RL_NAMESPACE_BEGIN
 
+RL_CONST uint kDisplayWorkgroupSize = 8;  // display.comp: kDisplayWorkgroupSize squared
+
 // Bindings of display.comp (its own set 0).
 RL_CONST uint kBindingDisplayAccumulation = 0;  // vec4[] radiance sum and sample count, `size` pixels
 RL_CONST uint kBindingDisplayTexels = 1;        // uint[] one 8-bit RGBA or BGRA texel per pixel, `size` pixels

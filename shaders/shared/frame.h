@@ -6,6 +6,10 @@
 
 RL_NAMESPACE_BEGIN
 
+// Workgroup sizes of the compute entry points, used by their layout qualifiers and by the host's dispatches.
+RL_CONST uint kRenderWorkgroupSize = 8;  // render.comp, render_heatmap.comp: kRenderWorkgroupSize squared
+RL_CONST uint kProbeWorkgroupSize = 64;  // trace_rays.comp
+
 // FrameParams.flags
 RL_CONST uint kFrameJitter = 1;  // jittered sub-pixel positions (anti-aliasing); else pixel centres
 

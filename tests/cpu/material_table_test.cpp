@@ -1,10 +1,13 @@
-// The BRDF parameter table exists once in code (engine/scene/material_params.cpp) and once in the contract
-// the code cites (docs/brdf_contract.md). This test reads the contract's table and requires the two to name
-// the same models with the same parameters, ranges and defaults, so that neither can drift alone.
+// The BRDF parameter table is defined once, in code (engine/brdf_params/material_params.cpp). Three texts repeat
+// it for their readers: the contract the code cites (docs/brdf_contract.md), the model pages (docs/brdfs.md) and
+// the parameter table each GLSL model file opens with (shaders/brdf/<model>.glsl). This test reads all three and
+// requires each to name the same models with the same parameters, ranges and defaults as the code (and the
+// model pages the same log scales), so that none can drift alone.
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <map>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -16,45 +19,132 @@ namespace {
 struct DocParam {
   std::string name;
   double min, max, defaultValue;
+  std::optional<bool> logScale;  // only where the text says
 };
 
-std::map<std::string, std::vector<DocParam>> contractTable() {
-  std::ifstream file(std::string(RAYLAB_SOURCE_DIR) + "/docs/brdf_contract.md");
+using Table = std::map<std::string, std::vector<DocParam>>;
+
+std::string readSource(const std::string& path) {
+  std::ifstream file(std::string(RAYLAB_SOURCE_DIR) + "/" + path);
+  EXPECT_TRUE(file.good()) << path << " cannot be read";
   std::stringstream text;
   text << file.rdbuf();
-  std::map<std::string, std::vector<DocParam>> table;
+  return text.str();
+}
+
+// docs/brdf_contract.md: one row per model, `model` | `name` [min, max] = default, ...
+Table contractTable() {
+  const std::string text = readSource("docs/brdf_contract.md");
+  Table table;
   const std::regex row(R"(^\| `(\w+)` \| (.*) \|$)");
   const std::regex param(R"(`(\w+)` \[([-0-9.e]+), ([-0-9.e]+)\] = ([-0-9.e]+))");
+  std::istringstream lines(text);
   std::string line;
-  while (std::getline(text, line)) {
+  while (std::getline(lines, line)) {
     std::smatch match;
     if (!std::regex_match(line, match, row)) continue;
     std::vector<DocParam>& params = table[match[1]];
     const std::string cells = match[2];
     for (std::sregex_iterator it(cells.begin(), cells.end(), param), end; it != end; ++it) {
-      params.push_back({(*it)[1], std::stod((*it)[2]), std::stod((*it)[3]), std::stod((*it)[4])});
+      params.push_back({(*it)[1], std::stod((*it)[2]), std::stod((*it)[3]), std::stod((*it)[4]), std::nullopt});
     }
   }
   return table;
 }
 
-TEST(MaterialTable, TheContractsTableEqualsTheCodes) {
-  const auto table = contractTable();
-  ASSERT_EQ(table.size(), allModels().size()) << "docs/brdf_contract.md lists another set of models";
+// A row of a parameter table: | name | [min, max] ... | default | meaning |, the name possibly in backticks.
+std::optional<DocParam> parameterRow(const std::string& line) {
+  static const std::regex row(R"(^(?://\s*)?\|\s*`?(\w+)`?\s*\|\s*\[([-0-9.e]+), ([-0-9.e]+)\]([^|]*)\|\s*([-0-9.e]+)\s*\|)");
+  std::smatch match;
+  if (!std::regex_search(line, match, row)) return std::nullopt;
+  const std::string after = match[4];
+  std::optional<bool> logScale;
+  if (after.find("log") != std::string::npos) logScale = true;
+  return DocParam{match[1], std::stod(match[2]), std::stod(match[3]), std::stod(match[5]), logScale};
+}
+
+// docs/brdfs.md: a section per model (or per family: "### `ward`, `ward_duer`, ...") with a parameter table, or
+// "Parameters as `other`".
+Table modelPagesTable() {
+  const std::string text = readSource("docs/brdfs.md");
+  Table table;
+  std::map<std::string, std::string> sameAs;
+  std::vector<std::string> models;  // of the current section
+  const std::regex name("`(\\w+)`");
+  const std::regex alias("Parameters as `(\\w+)`");
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.rfind("## ", 0) == 0) models.clear();
+    if (line.rfind("### ", 0) == 0) {
+      models.clear();
+      const std::string heading = line.substr(0, line.find(" — "));
+      for (std::sregex_iterator it(heading.begin(), heading.end(), name), end; it != end; ++it) {
+        if (findModel((*it)[1].str()) != nullptr) models.push_back((*it)[1]);
+      }
+      continue;
+    }
+    std::smatch match;
+    if (std::regex_search(line, match, alias)) {
+      for (const std::string& model : models) sameAs[model] = match[1];
+    }
+    if (const std::optional<DocParam> param = parameterRow(line)) {
+      for (const std::string& model : models) table[model].push_back(*param);
+    }
+  }
+  for (const auto& [model, other] : sameAs) {
+    if (table[model].empty()) table[model] = table[other];
+  }
+  return table;
+}
+
+// shaders/brdf/<model>.glsl: the table in the file's opening comment.
+Table glslTable() {
+  Table table;
+  for (const ModelInfo& model : allModels()) {
+    std::istringstream lines(readSource("shaders/brdf/" + std::string(model.name) + ".glsl"));
+    std::string line;
+    while (std::getline(lines, line) && line.rfind("//", 0) == 0) {
+      if (const std::optional<DocParam> param = parameterRow(line)) table[std::string(model.name)].push_back(*param);
+    }
+  }
+  return table;
+}
+
+void expectSameAsCode(const Table& table, const std::string& where) {
+  EXPECT_EQ(table.size(), allModels().size()) << where << " lists another set of models";
   for (const ModelInfo& model : allModels()) {
     const auto row = table.find(std::string(model.name));
-    ASSERT_NE(row, table.end()) << model.name << " is missing from docs/brdf_contract.md";
-    ASSERT_EQ(row->second.size(), model.params.size()) << model.name;
+    ASSERT_NE(row, table.end()) << model.name << " is missing from " << where;
+    ASSERT_EQ(row->second.size(), model.params.size()) << where << ": " << model.name;
     for (std::size_t i = 0; i < model.params.size(); ++i) {
       const ParamInfo& code = model.params[i];
       const DocParam& doc = row->second[i];
-      EXPECT_EQ(doc.name, code.name) << model.name;
-      EXPECT_FLOAT_EQ(float(doc.min), code.min) << model.name << "." << code.name;
-      EXPECT_FLOAT_EQ(float(doc.max), code.max) << model.name << "." << code.name;
-      EXPECT_FLOAT_EQ(float(doc.defaultValue), code.defaultValue) << model.name << "." << code.name;
+      EXPECT_EQ(doc.name, code.name) << where << ": " << model.name;
+      EXPECT_FLOAT_EQ(float(doc.min), code.min) << where << ": " << model.name << "." << code.name;
+      EXPECT_FLOAT_EQ(float(doc.max), code.max) << where << ": " << model.name << "." << code.name;
+      EXPECT_FLOAT_EQ(float(doc.defaultValue), code.defaultValue) << where << ": " << model.name << "." << code.name;
+      if (doc.logScale) EXPECT_EQ(*doc.logScale, code.logScale) << where << ": " << model.name << "." << code.name;
     }
   }
 }
+
+TEST(MaterialTable, TheContractsTableEqualsTheCodes) { expectSameAsCode(contractTable(), "docs/brdf_contract.md"); }
+
+TEST(MaterialTable, TheModelPagesTablesEqualTheCodes) {
+  const Table table = modelPagesTable();
+  expectSameAsCode(table, "docs/brdfs.md");
+  // The pages mark log scales: every log parameter of the code says so there.
+  for (const ModelInfo& model : allModels()) {
+    const std::vector<DocParam>& params = table.at(std::string(model.name));
+    for (std::size_t i = 0; i < model.params.size() && i < params.size(); ++i) {
+      EXPECT_EQ(params[i].logScale.value_or(false), model.params[i].logScale)
+          << "docs/brdfs.md: " << model.name << "." << model.params[i].name << " log scale";
+    }
+  }
+}
+
+TEST(MaterialTable, EveryGlslModelFileOpensWithTheCodesTable) { expectSameAsCode(glslTable(), "shaders/brdf/*.glsl"); }
 
 }  // namespace
 }  // namespace raylab::test

@@ -10,6 +10,8 @@
 #include <thread>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cli.h"
 #include "bench_commands.h"
 #include "scene/load_scene.h"
@@ -172,21 +174,24 @@ int benchView(const ViewBenchOptions& o) {
   const unsigned cores = std::thread::hardware_concurrency();
 
   if (json) {
-    std::printf("{\"benchmark\": \"view\", \"scene\": \"%s\", \"backend\": \"%s\", \"cores\": %u, "
-                "\"target_ms\": %.1f, \"spp\": %u, \"load_before\": \"%s\", \"load_after\": \"%s\", \"sizes\": [",
-                scene.name.c_str(), backend.c_str(), cores, targetMs, spp, loadBefore.c_str(), loadAfter.c_str());
-    for (std::size_t i = 0; i < timings.size(); ++i) {
-      const ViewTiming& t = timings[i];
-      std::printf("%s{\"width\": %u, \"height\": %u, \"first_frame_s\": %.4f, \"orbit_median_ms\": %.2f, "
-                  "\"orbit_p90_ms\": %.2f, \"orbit_max_ms\": %.2f, \"preview_mean_pixels\": %.0f, "
-                  "\"still_to_spp_s\": %.3f, \"still_frame_ms\": %.2f, \"overhead_ms\": %.2f, "
-                  "\"ns_per_pixel_sample\": %.1f}",
-                  i == 0 ? "" : ", ", t.size.width, t.size.height, t.firstFrameSeconds,
-                  1e3 * percentile(t.orbitFrameSeconds, 0.5), 1e3 * percentile(t.orbitFrameSeconds, 0.9),
-                  1e3 * percentile(t.orbitFrameSeconds, 1.0), t.meanPreviewPixels, t.stillTo16Seconds,
-                  1e3 * t.stillFrameSeconds, 1e3 * t.overheadSeconds, 1e9 * t.secondsPerPixelSample);
+    nlohmann::ordered_json sizes = nlohmann::ordered_json::array();
+    for (const ViewTiming& t : timings) {
+      sizes.push_back({{"width", t.size.width},
+                       {"height", t.size.height},
+                       {"first_frame_s", t.firstFrameSeconds},
+                       {"orbit_median_ms", 1e3 * percentile(t.orbitFrameSeconds, 0.5)},
+                       {"orbit_p90_ms", 1e3 * percentile(t.orbitFrameSeconds, 0.9)},
+                       {"orbit_max_ms", 1e3 * percentile(t.orbitFrameSeconds, 1.0)},
+                       {"preview_mean_pixels", t.meanPreviewPixels},
+                       {"still_to_spp_s", t.stillTo16Seconds},
+                       {"still_frame_ms", 1e3 * t.stillFrameSeconds},
+                       {"overhead_ms", 1e3 * t.overheadSeconds},
+                       {"ns_per_pixel_sample", 1e9 * t.secondsPerPixelSample}});
     }
-    std::printf("]}\n");
+    const nlohmann::ordered_json report = {{"benchmark", "view"}, {"scene", scene.name},   {"backend", backend},
+                                           {"cores", cores},      {"target_ms", targetMs}, {"spp", spp},
+                                           {"load_before", loadBefore}, {"load_after", loadAfter}, {"sizes", sizes}};
+    std::printf("%s\n", report.dump().c_str());
     return kExitOk;
   }
   std::printf("scene: %s; backend %s; %u cores; target %.0f ms/frame; load average %s before, %s after\n",
