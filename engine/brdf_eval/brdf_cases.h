@@ -1,7 +1,7 @@
 // The CSV files of `raylab brdf eval` (docs/brdf_contract.md, "raylab brdf eval CSV"): cases in, values out.
 //   in:  id,model,params,wi,wo,n,t       params "k=v;k=v" (RGB "r/g/b"), vectors "x y z"; glass may leave wo, t empty
 //   out: id,model,params,wi,wo,n,t,quantity,value
-// Parameters a row does not name take the defaults of engine/scene/material_params.cpp; a single number sets
+// Parameters a row does not name take the defaults of engine/brdf_params/material_params.cpp; a single number sets
 // all three channels of an RGB parameter. Numbers are read as float32, the precision of the device: both
 // backends evaluate exactly those values. Blank lines and lines starting with # are skipped.
 #pragma once

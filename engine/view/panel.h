@@ -1,6 +1,6 @@
 // The viewer's ImGui panel: status line, render settings (integrator included), the environment, the materials
 // (model and parameters, driven by the
-// parameter table of scene/material_params.h) and the lights. It edits plain values and reports what changed;
+// parameter table of brdf_params/material_params.h) and the lights. It edits plain values and reports what changed;
 // the viewer uploads and resets.
 #pragma once
 

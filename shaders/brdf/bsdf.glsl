@@ -1,7 +1,7 @@
 // The one dispatch over the BRDF library, in the local shading frame (z = shading normal; wi towards the
 // light, wo towards the viewer). f excludes the cosine: the caller multiplies by cos_i. Every model is
 // one-sided (0 when wi.z <= 0 or wo.z <= 0) and never NaN, Inf or negative for parameters in the ranges
-// of engine/scene/material_params.cpp. Glass is a delta BSDF: 0 here, see bsdfSampleSpecular and the lobe
+// of engine/brdf_params/material_params.cpp. Glass is a delta BSDF: 0 here, see bsdfSampleSpecular and the lobe
 // flags (bsdfFlags) below.
 #ifndef RAYLAB_BRDF_BSDF_GLSL
 #define RAYLAB_BRDF_BSDF_GLSL

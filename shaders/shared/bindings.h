@@ -6,7 +6,7 @@
 
 RL_NAMESPACE_BEGIN
 
-// Scene: filled once per scene by engine/scene/gpu_scene.cpp.
+// Scene: filled once per scene by engine/render/gpu_scene.cpp.
 RL_CONST uint kBindingTlas = 0;
 RL_CONST uint kBindingInstances = 1;  // InstanceRecord[], indexed by the instance custom index
 RL_CONST uint kBindingPositions = 2;  // vec3[] object-space positions of every mesh, concatenated

@@ -1,4 +1,4 @@
-// Reference materials for the cpu tests, built through the one parameter table (engine/scene/material_params)
+// Reference materials for the cpu tests, built through the one parameter table (engine/brdf_params/material_params)
 // so that names, ranges and defaults are those users get; unnamed parameters keep their defaults.
 #pragma once
 
