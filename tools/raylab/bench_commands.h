@@ -1,7 +1,9 @@
 // The commands below `raylab bench` that live outside cmd_bench.cpp.
 #pragma once
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace raylab {
 

@@ -4,6 +4,7 @@
 // order; and the BRDF library evaluated with 8 models mixed within every group of 8 lanes against sorted by model.
 #include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <random>
 #include <string>
 #include <thread>

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -212,8 +213,7 @@ void addBrdfAlbedoCommand(CLI::App& brdf) {
           "lambert, phong, blinnphong, cooktorrance, ward, ward_duer, ward_gmd, ashikhmin_shirley");
   addText(command, "--params", o->params, "'k=v;k=v'",
           "parameters as in `raylab brdf eval` (RGB as r/g/b); others take defaults");
-  addText(command, "--angles", o->angles, "LIST", "theta_o in degrees, in [0, 90), comma-separated")
-      ->capture_default_str();
+  addText(command, "--angles", o->angles, "LIST", "theta_o in degrees, in [0, 90), comma-separated", true);
   addNumber(command, "--phi", o->phiDeg, "azimuth of wo from the tangent, degrees", 0.0f, 360.0f);
   addChoice(command, "--backend", o->backend, {"cpu", "gpu"}, "reference cubature or device Monte Carlo");
   addCount(command, "--samples", o->samples, "gpu backend: samples per angle", 1, 1u << 22);

@@ -1,7 +1,9 @@
 // The commands below `raylab brdf` that live outside cmd_brdf.cpp.
 #pragma once
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace raylab {
 

@@ -1,9 +1,11 @@
 #include "cli.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 #include "render/renderer.h"
@@ -128,8 +130,7 @@ std::vector<Command>& commands() {
   return all;
 }
 
-}  // namespace
-
+// The deepest command given on the command line, and its path ("raylab brdf eval").
 const CLI::App* deepestCommand(const CLI::App& app, std::string& path) {
   path = app.get_name();
   const CLI::App* current = &app;
@@ -141,8 +142,6 @@ const CLI::App* deepestCommand(const CLI::App& app, std::string& path) {
   }
 }
 
-namespace {
-
 std::string commandNames(const CLI::App& app) {
   std::string names;
   const std::vector<const CLI::App*> all = app.get_subcommands([](const CLI::App*) { return true; });
@@ -152,9 +151,7 @@ std::string commandNames(const CLI::App& app) {
   return names;
 }
 
-}  // namespace
-
-std::unique_ptr<CLI::App> makeCommandLine() {
+std::unique_ptr<CLI::App> makeRoot() {
   auto app = std::make_unique<CLI::App>(
       "raylab is an interactive ray tracer built around a library of analytic BRDFs, running on any Vulkan 1.2 "
       "device with ray queries or ray-tracing pipelines (Mesa's lavapipe included).",
@@ -167,22 +164,16 @@ std::unique_ptr<CLI::App> makeCommandLine() {
   return app;
 }
 
-CLI::App* addCommand(CLI::App& parent, const std::string& name, const std::string& description,
-                     std::function<int()> run) {
-  CLI::App* command = parent.add_subcommand(name, description);
-  command->footer("");  // the root's footer is about the list of commands
-  commands().push_back({command, std::move(run)});
-  return command;
+// One prefix per message: "raylab render: ...". Messages that already name their command keep their own.
+void printError(const std::string& command, const std::string& message) {
+  if (message.rfind("raylab ", 0) == 0) {
+    std::fprintf(stderr, "%s\n", message.c_str());
+  } else {
+    std::fprintf(stderr, "%s: %s\n", command.c_str(), message.c_str());
+  }
 }
 
-CLI::App* addCommandGroup(CLI::App& parent, const std::string& name, const std::string& description) {
-  CLI::App* group = parent.add_subcommand(name, description);
-  group->require_subcommand(1);
-  group->footer("`" + parent.get_name() + " " + name + " <command> --help` describes each command.");
-  return group;
-}
-
-int runCommandLine(CLI::App& app, int argc, char** argv) {
+int parseAndRun(CLI::App& app, int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -222,6 +213,44 @@ int runCommandLine(CLI::App& app, int argc, char** argv) {
   return kExitOk;
 }
 
+}  // namespace
+
+CLI::App* addCommand(CLI::App& parent, const std::string& name, const std::string& description,
+                     std::function<int()> run) {
+  CLI::App* command = parent.add_subcommand(name, description);
+  command->footer("");  // the root's footer is about the list of commands
+  commands().push_back({command, std::move(run)});
+  return command;
+}
+
+CLI::App* addCommandGroup(CLI::App& parent, const std::string& name, const std::string& description) {
+  CLI::App* group = parent.add_subcommand(name, description);
+  group->require_subcommand(1);
+  group->footer("`" + parent.get_name() + " " + name + " <command> --help` describes each command.");
+  return group;
+}
+
+int runCommandLine(int argc, char** argv, const std::function<void(CLI::App&)>& addCommands) {
+  const std::unique_ptr<CLI::App> app = makeRoot();
+  addCommands(*app);
+  std::string path;
+  try {
+    return parseAndRun(*app, argc, argv);
+  } catch (const Error& error) {
+    deepestCommand(*app, path);
+    printError(path, error.what());
+    return error.exitCode();
+  } catch (const std::bad_alloc&) {
+    deepestCommand(*app, path);
+    printError(path, "out of memory (the input asks for more than this machine has; see the limits in docs/scenes.md)");
+    return kExitFailure;
+  } catch (const std::exception& error) {
+    deepestCommand(*app, path);
+    printError(path, std::string("unexpected error: ") + error.what());
+    return kExitFailure;
+  }
+}
+
 ToneMap parseToneMap(const std::string& name) {
   if (name == "aces") return ToneMap::kAces;
   if (name == "reinhard") return ToneMap::kReinhard;
@@ -241,52 +270,62 @@ void requireExtension(const std::string& command, const std::string& option, con
   }
 }
 
-CLI::Option* addFlag(CLI::App* command, const std::string& name, bool& value, const std::string& help) {
-  return command->add_flag(name, value, help);
+void addFlag(CLI::App* command, const std::string& name, bool& value, const std::string& help) {
+  command->add_flag(name, value, help);
 }
 
-CLI::Option* addText(CLI::App* command, const std::string& name, std::string& value, const std::string& metavar,
-                     const std::string& help) {
-  return command->add_option(name, value, help)->type_name(metavar);
+void addText(CLI::App* command, const std::string& name, std::string& value, const std::string& metavar,
+             const std::string& help, bool showDefault) {
+  CLI::Option* option = command->add_option(name, value, help)->type_name(metavar);
+  if (showDefault) option->capture_default_str();
 }
 
-CLI::Option* addCount(CLI::App* command, const std::string& name, std::uint32_t& value, const std::string& help,
-                      std::uint32_t min, std::uint32_t max) {
-  return command->add_option(name, value, help)->check(countRange(min, max))->type_name("N")->capture_default_str();
+void addTextList(CLI::App* command, const std::string& name, std::vector<std::string>& values,
+                 const std::string& metavar, const std::string& help) {
+  command->add_option(name, values, help)->type_name(metavar);
 }
 
-CLI::Option* addNumber(CLI::App* command, const std::string& name, float& value, const std::string& help, float min,
-                       float max) {
-  return command->add_option(name, value, help)->check(finiteRange(min, max))->type_name("X")->capture_default_str();
+void addCount(CLI::App* command, const std::string& name, std::uint32_t& value, const std::string& help,
+              std::uint32_t min, std::uint32_t max) {
+  command->add_option(name, value, help)->check(countRange(min, max))->type_name("N")->capture_default_str();
 }
 
-CLI::Option* addOptionalNumber(CLI::App* command, const std::string& name, std::optional<float>& value,
-                               const std::string& help, float min, float max) {
-  return command->add_option_function<float>(name, [&value](const float& parsed) { value = parsed; }, help)
+void addOptionalCount(CLI::App* command, const std::string& name, std::optional<std::uint32_t>& value,
+                      const std::string& help, std::uint32_t min, std::uint32_t max) {
+  command->add_option_function<std::uint32_t>(name, [&value](const std::uint32_t& parsed) { value = parsed; }, help)
+      ->check(countRange(min, max))
+      ->type_name("N");
+}
+
+void addNumber(CLI::App* command, const std::string& name, float& value, const std::string& help, float min,
+               float max) {
+  command->add_option(name, value, help)->check(finiteRange(min, max))->type_name("X")->capture_default_str();
+}
+
+void addOptionalNumber(CLI::App* command, const std::string& name, std::optional<float>& value,
+                       const std::string& help, float min, float max) {
+  command->add_option_function<float>(name, [&value](const float& parsed) { value = parsed; }, help)
       ->check(finiteRange(min, max))
       ->type_name("X");
 }
 
-CLI::Option* addChoice(CLI::App* command, const std::string& name, std::string& value,
-                       const std::vector<std::string>& choices, const std::string& help) {
+void addChoice(CLI::App* command, const std::string& name, std::string& value, const std::vector<std::string>& choices,
+               const std::string& help) {
   std::string names;
   for (const std::string& choice : choices) names += (names.empty() ? "" : "|") + choice;
-  return command->add_option(name, value, help)
+  command->add_option(name, value, help)
       ->check(CLI::IsMember(choices).description(""))
       ->type_name(names)
       ->capture_default_str();
 }
 
-CLI::Option* addPositional(CLI::App* command, const std::string& name, std::string& value, const std::string& help) {
-  return command->add_option(name, value, help)->type_name("FILE");
+void addPositional(CLI::App* command, const std::string& name, std::string& value, const std::string& help) {
+  command->add_option(name, value, help)->type_name("FILE");
 }
 
 void addDeviceOption(CLI::App* command, std::optional<std::uint32_t>& device) {
-  command->add_option_function<std::uint32_t>(
-             "--device", [&device](const std::uint32_t& index) { device = index; },
-             "Vulkan device index from `raylab devices` (default: the best capable)")
-      ->check(countRange(0, 1000))
-      ->type_name("N");
+  addOptionalCount(command, "--device", device, "Vulkan device index from `raylab devices` (default: the best capable)",
+                   0, 1000);
 }
 
 void addImageSizeOptions(CLI::App* command, std::uint32_t& width, std::uint32_t& height, const std::string& what,

@@ -3,10 +3,9 @@
 // commands share, each declared once here. Usage errors exit 2 with a message naming the option.
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,10 +13,11 @@
 #include "render/renderer.h"
 #include "scene/load_scene.h"
 
-namespace raylab {
+namespace CLI {
+class App;
+}  // namespace CLI
 
-// The root app, with raylab's help formatter.
-std::unique_ptr<CLI::App> makeCommandLine();
+namespace raylab {
 
 // A command below `parent`: `run` is called when it was the one given and returns the exit code (errors travel
 // as raylab::Error). The description's first line is its summary in the parent's list.
@@ -26,25 +26,30 @@ CLI::App* addCommand(CLI::App& parent, const std::string& name, const std::strin
 // A group of commands (`raylab brdf`, `raylab bench`): one of its commands must be given.
 CLI::App* addCommandGroup(CLI::App& parent, const std::string& name, const std::string& description);
 
-// The deepest command given on the command line, and its path ("raylab brdf eval"): errors carry the path.
-const CLI::App* deepestCommand(const CLI::App& app, std::string& path);
+// Builds the command tree (`addCommands` adds raylab's commands to the root), parses argv and runs the command
+// given. Returns the exit code: 2 for usage errors, 0 after --help, the command's own otherwise; errors (as
+// raylab::Error) are printed with the command's name, "raylab render: ...".
+int runCommandLine(int argc, char** argv, const std::function<void(CLI::App&)>& addCommands);
 
-// Parses and runs the command given; returns the exit code (2 for usage errors, 0 after --help).
-int runCommandLine(CLI::App& app, int argc, char** argv);
-
-// Options. Each shows its default (the variable's value when declared) and its range in the help.
-CLI::Option* addFlag(CLI::App* command, const std::string& name, bool& value, const std::string& help);
-CLI::Option* addText(CLI::App* command, const std::string& name, std::string& value, const std::string& metavar,
-                     const std::string& help);
-CLI::Option* addCount(CLI::App* command, const std::string& name, std::uint32_t& value, const std::string& help,
-                      std::uint32_t min, std::uint32_t max);
-CLI::Option* addNumber(CLI::App* command, const std::string& name, float& value, const std::string& help, float min,
-                       float max);
-CLI::Option* addOptionalNumber(CLI::App* command, const std::string& name, std::optional<float>& value,
-                               const std::string& help, float min, float max);
-CLI::Option* addChoice(CLI::App* command, const std::string& name, std::string& value,
-                       const std::vector<std::string>& choices, const std::string& help);
-CLI::Option* addPositional(CLI::App* command, const std::string& name, std::string& value, const std::string& help);
+// Options. Counts, numbers and choices show their default (the variable's value when declared) and their range in
+// the help; text shows its default when asked to.
+void addFlag(CLI::App* command, const std::string& name, bool& value, const std::string& help);
+void addText(CLI::App* command, const std::string& name, std::string& value, const std::string& metavar,
+             const std::string& help, bool showDefault = false);
+// An option that may be given many times, each value kept in order.
+void addTextList(CLI::App* command, const std::string& name, std::vector<std::string>& values,
+                 const std::string& metavar, const std::string& help);
+void addCount(CLI::App* command, const std::string& name, std::uint32_t& value, const std::string& help,
+              std::uint32_t min, std::uint32_t max);
+void addOptionalCount(CLI::App* command, const std::string& name, std::optional<std::uint32_t>& value,
+                      const std::string& help, std::uint32_t min, std::uint32_t max);
+void addNumber(CLI::App* command, const std::string& name, float& value, const std::string& help, float min,
+               float max);
+void addOptionalNumber(CLI::App* command, const std::string& name, std::optional<float>& value,
+                       const std::string& help, float min, float max);
+void addChoice(CLI::App* command, const std::string& name, std::string& value, const std::vector<std::string>& choices,
+               const std::string& help);
+void addPositional(CLI::App* command, const std::string& name, std::string& value, const std::string& help);
 
 // The names options take, as the kernels and images use them.
 ToneMap parseToneMap(const std::string& name);

@@ -2,6 +2,7 @@
 // the driver (Mesa, LLVM) and core count recorded. Benchmarks are not tests: they measure, they do not assert.
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <thread>
 #include <utility>

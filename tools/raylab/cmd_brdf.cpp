@@ -2,6 +2,7 @@
 // glass) and albedo (brdf_albedo.cpp), the data of tools/brdf_plot.py.
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <string>
 

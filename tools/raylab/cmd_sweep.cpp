@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -261,9 +262,8 @@ void addSweepCommand(CLI::App& raylab) {
   addCount(command, "--steps", o->steps, "number of spheres", 2, 64);
   addFlag(command, "--log", o->log, "geometric steps (default for exponents and roughnesses)");
   addFlag(command, "--linear", o->linear, "linear steps (default for the others)");
-  command->add_option("--set", o->sets, "another parameter of the model, RGB as r/g/b (repeatable), e.g. --set "
-                                        "rho_d=0.2/0.1/0.05")
-      ->type_name("K=V");
+  addTextList(command, "--set", o->sets, "K=V",
+              "another parameter of the model, RGB as r/g/b (repeatable), e.g. --set rho_d=0.2/0.1/0.05");
   addText(command, "--out", o->pngPath, "FILE.png", "the contact sheet (default out/sweep_<model>_<param>.png)");
   addText(command, "--gltf", o->gltfPath, "FILE.gltf", "write the sweep's scene as glTF 2.0");
   addCount(command, "--cell", o->cell, "cell size in pixels", 16, 2048);

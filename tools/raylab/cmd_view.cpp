@@ -1,6 +1,7 @@
 // `raylab view`: the interactive window (engine/view), plus the automation flags tests and docs use.
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -111,10 +112,8 @@ void addViewCommand(CLI::App& raylab) {
            1u << 20);
   addToneOptions(command, o->viewer.exposure, o->toneMap, "the display");
   addFlag(command, "--no-panel", o->noPanel, "start with the panel hidden (F1 shows it)");
-  command->add_option_function<std::uint32_t>(
-             "--frames", [o](const std::uint32_t& n) { o->frames = n; },
-             "run N frames and exit; each frame without a change adds one full pass")
-      ->type_name("N");
+  addOptionalCount(command, "--frames", o->frames,
+                   "run N frames and exit; each frame without a change adds one full pass", 0, UINT32_MAX);
   addText(command, "--script", o->scriptPath, "FILE", "replay camera and parameter changes (format in docs/viewer.md)");
   addText(command, "--screenshot", o->viewer.screenshot, "FILE.exr|FILE.png",
           "save the last frame's image: the EXR and the PNG, the one not named beside the other");

@@ -1,7 +1,9 @@
 // raylab's commands on the command line (cli.h): each adds itself, its options and what it runs to the tree.
 #pragma once
 
-#include <CLI/CLI.hpp>
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace raylab {
 
