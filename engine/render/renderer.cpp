@@ -175,6 +175,19 @@ void swapRenderPipelines(const Device& device, Renderer& renderer, RenderPipelin
   prepareWavefront(device, renderer);
 }
 
+void setTraceExtent(Renderer& renderer, glm::uvec2 extent) {
+  renderer.params.width = extent.x;
+  renderer.params.height = extent.y;
+}
+
+void setMaxDepth(Renderer& renderer, std::uint32_t maxDepth) { renderer.params.maxDepth = maxDepth; }
+
+void setSceneLighting(Renderer& renderer, const Scene& scene) {
+  renderer.params.background = scene.background;
+  renderer.params.environmentStrength = scene.environment.strength;
+  renderer.params.environmentRotation = scene.environment.rotation;
+}
+
 void setCamera(Renderer& renderer, const Camera& camera) {
   applyCamera(renderer.params, camera, renderer.params.width, renderer.params.height);
 }

@@ -93,7 +93,13 @@ void collectRayStats(Renderer& renderer);
 void recordCopyRayStats(VkCommandBuffer cmd, const Renderer& renderer, VkBuffer destination);
 
 // Live changes (the viewer). Each leaves the accumulated samples stale: reset them afterwards.
+// The traced extent: at most the allocated size (resizeRenderer), the top-left part of the accumulation; the
+// camera keeps the aspect ratio of the extent (call setCamera after it).
+void setTraceExtent(Renderer& renderer, glm::uvec2 extent);
 void setCamera(Renderer& renderer, const Camera& camera);
+void setMaxDepth(Renderer& renderer, std::uint32_t maxDepth);
+// The scene's lighting parameters the kernel reads per dispatch: background, environment strength and rotation.
+void setSceneLighting(Renderer& renderer, const Scene& scene);
 // New image size: reallocates the accumulation buffer (and resets it). Throws Error(kExitUsage) beyond
 // kMaxImageSide or maxImagePixels, leaving the renderer as it was.
 void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t width, std::uint32_t height);

@@ -5,6 +5,7 @@
 
 #include "shared/display.h"
 #include "util/error.h"
+#include "vk/commands.h"
 #include "vk/debug_name.h"
 #include "vk/vk_check.h"
 
@@ -20,28 +21,20 @@ constexpr DescriptorBinding kBindings[] = {
     {gpu::kBindingDisplayTexels, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
 };
 
-void imageBarrier(VkCommandBuffer cmd, VkImage image, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
-                  VkAccessFlags dstAccess, VkImageLayout oldLayout, VkImageLayout newLayout) {
-  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-  barrier.srcAccessMask = srcAccess;
-  barrier.dstAccessMask = dstAccess;
-  barrier.oldLayout = oldLayout;
-  barrier.newLayout = newLayout;
-  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.image = image;
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCmdPipelineBarrier(cmd, srcStage, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+// To a transfer, from `srcStage`: every transition of the display's images ends in a copy or a blit.
+void toTransfer(VkCommandBuffer cmd, VkImage image, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                VkAccessFlags dstAccess, VkImageLayout oldLayout, VkImageLayout newLayout) {
+  imageBarrier(cmd, image, {srcStage, srcAccess, oldLayout, VK_PIPELINE_STAGE_TRANSFER_BIT, dstAccess, newLayout});
 }
 
 // Resting layout to TRANSFER_DST, after the previous frame's reads (write-after-read), keeping the texels.
 void beginWrite(VkCommandBuffer cmd, VkImage image) {
-  imageBarrier(cmd, image, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_ACCESS_TRANSFER_WRITE_BIT, kRestingLayout,
+  toTransfer(cmd, image, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_ACCESS_TRANSFER_WRITE_BIT, kRestingLayout,
                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
 }
 
 void endWrite(VkCommandBuffer cmd, VkImage image) {
-  imageBarrier(cmd, image, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+  toTransfer(cmd, image, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kRestingLayout);
 }
 
@@ -156,7 +149,7 @@ void recordClearDisplay(VkCommandBuffer cmd, const Display& display) {
   const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   for (VkImage image : {display.preview.image, display.refined.image}) {
     // UNDEFINED: whatever the image held is discarded, which is the point.
-    imageBarrier(cmd, image, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
+    toTransfer(cmd, image, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
                  VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
     vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &range);
     endWrite(cmd, image);
@@ -212,14 +205,14 @@ void recordPreviewToRefined(VkCommandBuffer cmd, const Display& display, glm::uv
 void recordToSwapchain(VkCommandBuffer cmd, const Display& display, const DisplayImage& source, glm::uvec2 size,
                        VkImage target, VkRect2D area) {
   // The acquire semaphore orders this after the presentation engine's read; UNDEFINED drops the old content.
-  imageBarrier(cmd, target, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_ACCESS_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+  toTransfer(cmd, target, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_ACCESS_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
   if (area.offset.x > 0 || area.offset.y > 0) {
     // The panel's strip: a dark grey the panel is drawn on, so that nothing undefined shows through.
     const VkClearColorValue grey{{0.08f, 0.08f, 0.09f, 1.0f}};
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &grey, 1, &range);
-    imageBarrier(cmd, target, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+    toTransfer(cmd, target, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
   }

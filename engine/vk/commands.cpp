@@ -43,4 +43,17 @@ void computeBarrier(VkCommandBuffer cmd) {
                        0, nullptr, 0, nullptr);
 }
 
+void imageBarrier(VkCommandBuffer cmd, VkImage image, const ImageTransition& t) {
+  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  barrier.srcAccessMask = t.srcAccess;
+  barrier.dstAccessMask = t.dstAccess;
+  barrier.oldLayout = t.oldLayout;
+  barrier.newLayout = t.newLayout;
+  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image;
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(cmd, t.srcStage, t.dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+}
+
 }  // namespace raylab

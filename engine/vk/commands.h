@@ -15,4 +15,15 @@ void submitAndWait(const Device& device, const std::function<void(VkCommandBuffe
 // Makes shader (compute or ray-tracing) and transfer writes visible to later shaders, transfers and host reads.
 void computeBarrier(VkCommandBuffer cmd);
 
+// One layout transition of a whole single-mip colour image, between the given stages and accesses.
+struct ImageTransition {
+  VkPipelineStageFlags srcStage;
+  VkAccessFlags srcAccess;
+  VkImageLayout oldLayout;
+  VkPipelineStageFlags dstStage;
+  VkAccessFlags dstAccess;
+  VkImageLayout newLayout;
+};
+void imageBarrier(VkCommandBuffer cmd, VkImage image, const ImageTransition& transition);
+
 }  // namespace raylab

@@ -1,0 +1,154 @@
+// Changes to what the viewer shows: screenshots, scene edits from the panel and the script, hot keys, and the
+// status line.
+#include "view/viewer_state.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+
+#include "shared/features.h"
+#include "util/error.h"
+#include "view_logic/scene_edits.h"
+
+namespace raylab {
+
+std::string timestampedScreenshotPath() {
+  const std::time_t now = std::time(nullptr);
+  char name[64];
+  std::strftime(name, sizeof name, "out/view-%Y%m%d-%H%M%S.exr", std::localtime(&now));
+  return name;
+}
+
+void saveScreenshot(Viewer& v, const std::string& exrPath, const std::string& pngPath) {
+  waitForFrames(v);
+  const Image image = readImage(v.device, v.renderer);
+  writeExr(exrPath, image);
+  writePng(pngPath, image, v.settings.exposure, v.settings.toneMap);
+  v.status.message = "saved " + exrPath + " (" + std::to_string(v.scheduler.sampleIndex) + " spp)";
+  if (!v.options.quiet) std::printf("wrote %s\nwrote %s\n", exrPath.c_str(), pngPath.c_str());
+}
+
+void uploadSceneEdits(Viewer& v, bool materials, bool lights) {
+  if (!materials && !lights) return;
+  waitForFrames(v);  // on a CPU device the buffers are host memory that running frames read
+  if (materials) updateMaterials(v.device, v.gpuScene, v.scene.materials);
+  if (lights) updateLights(v.device, v.gpuScene, v.scene.lights);
+  v.needed = neededKernel(v);
+  ensureKernel(v);
+  v.pending.accumulation = true;
+}
+
+// A camera that a script moved out of float range, or onto its own target, is the script's error: say which line.
+void checkCameraEvent(const Viewer& v, const ScriptEvent& event) {
+  gpu::FrameParams probe{};
+  try {
+    applyCamera(probe, v.camera, v.renderer.params.width, v.renderer.params.height);
+  } catch (const Error& error) {
+    throw Error(event.where + ": this camera move leaves no usable view (" + error.what() + ")");
+  }
+  const glm::vec3 position = v.camera.position;
+  if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z)) {
+    throw Error(event.where + ": this camera move puts the camera outside float range");
+  }
+}
+
+void applyScriptEvents(Viewer& v) {
+  if (v.eventsAppliedFor == std::int64_t(v.frameIndex)) return;
+  v.eventsAppliedFor = v.frameIndex;
+  bool materials = false, lights = false;
+  for (const ScriptEvent& event : v.options.script) {
+    if (event.frame != v.frameIndex) continue;
+    switch (event.action) {
+      case ScriptAction::kOrbit:
+        orbitCamera(v.camera, glm::radians(event.value.x), glm::radians(event.value.y));
+        break;
+      case ScriptAction::kPan:
+        panCamera(v.camera, event.value.x, event.value.y);
+        break;
+      case ScriptAction::kZoom:
+        zoomCamera(v.camera, event.value.x, 1.0e-4f * v.controller.sceneSize);
+        break;
+      case ScriptAction::kSetMaterial:
+      case ScriptAction::kModel:
+      case ScriptAction::kSetLightIntensity:
+      case ScriptAction::kSetLightPosition:
+      case ScriptAction::kSetLightDirection:
+      case ScriptAction::kSetLightCone: {
+        const SceneEffect effect = applyToScene(event, v.scene);
+        materials |= effect.materials;
+        lights |= effect.lights;
+        break;
+      }
+      case ScriptAction::kSetExposure:
+        v.settings.exposure = event.value.x;
+        break;
+      case ScriptAction::kSetMaxDepth:
+        v.settings.maxDepth = static_cast<std::uint32_t>(event.value.x);
+        break;
+      case ScriptAction::kSetIntegrator:
+        v.settings.integrator = event.param == "path" ? gpu::kIntegratorPath : gpu::kIntegratorSlides;
+        switchIntegrator(v);
+        break;
+      case ScriptAction::kSetEnvironmentStrength:
+      case ScriptAction::kSetEnvironmentRotation:
+        if (!v.scene.environment.hasImage()) {
+          throw Error(event.where + ": the scene has no environment image (give one with --env FILE.exr)");
+        }
+        if (event.action == ScriptAction::kSetEnvironmentStrength) v.scene.environment.strength = event.value.x;
+        else v.scene.environment.rotation = glm::radians(event.value.x);
+        break;
+      case ScriptAction::kResize:
+        // The size of the image, as --width/--height: the panel's strip comes on top.
+        if (!requestWindowSize(v.window, std::uint32_t(event.value.x) + (v.panelShown ? kPanelWidth : 0u),
+                               std::uint32_t(event.value.y), kResizeTimeout)) {
+          throw Error(event.where + ": the window system did not resize the window within " +
+                      std::to_string(int(kResizeTimeout)) + " s");
+        }
+        break;
+      case ScriptAction::kScreenshot: {
+        const ScreenshotPaths paths = screenshotPaths(event.name, "");
+        saveScreenshot(v, paths.exr, paths.png);
+        break;
+      }
+    }
+    if (event.action == ScriptAction::kOrbit || event.action == ScriptAction::kPan ||
+        event.action == ScriptAction::kZoom) {
+      checkCameraEvent(v, event);
+    }
+    if (resetsAccumulation(event)) v.pending.accumulation = true;
+  }
+  uploadSceneEdits(v, materials, lights);
+}
+
+void handleHotKeys(Viewer& v, const WindowInput& input) {
+  if (uiWantsKeyboard()) return;
+  for (int key : input.keysPressed) {
+    if (key == GLFW_KEY_ESCAPE) requestWindowClose(v.window);
+    if (key == GLFW_KEY_F1 || key == GLFW_KEY_TAB) {
+      v.panelShown = !v.panelShown;
+      v.ui.visible = v.panelShown;
+      v.pending.extent = true;  // the image takes the panel's strip, or gives it back
+    }
+    if (key == GLFW_KEY_F12 || key == GLFW_KEY_P) {
+      const std::string path = timestampedScreenshotPath();
+      saveScreenshot(v, path, screenshotPaths(path, "").png);
+    }
+  }
+}
+
+void updateStatus(Viewer& v) {
+  v.status.spp = v.scheduler.sampleIndex;
+  v.status.traceExtent = v.scheduler.traceExtent;
+  v.status.preview = v.scheduler.preview;
+  v.status.frameMs = v.frameMs;
+  std::uint64_t rays = 0;
+  for (const auto& [time, count] : v.recentRays) rays += count;
+  const double span = v.recentRays.size() > 1 ? v.recentRays.back().first - v.recentRays.front().first : 0.0;
+  v.status.raysPerSecond = span > 0.0 ? double(rays - v.recentRays.front().second) / span : 0.0;
+  v.status.compiling = v.build != nullptr;
+}
+
+}  // namespace raylab

@@ -1,0 +1,133 @@
+// The viewer's state and the steps its files share (engine/view/viewer_*.cpp): set-up and tear-down, frames in
+// flight and their recording, edits from the panel, scripts and hot keys, and kernel rebuilds. Internal to
+// engine/view.
+//
+// What must be redone before the next frame is explicit in `Pending` below: each flag names the events that set it
+// and the step that clears it. The kernel's state (ready, building in the background, or compiling at its first
+// dispatch) is `KernelState`.
+#pragma once
+
+#include <array>
+#include <deque>
+#include <memory>
+#include <string>
+
+#include "render/gpu_scene.h"
+#include "render/kernel_features.h"
+#include "render/renderer.h"
+#include "util/timer.h"
+#include "view/camera_input.h"
+#include "view/display.h"
+#include "view/frame_slot.h"
+#include "view/kernel_build.h"
+#include "view/panel.h"
+#include "view/swapchain.h"
+#include "view/ui.h"
+#include "view/viewer.h"
+#include "view/window.h"
+#include "view_logic/camera_controller.h"
+#include "view_logic/scheduler.h"
+
+namespace raylab {
+
+constexpr std::uint32_t kFramesInFlight = 2;
+constexpr std::uint64_t kPollNanoseconds = 2'000'000;  // a fence wait never keeps input waiting longer
+constexpr int kUiSettleFrames = 3;     // frames drawn after an input event while idle (ImGui hover states)
+constexpr double kResizeTimeout = 5.0;  // seconds a scripted resize may take
+constexpr double kRaysWindow = 1.0;     // rays/s over this many seconds of frames
+constexpr double kIdleWaitSeconds = 0.5;    // idle: the status line still refreshes this often
+constexpr double kBuildPollSeconds = 0.05;  // a kernel build's end is noticed within this
+
+// Set by events, cleared by the step named: the viewer's state machine.
+struct Pending {
+  bool accumulation = true;  // camera, material, light, integrator, depth or size changed: planFrame resets it
+  bool swapchain = false;    // acquire or present said out of date or suboptimal: recreateSwapchain
+  bool extent = false;       // resolution scale changed, panel shown or hidden: updateFullExtent
+  bool display = true;       // the display images were cleared or the tone settings changed: the next display pass
+                             // covers every tile
+};
+
+enum class KernelState {
+  kReady,         // the pipeline has run: frame timings measure tracing
+  kFirstDispatch,  // a new pipeline: its next dispatch compiles (lavapipe), so that frame is not timed
+};
+
+struct Viewer {
+  Viewer(const Scene& s, const ViewerOptions& o) : options(o), scene(s), panelShown(o.panel) {}
+
+  const ViewerOptions& options;
+  Scene scene;  // edited live by the panel and the script
+  bool panelShown = true;  // the panel's strip beside the image (F1 toggles it)
+  std::uint32_t integrator = chooseIntegrator(scene, options.integrator);
+  bool windowSystem = false;
+  Instance instance;
+  Window window;
+  Device device;
+  GpuScene gpuScene;
+  Renderer renderer;
+  Swapchain swapchain;
+  Display display;
+  Ui ui;
+  std::array<FrameSlot, kFramesInFlight> slots;
+
+  Scheduler scheduler;
+  CameraController controller;
+  CursorTracker cursor;
+  Camera camera;
+  ViewSettings settings;
+  PanelStatus status;
+  PanelSelection selection;
+  std::unique_ptr<KernelBuild> build;
+  KernelFeatures needed;      // what the scene's materials and lights need compiled in
+  KernelState kernelState = KernelState::kFirstDispatch;
+  Pending pending;
+  DisplaySettings lastDisplay;
+  bool showingPreview = false;  // the window shows the preview image (else the refined one)
+  glm::uvec2 previewSize{0};
+  bool automation = false;
+  std::uint32_t frameIndex = 0;       // frames submitted
+  std::int64_t eventsAppliedFor = -1;  // the frame whose script events were applied
+  std::uint32_t lastScriptFrame = 0;
+  int uiFramesLeft = kUiSettleFrames;
+  Stopwatch clock;
+  double lastSubmit = -1.0;
+  double lastCameraUpdate = 0.0;
+  double frameMs = 0.0;
+  std::deque<std::pair<double, std::uint64_t>> recentRays;  // (completion time, rays of that frame)
+  ViewerReport report;
+};
+
+// viewer_setup.cpp
+glm::uvec2 fullExtentFor(VkExtent2D window, float scale, std::uint64_t maxPixels);
+KernelFeatures neededKernel(const Viewer& v);
+VkRect2D imageArea(const Viewer& v);
+void setUp(Viewer& v);
+void tearDown(Viewer& v);
+void updateFullExtent(Viewer& v);
+void recreateSwapchain(Viewer& v);
+
+// viewer_frames.cpp
+void completeFrame(Viewer& v, FrameSlot& slot);
+void reapFinishedFrames(Viewer& v);
+// Blocks until no frame is in flight: before the host writes what frames read (materials, lights) or frees
+// what they use (buffers, pipelines, the swapchain).
+void waitForFrames(Viewer& v);
+bool anyInFlight(const Viewer& v);
+void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_t imageIndex, bool capture);
+void submitAndPresent(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex);
+
+// viewer_edits.cpp
+std::string timestampedScreenshotPath();
+void saveScreenshot(Viewer& v, const std::string& exrPath, const std::string& pngPath);
+void uploadSceneEdits(Viewer& v, bool materials, bool lights);
+void applyScriptEvents(Viewer& v);
+void handleHotKeys(Viewer& v, const WindowInput& input);
+void updateStatus(Viewer& v);
+
+// viewer_kernels.cpp
+bool covers(const KernelFeatures& kernel, const KernelFeatures& needed);
+void installKernel(Viewer& v);
+void ensureKernel(Viewer& v);
+void switchIntegrator(Viewer& v);
+
+}  // namespace raylab
