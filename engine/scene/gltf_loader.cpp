@@ -372,6 +372,7 @@ class SceneBuilder {
   }
 
   void chooseCamera() {
+    for (const CameraUse& use : cameras_) scene_.cameraNames.push_back(cameraName(use));
     const CameraUse* chosen = nullptr;
     if (!options_.camera.empty()) {
       std::string known;

@@ -65,6 +65,7 @@ struct Light {
 struct Scene {
   std::string name;
   Camera camera;
+  std::vector<std::string> cameraNames;  // every camera the file offers (--camera NAME), in the file's order
   std::vector<Mesh> meshes;
   std::vector<MeshInstance> instances;
   std::vector<Sphere> spheres;

@@ -188,6 +188,20 @@ TEST(CliTest, HeatmapWritesTheCostOfEveryPixel) {
   EXPECT_EQ(readExr(dir + "/clocked.exr").rgba, readExr(dir + "/plain.exr").rgba);
 }
 
+// `raylab info` names what the other commands take: cameras, materials with model and parameters, lights.
+TEST(CliTest, InfoListsTheScenesNames) {
+  const CommandResult result = runRaylab({"info", std::string(RAYLAB_SOURCE_DIR) + "/assets/scenes/minimal.gltf"});
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  for (const char* text : {"cameras (1): 'camera' (used)", "'red plastic': ", "'ground': lambert rho_d=",
+                           "'lamp': point at", "spheres (1):", "material 'red plastic'"}) {
+    EXPECT_NE(result.output.find(text), std::string::npos) << text << "\n" << result.output;
+  }
+  const CommandResult wrong =
+      runRaylab({"info", std::string(RAYLAB_SOURCE_DIR) + "/assets/scenes/minimal.gltf", "--camera", "nope"});
+  EXPECT_EQ(wrong.exitCode, 1) << wrong.output;
+  EXPECT_NE(wrong.output.find("cameras: 'camera'"), std::string::npos) << wrong.output;
+}
+
 TEST(CliTest, ErrorsCarryOnePrefixAndBareBrdfSaysWhatIsMissing) {
   const CommandResult usage = runRaylab({"render", "--spp", "abc"});
   EXPECT_EQ(usage.output.find("raylab: raylab"), std::string::npos) << usage.output;

@@ -13,5 +13,6 @@ void addViewCommand(CLI::App& raylab);
 void addBrdfCommands(CLI::App& raylab);
 void addBenchCommands(CLI::App& raylab);
 void addDevicesCommand(CLI::App& raylab);
+void addInfoCommand(CLI::App& raylab);
 
 }  // namespace raylab

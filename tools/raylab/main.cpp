@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     raylab::addViewCommand(raylab);
     raylab::addBrdfCommands(raylab);
     raylab::addBenchCommands(raylab);
+    raylab::addInfoCommand(raylab);
     raylab::addDevicesCommand(raylab);
   });
   // With validation on, any message is a bug: make it impossible to miss.
