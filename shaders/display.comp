@@ -13,6 +13,7 @@ layout(local_size_x = kDisplayWorkgroupSize, local_size_y = kDisplayWorkgroupSiz
 layout(push_constant, scalar) uniform Push { DisplayParams params; };
 layout(set = 0, binding = kBindingDisplayAccumulation, scalar) readonly buffer Accumulation { vec4 accumulation[]; };
 layout(set = 0, binding = kBindingDisplayTexels, scalar) writeonly buffer Texels { uint texels[]; };
+layout(set = 0, binding = kBindingDisplayCompare, scalar) readonly buffer Compare { vec4 compare[]; };
 
 float toneCurve(float x) {
   if (params.toneMap == kDisplayToneReinhard) return x / (1.0 + x);
@@ -29,13 +30,36 @@ float toDisplay(float linear) {
   return linearToSrgb(clamp(toneCurve(linear * params.exposureScale), 0.0, 1.0));
 }
 
+vec3 meanOf(vec4 texel) { return texel.w > 0.0 ? texel.rgb / texel.w : vec3(0.0); }
+
+// Dark blue, blue, green, yellow, white: the ramp of raylab's cost maps (engine/image/heatmap.cpp), in sRGB.
+vec3 falseColour(float t) {
+  const vec3 stops[5] = vec3[5](vec3(0.05, 0.03, 0.20), vec3(0.10, 0.30, 0.85), vec3(0.10, 0.75, 0.35),
+                                vec3(0.95, 0.85, 0.10), vec3(1.00, 1.00, 1.00));
+  const float x = clamp(t, 0.0, 1.0) * 4.0;
+  const int i = min(int(x), 3);
+  return mix(stops[i], stops[i + 1], x - float(i));
+}
+
 void main() {
   const uvec2 pixel = params.regionOrigin + gl_GlobalInvocationID.xy;
   if (pixel.x >= params.size.x || pixel.y >= params.size.y) return;
   const uint index = pixel.y * params.size.x + pixel.x;
-  const vec4 texel = accumulation[index];
-  const vec3 radiance = texel.w > 0.0 ? texel.rgb / texel.w : vec3(0.0);
-  vec3 colour = vec3(toDisplay(radiance.r), toDisplay(radiance.g), toDisplay(radiance.b));
+  vec3 colour;
+  if (params.mode == kDisplayDifference || params.mode == kDisplayRelativeDifference) {
+    const vec3 a = meanOf(accumulation[index]), b = meanOf(compare[index]);
+    const vec3 difference = abs(a - b);
+    float shown = max(difference.r, max(difference.g, difference.b));
+    if (params.mode == kDisplayRelativeDifference) {
+      const float level = max(max(max(a.r, a.g), a.b), max(max(b.r, b.g), b.b));
+      shown = level > 0.0 ? shown / level : 0.0;
+    }
+    colour = falseColour(shown / params.differenceScale);
+  } else {
+    const bool compared = params.mode == kDisplaySplit && pixel.x >= params.splitColumn;
+    const vec3 radiance = meanOf(compared ? compare[index] : accumulation[index]);
+    colour = vec3(toDisplay(radiance.r), toDisplay(radiance.g), toDisplay(radiance.b));
+  }
   if ((params.flags & kDisplayBgra) != 0u) colour = colour.bgr;
   texels[index] = packUnorm4x8(vec4(colour, 1.0));  // round(255 c), the PNG writer's rounding
 }

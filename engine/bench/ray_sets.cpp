@@ -21,14 +21,14 @@ glm::vec3 offsetRayOrigin(glm::vec3 p, glm::vec3 n) {
 
 std::vector<gpu::ProbeRay> primaryRays(const Scene& scene, std::uint32_t width, std::uint32_t height) {
   gpu::FrameParams params{};
+  params.width = width;
+  params.height = height;
   applyCamera(params, scene.camera, width, height);
   std::vector<gpu::ProbeRay> rays;
   rays.reserve(std::size_t(width) * height);
   for (std::uint32_t y = 0; y < height; ++y) {
     for (std::uint32_t x = 0; x < width; ++x) {
-      const float ndcX = 2.0f * (x + 0.5f) / width - 1.0f, ndcY = 1.0f - 2.0f * (y + 0.5f) / height;
-      const glm::vec3 d = glm::normalize(params.cameraForward + ndcX * params.cameraRight + ndcY * params.cameraUp);
-      rays.push_back({params.cameraOrigin, 0.0f, d, 1e30f});
+      rays.push_back({params.cameraOrigin, 0.0f, primaryDirection(params, {x, y}), 1e30f});
     }
   }
   return rays;

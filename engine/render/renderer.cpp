@@ -333,6 +333,21 @@ Image readImage(const Device& device, const Renderer& renderer) {
   return image;
 }
 
+PixelValue readPixel(const Device& device, const Renderer& renderer, glm::uvec2 pixel) {
+  if (pixel.x >= renderer.params.width || pixel.y >= renderer.params.height) {
+    throw Error("readPixel: pixel (" + std::to_string(pixel.x) + ", " + std::to_string(pixel.y) +
+                ") is outside the traced " + std::to_string(renderer.params.width) + "x" +
+                std::to_string(renderer.params.height));
+  }
+  glm::vec4 texel(0.0f);
+  const VkDeviceSize index = VkDeviceSize(pixel.y) * renderer.params.width + pixel.x;
+  downloadBuffer(device, renderer.accumulation, &texel, sizeof texel, index * sizeof texel);
+  PixelValue value;
+  value.samples = static_cast<std::uint32_t>(texel.w);
+  if (texel.w > 0.0f) value.radiance = glm::vec3(texel) / texel.w;
+  return value;
+}
+
 CostMap readCostMap(const Device& device, const Renderer& renderer) {
   if (renderer.heatmap.handle == VK_NULL_HANDLE) throw Error("readCostMap: the renderer was made without the heat map");
   CostMap map;

@@ -123,6 +123,13 @@ void resetAccumulation(const Device& device, Renderer& renderer);
 // The mean radiance per pixel so far, alpha 1.
 Image readImage(const Device& device, const Renderer& renderer);
 
+// One pixel of the traced extent: its mean radiance and how many samples it holds (the viewer's picking).
+struct PixelValue {
+  glm::vec3 radiance{0.0f};
+  std::uint32_t samples = 0;
+};
+PixelValue readPixel(const Device& device, const Renderer& renderer, glm::uvec2 pixel);
+
 // With settings.heatmap: clock ticks per sample of every pixel so far.
 CostMap readCostMap(const Device& device, const Renderer& renderer);
 

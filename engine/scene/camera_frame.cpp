@@ -28,4 +28,10 @@ void applyCamera(gpu::FrameParams& params, const Camera& camera, std::uint32_t w
   params.cameraUp = v * tanHalf;
 }
 
+glm::vec3 primaryDirection(const gpu::FrameParams& params, glm::uvec2 pixel, glm::vec2 offset) {
+  const glm::vec2 ndc(2.0f * (float(pixel.x) + offset.x) / float(params.width) - 1.0f,
+                      1.0f - 2.0f * (float(pixel.y) + offset.y) / float(params.height));
+  return glm::normalize(params.cameraForward + ndc.x * params.cameraRight + ndc.y * params.cameraUp);
+}
+
 }  // namespace raylab

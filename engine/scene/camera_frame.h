@@ -13,4 +13,8 @@ namespace raylab {
 // Camera of FrameParams for an image of width x height; throws Error on a degenerate camera.
 void applyCamera(gpu::FrameParams& params, const Camera& camera, std::uint32_t width, std::uint32_t height);
 
+// The unit direction of the primary ray (params.width and height set) through `offset` ([0, 1)^2, 0.5 the centre) of `pixel`: the kernels'
+// primaryDirection (shaders/kernel/raygen.glsl).
+glm::vec3 primaryDirection(const gpu::FrameParams& params, glm::uvec2 pixel, glm::vec2 offset = glm::vec2(0.5f));
+
 }  // namespace raylab

@@ -38,23 +38,36 @@ std::optional<double> hitSphere(glm::dvec3 o, glm::dvec3 d, glm::dvec3 center, d
 
 }  // namespace
 
-std::optional<float> firstHitDistance(const Scene& scene, glm::vec3 origin, glm::vec3 direction) {
+std::optional<SceneHit> firstHit(const Scene& scene, glm::vec3 origin, glm::vec3 direction) {
   const glm::dvec3 o(origin), d(glm::normalize(direction));
   double best = std::numeric_limits<double>::infinity();
+  std::uint32_t material = 0;
   for (const MeshInstance& instance : scene.instances) {
     const Mesh& mesh = scene.meshes[instance.mesh];
     const glm::dmat4 m(instance.transform);
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
       glm::dvec3 v[3];
       for (int k = 0; k < 3; ++k) v[k] = glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[i + k]]), 1.0));
-      if (const auto t = hitTriangle(o, d, v[0], v[1], v[2]); t && *t < best) best = *t;
+      if (const auto t = hitTriangle(o, d, v[0], v[1], v[2]); t && *t < best) {
+        best = *t;
+        material = instance.material;
+      }
     }
   }
   for (const Sphere& sphere : scene.spheres) {
-    if (const auto t = hitSphere(o, d, glm::dvec3(sphere.center), sphere.radius); t && *t < best) best = *t;
+    if (const auto t = hitSphere(o, d, glm::dvec3(sphere.center), sphere.radius); t && *t < best) {
+      best = *t;
+      material = sphere.material;
+    }
   }
   if (!std::isfinite(best)) return std::nullopt;
-  return float(best);
+  return SceneHit{float(best), material};
+}
+
+std::optional<float> firstHitDistance(const Scene& scene, glm::vec3 origin, glm::vec3 direction) {
+  const std::optional<SceneHit> hit = firstHit(scene, origin, direction);
+  if (!hit) return std::nullopt;
+  return hit->distance;
 }
 
 glm::vec3 orbitPivot(const Scene& scene, glm::vec3 position, glm::vec3 direction) {

@@ -10,8 +10,14 @@
 
 namespace raylab {
 
-// Distance along the unit `direction` from `origin` to the first triangle or sphere of `scene`, if any.
-// A plain CPU ray cast over every triangle: run once per loaded camera, not per frame.
+// The first triangle or sphere of `scene` along the unit `direction` from `origin`: its distance and material.
+// A plain CPU ray cast over every triangle, in double precision: for a loaded camera's pivot and for the
+// viewer's picking (a click), not per pixel.
+struct SceneHit {
+  float distance = 0.0f;
+  std::uint32_t material = 0;
+};
+std::optional<SceneHit> firstHit(const Scene& scene, glm::vec3 origin, glm::vec3 direction);
 std::optional<float> firstHitDistance(const Scene& scene, glm::vec3 origin, glm::vec3 direction);
 
 // Where the camera's view ray meets the scene; when it meets nothing, the point of the view ray nearest to

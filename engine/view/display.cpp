@@ -19,6 +19,7 @@ constexpr VkImageLayout kRestingLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
 constexpr DescriptorBinding kBindings[] = {
     {gpu::kBindingDisplayAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {gpu::kBindingDisplayTexels, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {gpu::kBindingDisplayCompare, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
 };
 
 // To a transfer, from `srcStage`: every transition of the display's images ends in a copy or a blit.
@@ -144,6 +145,10 @@ void bindAccumulation(const Device& device, const Display& display, VkBuffer acc
   writeStorageBuffer(device, display.kernel.descriptors.set, gpu::kBindingDisplayAccumulation, accumulation);
 }
 
+void bindCompared(const Device& device, const Display& display, VkBuffer accumulation) {
+  writeStorageBuffer(device, display.kernel.descriptors.set, gpu::kBindingDisplayCompare, accumulation);
+}
+
 void recordClearDisplay(VkCommandBuffer cmd, const Display& display) {
   const VkClearColorValue black{{0.0f, 0.0f, 0.0f, 1.0f}};
   const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
@@ -166,6 +171,11 @@ void recordDisplayRegions(VkCommandBuffer cmd, const Display& display, const Dis
   params.flags = display.format == VK_FORMAT_B8G8R8A8_UNORM || display.format == VK_FORMAT_B8G8R8A8_SRGB
                      ? gpu::kDisplayBgra
                      : 0u;
+  constexpr std::uint32_t kModes[] = {gpu::kDisplayImage, gpu::kDisplaySplit, gpu::kDisplayDifference,
+                                      gpu::kDisplayRelativeDifference};
+  params.mode = kModes[static_cast<int>(settings.mode)];
+  params.splitColumn = static_cast<std::uint32_t>(std::lround(settings.divider * float(size.x)));
+  params.differenceScale = settings.differenceScale > 0.0f ? settings.differenceScale : 1.0f;
   // The previous frame's copies read the texel buffer: write after them.
   VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   before.dstAccessMask = VK_ACCESS_SHADER_WRITE_BIT;

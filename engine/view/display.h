@@ -40,9 +40,15 @@ struct Display {
   bool linearBlit = false;                // the format filters linearly: stretched blits are smooth
 };
 
+// What the display pass shows: the image, or with a comparison the split view or a difference.
+enum class DisplayMode { kImage, kSplit, kDifference, kRelativeDifference };
+
 struct DisplaySettings {
   float exposure = 0.0f;  // stops
   ToneMap toneMap = ToneMap::kClamp;
+  DisplayMode mode = DisplayMode::kImage;
+  float divider = 0.5f;            // kSplit: the fraction of the width where the compared image starts
+  float differenceScale = 0.1f;    // a difference this large shows at the top of the colour ramp
 
   bool operator==(const DisplaySettings&) const = default;
 };
@@ -54,8 +60,10 @@ void destroyDisplay(const Device& device, Display& display);
 
 // A new size (the device must be idle); both images start black.
 void resizeDisplay(const Device& device, Display& display, glm::uvec2 extent);
-// The accumulation buffer to read (after the renderer reallocated it; the device must be idle).
+// The accumulation buffer to read (after the renderer reallocated it; the device must be idle), and the
+// compared image's (the split view; the same buffer when nothing is compared).
 void bindAccumulation(const Device& device, const Display& display, VkBuffer accumulation);
+void bindCompared(const Device& device, const Display& display, VkBuffer accumulation);
 
 // Clears both images to black (after creation and resizes).
 void recordClearDisplay(VkCommandBuffer cmd, const Display& display);

@@ -10,7 +10,7 @@
 #include "brdf_params/material_params.h"
 #include "shared/features.h"
 #include "util/progress.h"
-#include "view_logic/scene_edits.h"
+#include "view/material_editor.h"
 
 namespace raylab {
 
@@ -24,51 +24,6 @@ float listHeight(float rows) {
 
 std::string itemLabel(const std::string& name, const char* kind, std::size_t index) {
   return name.empty() ? std::string(kind) + " " + std::to_string(index) : name;
-}
-
-// One slider (or colour editor) per parameter, over the contract's range; log-scale parameters get a
-// logarithmic slider. Returns true when the value changed.
-bool drawParam(gpu::MaterialRecord& record, const ParamInfo& param) {
-  glm::vec3 value = getParam(record, param.name);
-  const std::string label(param.name);
-  bool changed = false;
-  if (param.rgb && param.min == 0.0f && param.max == 1.0f) {
-    changed = ImGui::ColorEdit3(label.c_str(), &value.x, ImGuiColorEditFlags_Float);
-  } else if (param.rgb) {
-    changed = ImGui::SliderFloat3(label.c_str(), &value.x, param.min, param.max, "%.3g", ImGuiSliderFlags_AlwaysClamp);
-  } else {
-    ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
-    if (param.logScale) flags |= ImGuiSliderFlags_Logarithmic;
-    changed = ImGui::SliderFloat(label.c_str(), &value.x, param.min, param.max, "%.4g", flags);
-    value = glm::vec3(value.x);
-  }
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("%s [%g, %g]", std::string(param.meaning).c_str(), param.min, param.max);
-  }
-  if (changed) {
-    value = glm::clamp(value, glm::vec3(param.min), glm::vec3(param.max));
-    setParam(record, param.name, value, "panel");
-  }
-  return changed;
-}
-
-bool drawMaterial(Material& material) {
-  bool changed = false;
-  gpu::MaterialRecord& record = material.record;
-  const ModelInfo& current = modelInfo(record.model);
-  if (ImGui::BeginCombo("model", std::string(current.name).c_str())) {
-    for (const ModelInfo& model : allModels()) {
-      const bool selected = model.id == record.model;
-      if (ImGui::Selectable(std::string(model.name).c_str(), selected) && !selected) {
-        switchModel(record, model.id);
-        changed = true;
-      }
-    }
-    ImGui::EndCombo();
-  }
-  for (const ParamInfo& param : modelInfo(record.model).params) changed |= drawParam(record, param);
-  changed |= drawParam(record, deltaParam());
-  return changed;
 }
 
 // The environment image's strength and rotation about +Y, or the uniform background without an image.
@@ -120,7 +75,7 @@ std::string statusLine(const PanelStatus& status) {
 }
 
 PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selection, const PanelStatus& status,
-                     float sceneSize, float height) {
+                     float sceneSize, float height, const std::function<void()>& materialSections) {
   PanelEdits edits;
   // Docked to the left edge, beside the image: a floating panel hid a third of a 960x540 window.
   ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
@@ -182,9 +137,10 @@ PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selec
       ImGui::EndListBox();
     }
     ImGui::PushID("material");
-    edits.materials |= drawMaterial(scene.materials[selection.material]);
+    edits.materials |= drawMaterialEditor(scene.materials[selection.material].record);
     ImGui::PopID();
   }
+  if (materialSections) materialSections();
 
   if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen) && !scene.lights.empty()) {
     selection.light = std::min<std::size_t>(selection.light, scene.lights.size() - 1);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -58,8 +59,9 @@ struct PanelEdits {
 inline constexpr std::uint32_t kPanelWidth = 320;
 
 // Draws the panel in the strip [0, kPanelWidth) x [0, height); it scrolls when taller than the window.
+// `materialSections` adds sections after the materials' (the comparison, the picked pixel, the lobe plot).
 PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selection, const PanelStatus& status,
-                     float sceneSize, float height);
+                     float sceneSize, float height, const std::function<void()>& materialSections = {});
 
 // "12 spp  640x360  48.2 ms/frame  3.1 Mrays/s" (also printed by automation runs).
 std::string statusLine(const PanelStatus& status);

@@ -148,7 +148,7 @@ void recordUi(VkCommandBuffer cmd, const Ui& ui, const Swapchain& swapchain, std
   // so the rest of the window needs no load or store; without any, there is no render pass at all.
   const ImDrawData* data = ImGui::GetDrawData();
   VkRect2D area{};
-  if (ui.visible && data != nullptr) {
+  if (data != nullptr) {
     ImVec2 lo(FLT_MAX, FLT_MAX), hi(-FLT_MAX, -FLT_MAX);
     for (int list = 0; list < data->CmdListsCount; ++list) {
       for (const ImDrawCmd& command : data->CmdLists[list]->CmdBuffer) {

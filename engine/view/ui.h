@@ -17,7 +17,6 @@ struct Ui {
   VkRenderPass renderPass = VK_NULL_HANDLE;
   std::vector<VkFramebuffer> framebuffers;  // one per swapchain image
   VkFormat format = VK_FORMAT_UNDEFINED;
-  bool visible = true;
 };
 
 // Creates the ImGui context and both backends; uploads the font atlas. `window` must already have its own
@@ -30,8 +29,8 @@ void recreateUiFramebuffers(const Device& device, Ui& ui, const Swapchain& swapc
 // Starts an ImGui frame; build the panel between this and recordUi.
 void beginUiFrame();
 // Finishes the ImGui frame and records its render pass over swapchain image `imageIndex`, which must be in
-// TRANSFER_DST_OPTIMAL (after the blit); leaves it in PRESENT_SRC_KHR. Hidden UI draws nothing but still
-// makes the layout transition.
+// TRANSFER_DST_OPTIMAL (after the blit); leaves it in PRESENT_SRC_KHR. A frame that drew nothing (the panel
+// hidden, no overlay) still makes the layout transition.
 void recordUi(VkCommandBuffer cmd, const Ui& ui, const Swapchain& swapchain, std::uint32_t imageIndex);
 
 // Whether ImGui wants the mouse or keyboard this frame (a slider drag, a text field): the camera leaves them.

@@ -22,13 +22,16 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
 
   beginUiFrame();
   PanelEdits edits;
-  if (v.ui.visible) {
+  if (v.panelShown) {
     updateStatus(v);
+    updateDifferenceStats(v);
     edits = drawPanel(v.scene, v.settings, v.selection, v.status, v.controller.sceneSize,
-                      float(v.swapchain.extent.height));
+                      float(v.swapchain.extent.height), [&v] { drawComparisonSections(v); });
   }
-  if (updateCamera(v.controller, v.camera, pollCameraInput(v.window, input, v.cursor), !uiWantsMouse(),
-                   !uiWantsKeyboard(), now - v.lastCameraUpdate)) {
+  const bool cameraBlocked = handlePointer(v);  // dragging the divider, not the camera
+  drawOverlay(v);
+  if (updateCamera(v.controller, v.camera, pollCameraInput(v.window, input, v.cameraCursor),
+                   !uiWantsMouse() && !cameraBlocked, !uiWantsKeyboard(), now - v.lastCameraUpdate)) {
     v.pending.accumulation = true;
   }
   v.lastCameraUpdate = now;
@@ -60,6 +63,12 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
     setMaxDepth(v.renderer, v.settings.maxDepth);
     setSceneLighting(v.renderer, v.scene);
     setCamera(v.renderer, v.camera);
+    if (v.comparison.active) {
+      setTraceExtent(v.comparison.renderer, plan.traceExtent);
+      setMaxDepth(v.comparison.renderer, v.settings.maxDepth);
+      setSceneLighting(v.comparison.renderer, v.scene);
+      setCamera(v.comparison.renderer, v.camera);
+    }
   }
 
   const bool capture = !v.options.windowCapture.empty() && v.options.frames && v.frameIndex + 1 == *v.options.frames;

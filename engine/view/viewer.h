@@ -12,6 +12,7 @@
 #include "image/image.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
+#include "view_logic/compare_spec.h"
 #include "view_logic/script.h"
 
 namespace raylab {
@@ -28,6 +29,7 @@ struct ViewerOptions {
   float exposure = 0.0f;
   ToneMap toneMap = ToneMap::kClamp;
   bool panel = true;
+  std::optional<CompareSpec> compare;  // open the split view with this material switched (--compare)
 
   // Automation. With `frames`, the viewer runs that many frames and exits, deterministically: a frame with a
   // change (a script event) draws the preview, every other frame, the first included, adds exactly one

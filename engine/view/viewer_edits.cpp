@@ -29,6 +29,7 @@ void saveScreenshot(Viewer& v, const std::string& exrPath, const std::string& pn
   writePng(pngPath, image, v.settings.exposure, v.settings.toneMap);
   v.status.message = "saved " + exrPath + " (" + std::to_string(v.scheduler.sampleIndex) + " spp)";
   if (!v.options.quiet) std::printf("wrote %s\nwrote %s\n", exrPath.c_str(), pngPath.c_str());
+  saveComparison(v, exrPath);
 }
 
 void uploadSceneEdits(Viewer& v, bool materials, bool lights) {
@@ -38,6 +39,7 @@ void uploadSceneEdits(Viewer& v, bool materials, bool lights) {
   if (lights) updateLights(v.device, v.gpuScene, v.scene.lights);
   v.needed = neededKernel(v);
   ensureKernel(v);
+  if (materials) refreshComparison(v);
   v.pending.accumulation = true;
 }
 
@@ -113,6 +115,13 @@ void applyScriptEvents(Viewer& v) {
         saveScreenshot(v, paths.exr, paths.png);
         break;
       }
+      case ScriptAction::kCompare:
+      case ScriptAction::kSetDivider:
+      case ScriptAction::kSetDifference:
+      case ScriptAction::kPick:
+      case ScriptAction::kSaveLobe:
+        applyCompareEvent(v, event);
+        break;
     }
     if (event.action == ScriptAction::kOrbit || event.action == ScriptAction::kPan ||
         event.action == ScriptAction::kZoom) {
@@ -129,7 +138,6 @@ void handleHotKeys(Viewer& v, const WindowInput& input) {
     if (key == GLFW_KEY_ESCAPE) requestWindowClose(v.window);
     if (key == GLFW_KEY_F1 || key == GLFW_KEY_TAB) {
       v.panelShown = !v.panelShown;
-      v.ui.visible = v.panelShown;
       v.pending.extent = true;  // the image takes the panel's strip, or gives it back
     }
     if (key == GLFW_KEY_F12 || key == GLFW_KEY_P) {

@@ -111,15 +111,24 @@ void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, slot.timestamps, kFrameBegin);
   computeBarrier(cmd);  // after the previous frame's passes and the uploads
 
+  // Both sides of a comparison trace the same passes: the same pixels, sample indices and seed.
+  const Renderer* sides[2] = {&v.renderer, v.comparison.active ? &v.comparison.renderer : nullptr};
   if (plan != nullptr && plan->reset) {
     const VkDeviceSize bytes = VkDeviceSize(plan->traceExtent.x) * plan->traceExtent.y * sizeof(glm::vec4);
-    vkCmdFillBuffer(cmd, v.renderer.accumulation.handle, 0, bytes, 0);
+    for (const Renderer* side : sides) {
+      if (side != nullptr) vkCmdFillBuffer(cmd, side->accumulation.handle, 0, bytes, 0);
+    }
     computeBarrier(cmd);
   }
-  recordResetRayStats(cmd, v.renderer);
+  for (const Renderer* side : sides) {
+    if (side != nullptr) recordResetRayStats(cmd, *side);
+  }
   if (plan != nullptr) {
-    for (const TracePass& pass : plan->passes) {
-      recordSamplePass(cmd, v.renderer, pass.sampleIndex, pass.tile.origin, pass.tile.size);
+    for (const Renderer* side : sides) {
+      if (side == nullptr) continue;
+      for (const TracePass& pass : plan->passes) {
+        recordSamplePass(cmd, *side, pass.sampleIndex, pass.tile.origin, pass.tile.size);
+      }
     }
   }
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, slot.timestamps, kTraceEnd);
@@ -128,7 +137,7 @@ void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_
   // The display pass: the whole preview while moving; while refining only the tiles traced this frame (the
   // refined image keeps its texels), which saves most of the pass at large sizes.
   const glm::uvec2 traced = v.scheduler.traceExtent;
-  const DisplaySettings display{v.settings.exposure, v.settings.toneMap};
+  const DisplaySettings display = displaySettings(v);
   const bool settingsChanged = !(display == v.lastDisplay) || v.pending.display;
   const bool traceDone = plan != nullptr && !plan->passes.empty();
   if (traced.x > 0 && traced.y > 0 && v.scheduler.preview) {

@@ -52,6 +52,7 @@ void switchIntegrator(Viewer& v) {
   v.integrator = v.settings.integrator;
   v.needed = neededKernel(v);
   ensureKernel(v);
+  refreshComparison(v);
   v.pending.accumulation = true;
 }
 

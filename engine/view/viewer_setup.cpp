@@ -96,9 +96,9 @@ void setUp(Viewer& v) {
 
   v.display = createDisplay(v.device, v.swapchain.format, full);
   bindAccumulation(v.device, v.display, v.renderer.accumulation.handle);
+  bindCompared(v.device, v.display, v.renderer.accumulation.handle);  // until something is compared
   submitAndWait(v.device, [&](VkCommandBuffer cmd) { recordClearDisplay(cmd, v.display); });
   v.ui = createUi(v.instance, v.device, v.window, v.swapchain);
-  v.ui.visible = v.panelShown;
   for (FrameSlot& slot : v.slots) slot = createFrameSlot(v.device);
 
   v.scheduler.settings.targetFrameSeconds = v.options.targetMs / 1000.0;
@@ -112,6 +112,7 @@ void setUp(Viewer& v) {
   v.settings.toneMap = v.options.toneMap;
   v.settings.targetMs = static_cast<float>(v.options.targetMs);
   v.report.fullExtent = full;
+  if (v.options.compare) startComparing(v, *v.options.compare);
 }
 
 void tearDown(Viewer& v) {
@@ -121,6 +122,8 @@ void tearDown(Viewer& v) {
     if (v.device.handle != VK_NULL_HANDLE) destroyFrameSlot(v.device, slot);
   }
   if (v.device.handle != VK_NULL_HANDLE) {
+    destroyLobePlot(v.device, v.lobe);
+    stopComparison(v.device, v.comparison);
     destroyUi(v.device, v.ui);
     destroyDisplay(v.device, v.display);
     destroySwapchain(v.device, v.swapchain);
@@ -141,8 +144,12 @@ void updateFullExtent(Viewer& v) {
   if (full == v.scheduler.fullExtent) return;
   waitForFrames(v);
   resizeRenderer(v.device, v.renderer, full.x, full.y);
+  if (v.comparison.active) resizeRenderer(v.device, v.comparison.renderer, full.x, full.y);
   resizeDisplay(v.device, v.display, full);
   bindAccumulation(v.device, v.display, v.renderer.accumulation.handle);
+  bindCompared(v.device, v.display,
+               (v.comparison.active ? v.comparison.renderer : v.renderer).accumulation.handle);
+  v.difference = {};
   submitAndWait(v.device, [&](VkCommandBuffer cmd) { recordClearDisplay(cmd, v.display); });
   setFullExtent(v.scheduler, full);
   v.report.fullExtent = full;

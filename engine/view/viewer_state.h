@@ -17,15 +17,19 @@
 #include "render/renderer.h"
 #include "util/timer.h"
 #include "view/camera_input.h"
+#include "view/compare_ui.h"
+#include "view/comparison.h"
 #include "view/display.h"
 #include "view/frame_slot.h"
 #include "view/kernel_build.h"
+#include "view/lobe_plot.h"
 #include "view/panel.h"
 #include "view/swapchain.h"
 #include "view/ui.h"
 #include "view/viewer.h"
 #include "view/window.h"
 #include "view_logic/camera_controller.h"
+#include "view_logic/pointer.h"
 #include "view_logic/scheduler.h"
 
 namespace raylab {
@@ -37,6 +41,9 @@ constexpr double kResizeTimeout = 5.0;  // seconds a scripted resize may take
 constexpr double kRaysWindow = 1.0;     // rays/s over this many seconds of frames
 constexpr double kIdleWaitSeconds = 0.5;    // idle: the status line still refreshes this often
 constexpr double kBuildPollSeconds = 0.05;  // a kernel build's end is noticed within this
+constexpr double kDifferenceSeconds = 1.0;  // the difference statistics read both images back at most this often
+constexpr double kHoverSeconds = 0.1;       // the hovered material is cast for at most this often
+constexpr std::uint64_t kHoverTriangles = 200'000;  // above this the CPU cast is too slow for hovering
 
 // Set by events, cleared by the step named: the viewer's state machine.
 struct Pending {
@@ -72,7 +79,7 @@ struct Viewer {
 
   Scheduler scheduler;
   CameraController controller;
-  CursorTracker cursor;
+  CursorTracker cameraCursor;
   Camera camera;
   ViewSettings settings;
   PanelStatus status;
@@ -95,6 +102,20 @@ struct Viewer {
   double frameMs = 0.0;
   std::deque<std::pair<double, std::uint64_t>> recentRays;  // (completion time, rays of that frame)
   ViewerReport report;
+
+  // The comparison (viewer_compare.cpp): the right side, how it shows, and the mouse over the image.
+  Comparison comparison;
+  gpu::MaterialRecord comparedRecord{};  // the panel's copy of comparison.spec.record
+  CompareView compareView;
+  DifferenceStats difference;
+  double lastDifference = -kDifferenceSeconds;
+  PointerState pointer;
+  glm::vec2 cursor{0.0f};
+  std::optional<PickedPixel> picked;
+  std::string hovered;  // the material under the cursor
+  glm::vec2 hoveredAt{-1.0f};
+  double lastHover = 0.0;
+  LobePlot lobe;
 };
 
 // viewer_setup.cpp
@@ -129,5 +150,24 @@ bool covers(const KernelFeatures& kernel, const KernelFeatures& needed);
 void installKernel(Viewer& v);
 void ensureKernel(Viewer& v);
 void switchIntegrator(Viewer& v);
+
+// viewer_compare.cpp
+void startComparing(Viewer& v, const CompareSpec& spec);
+void stopComparing(Viewer& v);
+// After the scene's materials or the integrator changed: the right side follows (the device idle).
+void refreshComparison(Viewer& v);
+// The mouse over the image: divider drags, clicks (picking) and hovering; true while the camera must stay still.
+bool handlePointer(Viewer& v);
+// Selects the material under `fraction` of the image and reads that pixel of both sides.
+void pickAt(Viewer& v, glm::vec2 fraction);
+// The panel's Compare, Picked pixel and Lobe sections.
+void drawComparisonSections(Viewer& v);
+void drawOverlay(Viewer& v);
+void updateDifferenceStats(Viewer& v);
+DisplaySettings displaySettings(const Viewer& v);
+// With a comparison, FILE_compare.exr (the right side) and FILE_difference.exr (|A - B|) beside a screenshot.
+void saveComparison(Viewer& v, const std::string& exrPath);
+void saveLobe(Viewer& v, const std::string& path);
+void applyCompareEvent(Viewer& v, const ScriptEvent& event);
 
 }  // namespace raylab

@@ -11,6 +11,7 @@
 #include "shared/scene_records.h"
 #include "util/error.h"
 #include "util/files.h"
+#include "view_logic/compare_spec.h"
 #include "view_logic/scene_edits.h"
 
 namespace raylab {
@@ -76,7 +77,7 @@ void readValues(ScriptEvent& event, const std::vector<std::string>& words, std::
 ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& where) {
   if (words.size() < 3 || words[0] != "at") {
     throw Error(where + ": expected 'at <frame> <action> ...' (actions: orbit, pan, zoom, set, model, resize, "
-                        "screenshot)");
+                        "screenshot, compare, pick, save)");
   }
   ScriptEvent event;
   event.where = where;
@@ -123,9 +124,24 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
     }
     // Events of frame N apply before frame N is traced: at frame 0 nothing has been traced yet.
     if (event.frame == 0) throw Error(where + ": a screenshot at frame 0 would be black (nothing traced yet); use 1 or later");
+  } else if (action == "compare") {
+    expectWords(words, 4, where, "at <frame> compare <material>=<model>[:k=v,...] | off");
+    event.action = ScriptAction::kCompare;
+    event.name = words[3];  // checked against the scene by applyToScene
+  } else if (action == "pick") {
+    expectWords(words, 5, where, "at <frame> pick <x> <y>");
+    event.action = ScriptAction::kPick;
+    event.value = glm::vec3(float(parseCount(words[3], where, "x")), float(parseCount(words[4], where, "y")), 0.0f);
+    event.valueCount = 2;
+  } else if (action == "save") {
+    if (words.size() != 5 || words[3] != "lobe") throw Error(where + ": expected 'at <frame> save lobe <file.csv>'");
+    event.action = ScriptAction::kSaveLobe;
+    event.name = words[4];
+    if (std::filesystem::path(event.name).extension() != ".csv") throw Error(where + ": the lobe file must end in .csv");
   } else if (action == "set") {
     if (words.size() < 5) {
-      throw Error(where + ": expected 'at <frame> set material|light|exposure|max-depth|integrator|environment ...'");
+      throw Error(where + ": expected 'at <frame> set material|light|exposure|max-depth|integrator|environment|"
+                          "divider|difference ...'");
     }
     const std::string& what = words[3];
     if (what == "material") {
@@ -193,13 +209,29 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
         throw Error(where + ": the environment's " + property + " must be finite" +
                     (property == "strength" ? " and >= 0" : ""));
       }
+    } else if (what == "divider") {
+      expectWords(words, 5, where, "at <frame> set divider <fraction>");
+      event.action = ScriptAction::kSetDivider;
+      readValues(event, words, 4, "the divider");
+      if (!(event.value.x >= 0.0f && event.value.x <= 1.0f)) throw Error(where + ": the divider must be within [0, 1]");
+    } else if (what == "difference") {
+      if (words.size() != 5 && words.size() != 6) {
+        throw Error(where + ": expected 'at <frame> set difference off|absolute|relative [<scale>]'");
+      }
+      event.action = ScriptAction::kSetDifference;
+      event.param = words[4];
+      if (event.param != "off" && event.param != "absolute" && event.param != "relative") {
+        throw Error(where + ": the difference view is off, absolute or relative, not '" + event.param + "'");
+      }
+      readValues(event, words, 5, "the difference scale");
+      if (event.valueCount == 1 && !(event.value.x > 0.0f)) throw Error(where + ": the difference scale must be > 0");
     } else {
-      throw Error(where + ": 'set' takes material, light, exposure, max-depth, integrator or environment, not '" +
-                  what + "'");
+      throw Error(where + ": 'set' takes material, light, exposure, max-depth, integrator, environment, divider or "
+                  "difference, not '" + what + "'");
     }
   } else {
     throw Error(where + ": unknown action '" + action +
-                "' (actions: orbit, pan, zoom, set, model, resize, screenshot)");
+                "' (actions: orbit, pan, zoom, set, model, resize, screenshot, compare, pick, save)");
   }
   return event;
 }
@@ -282,6 +314,9 @@ SceneEffect applyToScene(const ScriptEvent& event, Scene& scene) {
       effect.lights = true;
       break;
     }
+    case ScriptAction::kCompare:
+      if (event.name != "off") parseCompareSpec(event.name, scene, event.where);
+      break;
     default:
       break;
   }
@@ -294,7 +329,17 @@ void checkScript(const std::vector<ScriptEvent>& events, const Scene& original) 
 }
 
 bool resetsAccumulation(const ScriptEvent& event) {
-  return event.action != ScriptAction::kScreenshot && event.action != ScriptAction::kSetExposure;
+  switch (event.action) {
+    case ScriptAction::kScreenshot:
+    case ScriptAction::kSetExposure:
+    case ScriptAction::kSetDivider:
+    case ScriptAction::kSetDifference:
+    case ScriptAction::kPick:
+    case ScriptAction::kSaveLobe:
+      return false;
+    default:
+      return true;
+  }
 }
 
 }  // namespace raylab

@@ -18,6 +18,11 @@
 //   at <frame> model <material> <model>
 //   at <frame> resize <width> <height>
 //   at <frame> screenshot <file.exr|file.png>      also writes the other beside it; frame >= 1
+//   at <frame> compare <material>=<model>[:k=v,...]  the split view (as view --compare); `compare off` ends it
+//   at <frame> set divider <fraction>              the split view's divider, 0 (left edge) to 1
+//   at <frame> set difference off|absolute|relative [<scale>]   the difference view and its colour scale
+//   at <frame> pick <x> <y>                        as a click on image pixel (x, y): selects its material
+//   at <frame> save lobe <file.csv>                the selected material's lobe plot and albedo curve
 //
 // Names containing spaces are written in double quotes. Events of one frame apply in file order, before that
 // frame is traced.
@@ -50,6 +55,11 @@ enum class ScriptAction {
   kModel,
   kResize,
   kScreenshot,
+  kCompare,        // name: the MATERIAL=MODEL[:k=v,...] spec, or "off"
+  kSetDivider,     // value.x in [0, 1]
+  kSetDifference,  // param: "off", "absolute" or "relative"; value.x the scale when valueCount is 1
+  kPick,           // value.xy: the image pixel
+  kSaveLobe,       // name: the CSV file
 };
 
 struct ScriptEvent {
@@ -72,15 +82,15 @@ struct SceneEffect {
   bool lights = false;     // upload the lights
 };
 
-// Applies a material, model or light event to `scene` (other events touch nothing here). Throws Error naming
-// the line when a name or value is wrong.
+// Applies a material, model or light event to `scene` (other events touch nothing here), and checks a compare
+// event's spec against it. Throws Error naming the line when a name or value is wrong.
 SceneEffect applyToScene(const ScriptEvent& event, Scene& scene);
 
 // Applies the whole script to a copy of `scene`, so that a typo fails before the window opens.
 void checkScript(const std::vector<ScriptEvent>& events, const Scene& scene);
 
-// True for events after which the accumulated samples are stale (all but screenshots and exposure, which
-// only the display pass uses).
+// True for events after which the accumulated samples are stale (not screenshots, exposure, the divider, the
+// difference view, picks or lobe files, which only the display pass or the panel use).
 bool resetsAccumulation(const ScriptEvent& event);
 
 }  // namespace raylab

@@ -99,16 +99,16 @@ void uploadBuffer(const Device& device, const Buffer& buffer, const void* data, 
   destroyBuffer(device, staging);
 }
 
-void downloadBuffer(const Device& device, const Buffer& buffer, void* data, VkDeviceSize size) {
+void downloadBuffer(const Device& device, const Buffer& buffer, void* data, VkDeviceSize size, VkDeviceSize offset) {
   if (size == 0) return;
   if (buffer.mapped != nullptr) {
-    std::memcpy(data, buffer.mapped, size);
+    std::memcpy(data, static_cast<const std::byte*>(buffer.mapped) + offset, size);
     return;
   }
   Buffer staging =
       createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kHost, "staging download");
   submitAndWait(device, [&](VkCommandBuffer cmd) {
-    const VkBufferCopy region{0, 0, size};
+    const VkBufferCopy region{offset, 0, size};
     vkCmdCopyBuffer(cmd, buffer.handle, staging.handle, 1, &region);
     computeBarrier(cmd);
   });

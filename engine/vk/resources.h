@@ -38,7 +38,9 @@ void uploadBuffer(const Device& device, const Buffer& buffer, std::span<const T>
   uploadBuffer(device, buffer, data.data(), data.size_bytes());
 }
 
-void downloadBuffer(const Device& device, const Buffer& buffer, void* data, VkDeviceSize size);
+// Copies `size` bytes from `offset` of the buffer to the host (waits for the device).
+void downloadBuffer(const Device& device, const Buffer& buffer, void* data, VkDeviceSize size,
+                    VkDeviceSize offset = 0);
 
 // A device-local buffer holding `data`, ready for shaders (and AS builds when usage says so).
 template <class T>

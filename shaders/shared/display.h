@@ -13,6 +13,13 @@ RL_CONST uint kDisplayWorkgroupSize = 8;  // display.comp: kDisplayWorkgroupSize
 // Bindings of display.comp (its own set 0).
 RL_CONST uint kBindingDisplayAccumulation = 0;  // vec4[] radiance sum and sample count, `size` pixels
 RL_CONST uint kBindingDisplayTexels = 1;        // uint[] one 8-bit RGBA or BGRA texel per pixel, `size` pixels
+RL_CONST uint kBindingDisplayCompare = 2;       // vec4[] the compared image's accumulation (the viewer's split view)
+
+// DisplayParams.mode
+RL_CONST uint kDisplayImage = 0;               // the accumulation
+RL_CONST uint kDisplaySplit = 1;               // the accumulation left of splitColumn, the compared image from it on
+RL_CONST uint kDisplayDifference = 2;          // |A - B| (the largest channel) in false colour, 1 at differenceScale
+RL_CONST uint kDisplayRelativeDifference = 3;  // |A - B| / max(A, B), likewise
 
 // DisplayParams.toneMap: the curves of engine/image (ToneMap), in the same order.
 RL_CONST uint kDisplayToneClamp = 0;
@@ -30,9 +37,11 @@ struct DisplayParams {
   float exposureScale;  // 2^exposure
   uint toneMap;
   uint flags;
-  uint reserved;
+  uint mode;             // kDisplay...
+  uint splitColumn;      // kDisplaySplit: the first column of the compared image
+  float differenceScale; // kDisplay*Difference: the difference shown at the top of the colour ramp
 };
-RL_CHECK_SIZE(DisplayParams, 32);
+RL_CHECK_SIZE(DisplayParams, 40);
 
 RL_NAMESPACE_END
 

@@ -1,10 +1,11 @@
-"""ctest python_tools_test: runs raylab's Python tools (BRDF plot, speed against error, sampling study) as a user
-would, in a tiny mode, and checks what they
-write. Standard library only, run by the system python3; the tools themselves run with .venv/bin/python.
+"""ctest python_tools_test: runs raylab's Python tools (BRDF plot, speed against error, sampling study, image
+difference) as a user would, in a tiny mode, and checks what they write. Standard library only, run by the
+system python3; the tools themselves run with .venv/bin/python.
 
     python_tools_test.py RAYLAB SOURCE_DIR WORK_DIR
 """
 import csv
+import json
 import math
 import shutil
 import subprocess
@@ -98,6 +99,29 @@ def sampling_study(python: Path, source: Path, raylab: Path, work: Path) -> None
     check_png(out / "sampling_study.png", 10 * 1024)
 
 
+def image_diff(python: Path, source: Path, raylab: Path, work: Path) -> None:
+    """The viewer's two sides, rendered offscreen: a material against itself is 0 in every figure, against
+    another model it is not."""
+    scene = source / "assets" / "scenes" / "minimal.gltf"
+    images = {}
+    for name, material in (("same", "red plastic=cooktorrance:rho_d=0.6/0.1/0.1,rho_s=1,m=0.2,eta=1.5"),
+                           ("ward", "red plastic=ward:alpha_x=0.3,alpha_y=0.1")):
+        images[name] = work / f"diff_{name}.exr"
+        run([raylab, "render", scene, "--width", "64", "--height", "48", "--spp", "2", "--no-png",
+             "--out", images[name], "--material", material])
+    plain = work / "diff_plain.exr"
+    run([raylab, "render", scene, "--width", "64", "--height", "48", "--spp", "2", "--no-png", "--out", plain])
+    for name, expect_zero in (("same", True), ("ward", False)):
+        figures_path = work / f"diff_{name}.json"
+        run([python, source / "tools" / "image_diff.py", plain, images[name], "--json", figures_path])
+        figures = json.loads(figures_path.read_text())
+        check(set(figures) == {"mean_abs", "max_abs", "rmse", "relmse", "flip"}, f"{figures_path}: {figures}")
+        if expect_zero:
+            check(all(value == 0.0 for value in figures.values()), f"the same material differs: {figures}")
+        else:
+            check(figures["mean_abs"] > 1e-3 and 0.0 < figures["flip"] < 1.0, f"two models look alike: {figures}")
+
+
 def main() -> None:
     raylab, source, work = (Path(arg).resolve() for arg in sys.argv[1:4])
     python = source / ".venv" / "bin" / "python"
@@ -110,6 +134,7 @@ def main() -> None:
     brdf_plot(python, source, raylab, work)
     speed_vs_error(python, source, raylab, work)
     sampling_study(python, source, raylab, work)
+    image_diff(python, source, raylab, work)
     print("python_tools_test: passed")
 
 

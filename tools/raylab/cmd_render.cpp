@@ -23,6 +23,7 @@
 #include "util/atomic_file.h"
 #include "util/progress.h"
 #include "util/timer.h"
+#include "view_logic/compare_spec.h"
 
 namespace raylab {
 
@@ -49,6 +50,7 @@ struct RenderOptions {
   std::string backend = "auto";
   std::string schedule = "auto";
   std::optional<std::uint32_t> device;
+  std::vector<std::string> materials;  // --material MATERIAL=MODEL[:k=v,...]
 };
 
 // The figures the command prints, for scripts (tools/speed_vs_error.py): seconds, counts and what was rendered.
@@ -166,6 +168,10 @@ void render(RenderOptions o) {
   }
 
   Scene scene = loadScene(request);
+  for (const std::string& text : o.materials) {
+    const CompareSpec spec = parseCompareSpec(text, scene, "raylab render: --material");
+    scene.materials[spec.material].record = spec.record;
+  }
   KernelFeatures kernel = o.allFeatures ? allFeatures() : featuresOf(scene);
   kernel.schlickFresnel = o.fresnel == "schlick";
   kernel.integrator = chooseIntegrator(scene, parseIntegratorChoice(o.integrator));
@@ -274,6 +280,9 @@ void addRenderCommand(CLI::App& raylab) {
         return kExitOk;
       });
   addSceneOptions(command, o->request);
+  addTextList(command, "--material", o->materials, "MATERIAL=MODEL[:k=v,...]",
+              "render MATERIAL as MODEL with these parameters (RGB as r/g/b; the others take the model's defaults); "
+              "the right side of `raylab view --compare` with the same text");
   addImageSizeOptions(command, o->settings.width, o->settings.height, "image");
   addCount(command, "--spp", o->spp, "samples per pixel", 1, 1u << 20);
   addSampleOptions(command, o->settings);

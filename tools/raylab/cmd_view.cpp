@@ -26,6 +26,7 @@ struct ViewCommandOptions {
   ViewerOptions viewer;
   SceneRequest request;
   std::string scriptPath;
+  std::string compare;
   std::string toneMap = "clamp";
   std::string integrator = "auto";
   std::string backend = "auto";
@@ -76,13 +77,16 @@ void view(ViewCommandOptions command) {
   }
   if (!o.windowCapture.empty()) checkOutputPath(o.windowCapture, "--capture-window");
   for (const ScriptEvent& event : o.script) {
+    if (event.action == ScriptAction::kSaveLobe) checkOutputPath(event.name, event.where);
     if (event.action != ScriptAction::kScreenshot) continue;
     const ScreenshotPaths paths = screenshotPaths(event.name, "");
     checkOutputPath(paths.exr, event.where);
     checkOutputPath(paths.png, event.where);
   }
 
-  runViewer(loadScene(command.request), o);
+  const Scene scene = loadScene(command.request);
+  if (!command.compare.empty()) o.compare = parseCompareSpec(command.compare, scene, "raylab view: --compare");
+  runViewer(scene, o);
 }
 
 }  // namespace
@@ -114,6 +118,9 @@ void addViewCommand(CLI::App& raylab) {
   addFlag(command, "--no-panel", o->noPanel, "start with the panel hidden (F1 shows it)");
   addOptionalCount(command, "--frames", o->frames,
                    "run N frames and exit; each frame without a change adds one full pass", 0, UINT32_MAX);
+  addText(command, "--compare", o->compare, "MATERIAL=MODEL[:k=v,...]",
+          "open the split view: the right side renders MATERIAL as MODEL with these parameters (RGB as r/g/b), "
+          "e.g. --compare \"red plastic=ward:alpha_x=0.2,alpha_y=0.2\"");
   addText(command, "--script", o->scriptPath, "FILE", "replay camera and parameter changes (format in docs/viewer.md)");
   addText(command, "--screenshot", o->viewer.screenshot, "FILE.exr|FILE.png",
           "save the last frame's image: the EXR and the PNG, the one not named beside the other");

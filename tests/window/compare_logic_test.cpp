@@ -1,0 +1,191 @@
+// The comparison's window-free logic: the MATERIAL=MODEL[:k=v,...] text of --compare, --material and the script,
+// the script's comparison events, the mouse over the image (divider drags that keep the camera still, clicks,
+// hovering), and the lobe's directions and albedo curve.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "brdf_eval/lobe.h"
+#include "brdf_params/material_params.h"
+#include "scene/scene.h"
+#include "shared/features.h"
+#include "util/error.h"
+#include "view_logic/compare_spec.h"
+#include "view_logic/pointer.h"
+#include "view_logic/script.h"
+
+namespace raylab::test {
+namespace {
+
+Scene twoMaterials() {
+  Scene scene;
+  scene.materials = {{"ground", lambertMaterial(glm::vec3(0.5f))}, {"red plastic", lambertMaterial(glm::vec3(0.6f, 0.1f, 0.1f), 0.25f)}};
+  return scene;
+}
+
+std::string usageError(const std::string& text) {
+  try {
+    parseCompareSpec(text, twoMaterials(), "--compare");
+  } catch (const Error& error) {
+    EXPECT_EQ(error.exitCode(), kExitUsage) << text;
+    return error.what();
+  }
+  ADD_FAILURE() << "'" << text << "' was accepted";
+  return "";
+}
+
+TEST(CompareSpecTest, SwitchesOneMaterialToAModelWithParametersOverItsDefaults) {
+  const CompareSpec spec = parseCompareSpec("red plastic=ward:rho_d=0.2/0.5/0.2,alpha_x=0.3", twoMaterials(), "x");
+  EXPECT_EQ(spec.material, 1u);
+  EXPECT_EQ(spec.record.model, std::uint32_t(gpu::kModelWard));
+  EXPECT_EQ(getParam(spec.record, "rho_d"), glm::vec3(0.2f, 0.5f, 0.2f));
+  EXPECT_EQ(getParam(spec.record, "alpha_x"), glm::vec3(0.3f));
+  EXPECT_EQ(getParam(spec.record, "alpha_y"), getParam(defaultRecord(gpu::kModelWard), "alpha_y"));
+  EXPECT_EQ(spec.record.delta, 0.25f) << "the mirror weight is the material's, not the model's";
+  EXPECT_EQ(describeRecord(spec.record).substr(0, 5), "ward ");
+  // The model alone: its defaults.
+  EXPECT_EQ(parseCompareSpec("ground=phong", twoMaterials(), "x").record.model, std::uint32_t(gpu::kModelPhong));
+}
+
+TEST(CompareSpecTest, MistakesListWhatExists) {
+  EXPECT_NE(usageError("nosuch=ward").find("'ground', 'red plastic'"), std::string::npos);
+  EXPECT_NE(usageError("ground=wardish").find("lambert, phong"), std::string::npos);
+  EXPECT_NE(usageError("ground=ward:beta=2").find("alpha_x"), std::string::npos);
+  EXPECT_NE(usageError("ground=ward:alpha_x=-1").find("alpha_x"), std::string::npos);
+  EXPECT_NE(usageError("ground=ward:alpha_x=inf").find("not a number"), std::string::npos);
+  EXPECT_NE(usageError("ground=ward:rho_d=1/2").find("r/g/b"), std::string::npos);
+  EXPECT_NE(usageError("ground").find("MATERIAL=MODEL"), std::string::npos);
+  EXPECT_NE(usageError("ground=ward:alpha_x").find("k=v"), std::string::npos);
+}
+
+TEST(CompareScriptTest, ComparisonEventsParseAndTheirMistakesNameTheLine) {
+  const std::vector<ScriptEvent> events = parseScript(
+      "at 1 compare \"red plastic=ward:alpha_x=0.3\"\n"
+      "at 2 set divider 0.25\n"
+      "at 2 set difference relative 0.5\n"
+      "at 3 pick 10 20\n"
+      "at 3 save lobe out/lobe.csv\n"
+      "at 4 compare off\n",
+      "s");
+  ASSERT_EQ(events.size(), 6u);
+  EXPECT_EQ(events[0].action, ScriptAction::kCompare);
+  EXPECT_EQ(events[0].name, "red plastic=ward:alpha_x=0.3");
+  EXPECT_EQ(events[1].value.x, 0.25f);
+  EXPECT_EQ(events[2].param, "relative");
+  EXPECT_EQ(events[2].value.x, 0.5f);
+  EXPECT_EQ(glm::vec2(events[3].value), glm::vec2(10.0f, 20.0f));
+  EXPECT_EQ(events[4].name, "out/lobe.csv");
+  // Only the comparison itself is a new image; the divider, the difference view, picks and files are not.
+  EXPECT_TRUE(resetsAccumulation(events[0]));
+  for (int i = 1; i < 5; ++i) EXPECT_FALSE(resetsAccumulation(events[i])) << i;
+  EXPECT_NO_THROW(checkScript(events, twoMaterials()));
+
+  const auto fails = [](const std::string& text, const std::string& expected) {
+    try {
+      checkScript(parseScript(text, "t"), twoMaterials());
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const Error& error) {
+      EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+    }
+  };
+  fails("at 1 compare nosuch=ward\n", "t:1: the scene has no material 'nosuch'");
+  fails("at 1 set divider 1.5\n", "t:1: the divider must be within [0, 1]");
+  fails("at 1 set difference loud\n", "t:1");
+  fails("at 1 set difference absolute 0\n", "scale must be > 0");
+  fails("at 1 pick -1 3\n", "t:1");
+  fails("at 1 save lobe lobe.txt\n", ".csv");
+}
+
+PointerInput over(glm::vec2 cursor, bool left, std::optional<float> divider = 0.5f) {
+  PointerInput input;
+  input.cursor = cursor;
+  input.left = left;
+  input.imageOrigin = glm::vec2(320.0f, 0.0f);  // right of the panel
+  input.imageSize = glm::vec2(400.0f, 200.0f);
+  input.divider = divider;
+  return input;
+}
+
+TEST(PointerTest, DraggingTheDividerMovesItAndKeepsTheCameraStill) {
+  PointerState state;
+  PointerEvents events = updatePointer(state, over({522.0f, 100.0f}, true));  // 2 px right of the divider at 520
+  EXPECT_TRUE(events.cameraBlocked);
+  events = updatePointer(state, over({620.0f, 150.0f}, true));
+  EXPECT_TRUE(events.cameraBlocked);
+  ASSERT_TRUE(events.divider);
+  EXPECT_FLOAT_EQ(*events.divider, 0.75f);
+  events = updatePointer(state, over({900.0f, 150.0f}, true));  // beyond the image: clamped
+  EXPECT_FLOAT_EQ(*events.divider, 1.0f);
+  events = updatePointer(state, over({900.0f, 150.0f}, false));
+  EXPECT_FALSE(events.cameraBlocked);
+  EXPECT_FALSE(events.click) << "the end of a drag is not a click";
+}
+
+TEST(PointerTest, APressAndReleaseInPlaceIsAClickAndADragIsNot) {
+  PointerState state;
+  updatePointer(state, over({420.0f, 50.0f}, true));
+  PointerEvents events = updatePointer(state, over({421.0f, 51.0f}, false));
+  ASSERT_TRUE(events.click);
+  EXPECT_NEAR(events.click->x, 101.0f / 400.0f, 1e-6f);
+  EXPECT_NEAR(events.click->y, 51.0f / 200.0f, 1e-6f);
+
+  updatePointer(state, over({420.0f, 50.0f}, true));
+  updatePointer(state, over({460.0f, 50.0f}, true));  // an orbit
+  events = updatePointer(state, over({420.0f, 50.0f}, false));
+  EXPECT_FALSE(events.click) << "an orbit that came back is still not a click";
+  EXPECT_FALSE(events.cameraBlocked);
+
+  // Over the panel, or with ImGui holding the mouse: no click, no hover.
+  PointerInput panel = over({100.0f, 50.0f}, true);
+  updatePointer(state, panel);
+  panel.left = false;
+  events = updatePointer(state, panel);
+  EXPECT_FALSE(events.click);
+  EXPECT_FALSE(events.hover);
+  // Without a split view there is no divider to grab: a press on its old place is a click.
+  updatePointer(state, over({520.0f, 100.0f}, true, std::nullopt));
+  events = updatePointer(state, over({520.0f, 100.0f}, false, std::nullopt));
+  EXPECT_TRUE(events.click);
+}
+
+TEST(PointerTest, HoveringReportsWhereTheCursorRestsOverTheImage) {
+  PointerState state;
+  PointerEvents events = updatePointer(state, over({720.0f - 1.0f, 199.0f}, false));
+  ASSERT_TRUE(events.hover);
+  EXPECT_EQ(pixelAt(*events.hover, glm::uvec2(400, 200)), glm::uvec2(399, 199));
+  EXPECT_FALSE(updatePointer(state, over({720.0f, 100.0f}, false)).hover) << "just right of the image";
+  EXPECT_EQ(pixelAt(glm::vec2(1.0f), glm::uvec2(16, 8)), glm::uvec2(15, 7)) << "the far edge is the last pixel";
+}
+
+TEST(LobeTest, DirectionsLieInThePlaneOfIncidenceAndTheMirrorDirectionIsPlusThetaI) {
+  const gpu::MaterialRecord phong = defaultRecord(gpu::kModelPhong);
+  const std::vector<gpu::BrdfEvalCase> cases = lobeCases(phong, 30.0f);
+  ASSERT_EQ(cases.size(), kLobeSamples);
+  EXPECT_FLOAT_EQ(lobeAngleDegrees(0), -90.0f);
+  EXPECT_FLOAT_EQ(lobeAngleDegrees(kLobeSamples - 1), 90.0f);
+  for (const gpu::BrdfEvalCase& c : cases) {
+    EXPECT_EQ(c.wi.y, 0.0f);
+    EXPECT_EQ(c.wo.y, 0.0f);
+    EXPECT_GE(c.wo.z, 0.0f);
+    EXPECT_NEAR(glm::length(c.wo), 1.0f, 1e-6f);
+  }
+  const gpu::BrdfEvalCase& mirror = cases[120];  // theta_o = +30
+  EXPECT_NEAR(mirror.wo.x, -cases[0].wi.x, 1e-6f);
+  EXPECT_NEAR(mirror.wo.z, cases[0].wi.z, 1e-6f);
+}
+
+TEST(LobeTest, AlbedoCurveOfLambertIsItsReflectanceAtEveryAngle) {
+  const AlbedoCurve curve = albedoCurve(lambertMaterial(glm::vec3(0.5f, 0.25f, 0.125f)));
+  ASSERT_EQ(curve.thetaDegrees.size(), kAlbedoSamples);
+  EXPECT_EQ(curve.thetaDegrees.back(), 90.0f);
+  for (const glm::vec3& albedo : curve.albedo) {
+    EXPECT_NEAR(albedo.r, 0.5f, 1e-4f);
+    EXPECT_NEAR(albedo.g, 0.25f, 1e-4f);
+    EXPECT_NEAR(albedo.b, 0.125f, 1e-4f);
+  }
+  gpu::MaterialRecord glass = defaultRecord(gpu::kModelGlass);
+  EXPECT_TRUE(albedoCurve(glass).albedo.empty()) << "glass has no lobe and no albedo curve";
+}
+
+}  // namespace
+}  // namespace raylab::test
