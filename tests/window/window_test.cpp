@@ -226,6 +226,12 @@ TEST(WindowTest, ScriptErrorsNameTheLineAndUsageErrorsTheOption) {
   const CommandResult usage = runRaylab({"view", "--screenshot", "shot.tif"});
   EXPECT_EQ(usage.exitCode, 2) << usage.output;
   EXPECT_NE(usage.output.find("--screenshot"), std::string::npos) << usage.output;
+
+  // The screenshot's PNG and the window capture on one path: one would silently replace the other.
+  const CommandResult collision =
+      runRaylab({"view", "--frames", "2", "--screenshot", "shot.exr", "--capture-window", "shot.png"});
+  EXPECT_EQ(collision.exitCode, 2) << collision.output;
+  EXPECT_NE(collision.output.find("is also the PNG of --screenshot"), std::string::npos) << collision.output;
 }
 
 TEST(WindowTest, WithoutADisplayItSaysToUseXvfbAndWithoutADeviceItExitsThree) {

@@ -76,6 +76,15 @@ void view(ViewCommandOptions command) {
     checkOutputPath(paths.png, "--screenshot");
   }
   if (!o.windowCapture.empty()) checkOutputPath(o.windowCapture, "--capture-window");
+  if (!o.screenshot.empty() && !o.windowCapture.empty()) {
+    // The screenshot's PNG would overwrite the capture (or the reverse), silently.
+    const ScreenshotPaths paths = screenshotPaths(o.screenshot, o.screenshotPng);
+    if (std::filesystem::weakly_canonical(paths.png) == std::filesystem::weakly_canonical(o.windowCapture)) {
+      throw Error("raylab view: --capture-window " + o.windowCapture + " is also the PNG of --screenshot " +
+                      o.screenshot + ": give one of them another name (or --png)",
+                  kExitUsage);
+    }
+  }
   for (const ScriptEvent& event : o.script) {
     if (event.action == ScriptAction::kSaveLobe) checkOutputPath(event.name, event.where);
     if (event.action != ScriptAction::kScreenshot) continue;
