@@ -1,6 +1,7 @@
 #version 460
 // Evaluates the BRDF library on a list of cases in one dispatch (`raylab brdf eval`, the parity tests):
-// f for the BRDF models in the local shading frame, the Fresnel terms and directions for glass.
+// f and the sampler's pdf for the BRDF models in the local shading frame, the Fresnel terms and directions for
+// glass.
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_GOOGLE_include_directive : require
 
@@ -36,6 +37,7 @@ void main() {
   value.refracted = vec3(0.0);
   value.fresnelSchlickNaive = 0.0;
   value.tir = 0u;
+  value.pdf = 0.0;
   if (c.material.model == kModelGlass) {
     const GlassEvent event = glassEvent(c.material.eta, wi, n);
     value.fresnelExact = event.fresnelExact;
@@ -46,7 +48,9 @@ void main() {
     value.refracted = event.refracted;
   } else {
     const ShadingFrame frame = makeShadingFrame(n, c.t);
-    value.f = bsdfEval(c.material, toLocal(frame, wi), toLocal(frame, normalizeOrZero(c.wo)));
+    const vec3 wiLocal = toLocal(frame, wi), woLocal = toLocal(frame, normalizeOrZero(c.wo));
+    value.f = bsdfEval(c.material, wiLocal, woLocal);
+    value.pdf = bsdfPdf(c.material, wiLocal, woLocal);
   }
   values[i] = value;
 }

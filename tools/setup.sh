@@ -27,7 +27,7 @@ packages=(
   g++ cmake ninja-build pkg-config
   libvulkan-dev glslang-tools spirv-tools vulkan-validationlayers vulkan-tools
   libglfw3-dev libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libopenexr-dev libimgui-dev
-  libgtest-dev libembree-dev libcli11-dev
+  libgtest-dev libembree-dev libcli11-dev pybind11-dev python3-dev
   xvfb xauth assimp-testmodels
   python3 python3-venv
   blender-data  # CC0 HDR worlds that light the environment scenes (copied beside them, see environments)

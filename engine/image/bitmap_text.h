@@ -9,14 +9,9 @@
 #include <string_view>
 #include <vector>
 
-namespace raylab {
+#include "image/image.h"  // Rgb8Image
 
-// A display-referred image: 8-bit sRGB, RGB, top row first.
-struct Rgb8Image {
-  std::uint32_t width = 0;
-  std::uint32_t height = 0;
-  std::vector<std::uint8_t> rgb;  // 3 bytes per pixel
-};
+namespace raylab {
 
 // Size of one line of text in pixels at `scale`: the advance of every character, and the line height
 // (capitals, descenders and the gap to the next line).

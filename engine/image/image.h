@@ -51,6 +51,15 @@ void writePng(const std::string& path, const Image& image, float exposure, ToneM
 // The one PNG encoder: 8-bit RGB rows, top first.
 void writePngRgb8(const std::string& path, std::uint32_t width, std::uint32_t height, const std::uint8_t* rgb);
 
+// A display-referred image: 8-bit sRGB, RGB, top row first.
+struct Rgb8Image {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<std::uint8_t> rgb;  // 3 bytes per pixel
+};
+// An 8-bit PNG read back (any PNG: grey and alpha are converted to RGB). Errors name the file.
+Rgb8Image readPngRgb8(const std::string& path);
+
 // The 8-bit sRGB value of a linear value after exposure and tone mapping.
 std::uint8_t toDisplay(float linear, float exposure, ToneMap toneMap);
 

@@ -1,4 +1,6 @@
-// Tone-mapped 8-bit sRGB PNG files through stb_image_write (Debian's libstb).
+// Tone-mapped 8-bit sRGB PNG files through stb_image_write, and reading them back through stb_image (Debian's
+// libstb).
+#include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -55,6 +57,18 @@ void writePng(const std::string& path, const Image& image, float exposure, ToneM
     for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = toDisplay(image.rgba[i * 4 + c], exposure, toneMap);
   }
   writePngRgb8(path, image.width, image.height, bytes.data());
+}
+
+Rgb8Image readPngRgb8(const std::string& path) {
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(path.c_str(), &width, &height, &channels, 3);
+  if (pixels == nullptr) throw Error(path + ": cannot read as PNG: " + stbi_failure_reason());
+  Rgb8Image image;
+  image.width = static_cast<std::uint32_t>(width);
+  image.height = static_cast<std::uint32_t>(height);
+  image.rgb.assign(pixels, pixels + std::size_t(width) * height * 3);
+  stbi_image_free(pixels);
+  return image;
 }
 
 }  // namespace raylab

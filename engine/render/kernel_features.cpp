@@ -2,6 +2,7 @@
 
 #include "brdf_params/material_params.h"
 #include "shared/features.h"
+#include "util/error.h"
 
 namespace raylab {
 
@@ -60,6 +61,21 @@ std::string describe(const KernelFeatures& features) {
   return std::string("integrator: ") + integratorName(features.integrator) + "; models: " + (models.empty() ? std::string("none") : models) +
          "; features: " + (list.empty() ? std::string("none") : list) +
          ((features.features & gpu::kFeatureGlass) && features.schlickFresnel ? "; glass Fresnel: Schlick" : "");
+}
+
+KernelFeatures kernelFor(const Scene& scene, const KernelOptions& options) {
+  KernelFeatures kernel = options.allFeatures ? allFeatures() : featuresOf(scene);
+  kernel.schlickFresnel = options.schlickFresnel;
+  kernel.integrator = chooseIntegrator(scene, options.integrator);
+  kernel.sampling = options.sampling;
+  return kernel;
+}
+
+std::uint32_t parseSampling(const std::string& name) {
+  if (name == "mis") return gpu::kSamplingMis;
+  if (name == "bsdf") return gpu::kSamplingBsdf;
+  if (name == "light") return gpu::kSamplingLight;
+  throw Error("sampling '" + name + "' is not mis, bsdf or light", kExitUsage);
 }
 
 }  // namespace raylab

@@ -34,6 +34,18 @@ const char* integratorName(std::uint32_t integrator);
 // Everything compiled in (the unspecialised kernel, for comparisons and for the viewer's model switching).
 KernelFeatures allFeatures();
 
+// What `raylab render` (and the Python Renderer) asks of the kernel beyond the scene.
+struct KernelOptions {
+  IntegratorChoice integrator = IntegratorChoice::kAuto;
+  std::uint32_t sampling = 0;  // gpu::kSampling...
+  bool schlickFresnel = false;
+  bool allFeatures = false;    // every model and feature, not only the scene's
+};
+// The kernel a render of `scene` with these options runs.
+KernelFeatures kernelFor(const Scene& scene, const KernelOptions& options);
+// "mis", "bsdf", "light" as gpu::kSampling...; throws Error(kExitUsage) naming the choices otherwise.
+std::uint32_t parseSampling(const std::string& name);
+
 // "models: lambert, phong; features: mirror, point lights"
 std::string describe(const KernelFeatures& features);
 

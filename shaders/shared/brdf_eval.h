@@ -30,8 +30,9 @@ struct BrdfEvalValue {
   vec3 refracted;  // world space; zero under total internal reflection
   float fresnelSchlickNaive;
   uint tir;        // 1 under total internal reflection
+  float pdf;       // bsdfPdf(wi, wo) of the BRDF models' sampler (the Python module's brdf.pdf)
 };
-RL_CHECK_SIZE(BrdfEvalValue, 52);
+RL_CHECK_SIZE(BrdfEvalValue, 56);
 
 // brdf_sample.comp push constants: one material and one outgoing direction, `count` samples.
 struct BrdfSampleParams {

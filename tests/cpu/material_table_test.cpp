@@ -124,7 +124,9 @@ void expectSameAsCode(const Table& table, const std::string& where) {
       EXPECT_FLOAT_EQ(float(doc.min), code.min) << where << ": " << model.name << "." << code.name;
       EXPECT_FLOAT_EQ(float(doc.max), code.max) << where << ": " << model.name << "." << code.name;
       EXPECT_FLOAT_EQ(float(doc.defaultValue), code.defaultValue) << where << ": " << model.name << "." << code.name;
-      if (doc.logScale) EXPECT_EQ(*doc.logScale, code.logScale) << where << ": " << model.name << "." << code.name;
+      if (doc.logScale) {
+        EXPECT_EQ(*doc.logScale, code.logScale) << where << ": " << model.name << "." << code.name;
+      }
     }
   }
 }

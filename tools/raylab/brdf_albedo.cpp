@@ -9,7 +9,6 @@
 #include <fstream>
 #include <memory>
 #include <optional>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -19,7 +18,7 @@
 #include "brdf_eval/device_evaluator.h"
 #include "brdf_commands.h"
 #include "gpu_session.h"
-#include "reference/albedo.h"
+#include "brdf_eval/albedo_estimate.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/files.h"
@@ -29,15 +28,8 @@ namespace raylab {
 
 namespace {
 
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
 constexpr const char* kCommand = "raylab brdf albedo";
 
-struct AlbedoRow {
-  double thetaDeg = 0.0;
-  glm::dvec3 value{0.0};
-  double error = 0.0;          // cpu: the cubature's estimate; gpu: one standard error of the mean
-  long long evaluations = 0;   // cpu: calls of the model; gpu: samples drawn
-};
 
 // "0,10,45,89.9": angles in degrees from the normal, each in [0, 90).
 std::vector<double> parseAngles(const std::string& text) {
@@ -60,56 +52,14 @@ std::vector<double> parseAngles(const std::string& text) {
   return angles;
 }
 
-AlbedoRow albedoOnCpu(const reference::Material& material, double thetaDeg, double phiDeg, double tolerance) {
-  reference::AlbedoOptions options;
-  options.relTolerance = tolerance;
-  const glm::dvec3 wo = reference::directionFromAngles(thetaDeg * kDegree, phiDeg * kDegree);
-  const reference::Albedo albedo = reference::directionalAlbedo(material, wo, options);
-  if (!albedo.converged) {
-    std::fprintf(stderr, "%s: warning: the cubature did not reach its tolerance at theta_o = %g (error estimate "
-                 "%.3g)\n", kCommand, thetaDeg, albedo.errorEstimate);
-  }
-  return {thetaDeg, albedo.value, albedo.errorEstimate, albedo.evaluations};
-}
-
-// Uniform floats in [0, 1) with 24 random bits, exactly representable in the float32 the device reads.
-std::vector<glm::vec3> uniforms(std::uint64_t seed, std::size_t count) {
-  std::mt19937_64 rng(seed);
-  const auto next = [&] { return static_cast<float>(rng() >> 40) * 0x1p-24f; };
-  std::vector<glm::vec3> u(count);
-  for (glm::vec3& v : u) v = glm::vec3(next(), next(), next());
-  return u;
-}
-
-// The mean of f cos_i / pdf over the device's samples; a failed sample (pdf 0) contributes 0, which keeps the
-// estimator unbiased because the mixture pdf covers every direction where f cos_i > 0.
-AlbedoRow albedoOnGpu(const Device& device, BrdfSampler& sampler, const gpu::MaterialRecord& material, double thetaDeg,
-                      double phiDeg, std::uint32_t samples, std::uint64_t seed) {
-  const glm::vec3 wo(reference::directionFromAngles(thetaDeg * kDegree, phiDeg * kDegree));
-  const std::vector<gpu::BrdfSampleValue> draws =
-      drawBrdfSamples(device, sampler, material, wo, uniforms(seed, samples));
-  glm::dvec3 sum(0.0), sumSquares(0.0);
-  for (const gpu::BrdfSampleValue& draw : draws) {
-    if (!(draw.pdf > 0.0f)) continue;
-    const glm::dvec3 weight = glm::dvec3(draw.f) * (double(draw.wi.z) / double(draw.pdf));
-    sum += weight;
-    sumSquares += weight * weight;
-  }
-  const double n = double(samples);
-  const glm::dvec3 mean = sum / n;
-  const glm::dvec3 variance = glm::max(sumSquares / n - mean * mean, glm::dvec3(0.0)) * (n / std::max(n - 1.0, 1.0));
-  const double error = std::sqrt(std::max({variance.x, variance.y, variance.z}) / n);
-  return {thetaDeg, mean, error, static_cast<long long>(samples)};
-}
-
 std::string formatCsv(const std::string& model, const std::string& params, const std::string& backend, double phiDeg,
-                      const std::vector<AlbedoRow>& rows) {
+                      const std::vector<AlbedoEstimate>& rows) {
   std::ostringstream out;
   out << "model,params,backend,theta_o,phi_o,albedo_r,albedo_g,albedo_b,error,evaluations\n";
   char line[512];
-  for (const AlbedoRow& row : rows) {
+  for (const AlbedoEstimate& row : rows) {
     std::snprintf(line, sizeof line, "%s,%s,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%lld\n", model.c_str(), params.c_str(),
-                  backend.c_str(), row.thetaDeg, phiDeg, row.value.x, row.value.y, row.value.z, row.error,
+                  backend.c_str(), row.thetaDegrees, phiDeg, row.value.x, row.value.y, row.value.z, row.error,
                   row.evaluations);
     out << line;
   }
@@ -163,17 +113,22 @@ int albedo(const AlbedoOptions& o) {
   const std::vector<double> angles = parseAngles(anglesText);
 
   const Stopwatch clock;
-  std::vector<AlbedoRow> rows;
+  std::vector<AlbedoEstimate> rows;
   if (backend == "cpu") {
-    const reference::Material material = reference::fromRecord(record);
-    for (double theta : angles) rows.push_back(albedoOnCpu(material, theta, phiDeg, tolerance));
+    for (double theta : angles) {
+      rows.push_back(albedoByCubature(record, theta, phiDeg, tolerance));
+      if (!rows.back().converged) {
+        std::fprintf(stderr, "%s: warning: the cubature did not reach its tolerance at theta_o = %g (error estimate "
+                     "%.3g)\n", kCommand, theta, rows.back().error);
+      }
+    }
   } else {
     GpuSession session(deviceIndex, true);
     BrdfSampler sampler = createBrdfSampler(session.device, samples);
     try {
       for (std::size_t i = 0; i < angles.size(); ++i) {
         const std::uint64_t angleSeed = std::uint64_t(seed) * 1000 + i;
-        rows.push_back(albedoOnGpu(session.device, sampler, record, angles[i], phiDeg, samples, angleSeed));
+        rows.push_back(albedoBySampling(session.device, sampler, record, angles[i], phiDeg, samples, angleSeed));
       }
     } catch (...) {
       destroyBrdfSampler(session.device, sampler);

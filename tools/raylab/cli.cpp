@@ -215,6 +215,23 @@ int parseAndRun(CLI::App& app, int argc, char** argv) {
 
 }  // namespace
 
+std::string parseCommandOptions(const std::string& path, const std::string& description,
+                                const std::function<void(CLI::App*)>& addOptions,
+                                const std::vector<std::string>& arguments) {
+  CLI::App app(description, path);
+  app.formatter(std::make_shared<HelpFormatter>());
+  addOptions(&app);
+  std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());  // CLI11 takes them last first
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    return app.help();
+  } catch (const CLI::ParseError& error) {
+    throw Error(path + ": " + error.what() + " (see `" + path + " --help`)", kExitUsage);
+  }
+  return "";
+}
+
 CLI::App* addCommand(CLI::App& parent, const std::string& name, const std::string& description,
                      std::function<int()> run) {
   CLI::App* command = parent.add_subcommand(name, description);

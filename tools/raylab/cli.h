@@ -31,6 +31,14 @@ CLI::App* addCommandGroup(CLI::App& parent, const std::string& name, const std::
 // raylab::Error) are printed with the command's name, "raylab render: ...".
 int runCommandLine(int argc, char** argv, const std::function<void(CLI::App&)>& addCommands);
 
+// Parses `arguments` as the options of command `path` ("raylab sweep"), declared by `addOptions`, without running
+// anything: for callers that take a command's options themselves (the Python farm takes `raylab sweep`'s). Returns
+// the command's help when --help was given, empty otherwise; throws Error(kExitUsage) with the message
+// runCommandLine would print.
+std::string parseCommandOptions(const std::string& path, const std::string& description,
+                                const std::function<void(CLI::App*)>& addOptions,
+                                const std::vector<std::string>& arguments);
+
 // Options. Counts, numbers and choices show their default (the variable's value when declared) and their range in
 // the help; text shows its default when asked to.
 void addFlag(CLI::App* command, const std::string& name, bool& value, const std::string& help);

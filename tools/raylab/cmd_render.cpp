@@ -172,11 +172,12 @@ void render(RenderOptions o) {
     const CompareSpec spec = parseCompareSpec(text, scene, "raylab render: --material");
     scene.materials[spec.material].record = spec.record;
   }
-  KernelFeatures kernel = o.allFeatures ? allFeatures() : featuresOf(scene);
+  KernelOptions kernel;
+  kernel.integrator = parseIntegratorChoice(o.integrator);
+  kernel.sampling = parseSampling(o.sampling);
   kernel.schlickFresnel = o.fresnel == "schlick";
-  kernel.integrator = chooseIntegrator(scene, parseIntegratorChoice(o.integrator));
-  kernel.sampling = o.sampling == "bsdf" ? gpu::kSamplingBsdf : o.sampling == "light" ? gpu::kSamplingLight : gpu::kSamplingMis;
-  o.settings.kernel = kernel;
+  kernel.allFeatures = o.allFeatures;
+  o.settings.kernel = kernelFor(scene, kernel);
 
   GpuSession gpu(o.device);
   o.settings.backend = chooseBackend(gpu.device, parseBackendChoice(o.backend));
