@@ -198,6 +198,7 @@ BrdfCaseFile parseBrdfCases(std::string_view text, const std::string& source) {
 BrdfResult fromDevice(const gpu::BrdfEvalValue& value) {
   BrdfResult result;
   result.f = glm::dvec3(value.f);
+  result.pdf = value.pdf;
   result.fresnelExact = value.fresnelExact;
   result.fresnelSchlick = value.fresnelSchlick;
   result.fresnelSchlickNaive = value.fresnelSchlickNaive;

@@ -43,6 +43,7 @@ glm::vec3 parseVector(std::string_view text, const std::string& where);
 // One case's values in double: the cpu backend's exactly, the device's promoted from float.
 struct BrdfResult {
   glm::dvec3 f{0.0};  // BRDF models
+  double pdf = 0.0;   // BRDF models: the sampler's density of wi given wo (not written to the CSV)
   double fresnelExact = 0.0;
   double fresnelSchlick = 0.0;
   double fresnelSchlickNaive = 0.0;

@@ -22,7 +22,9 @@ BrdfResult evaluateBrdfCaseOnCpu(const gpu::BrdfEvalCase& input) {
   }
   const reference::Frame frame = reference::makeFrame(n, dvec3(input.t));
   const dvec3 wo = glm::normalize(dvec3(input.wo));
-  result.f = reference::eval(material, reference::toLocal(frame, wi), reference::toLocal(frame, wo));
+  const dvec3 wiLocal = reference::toLocal(frame, wi), woLocal = reference::toLocal(frame, wo);
+  result.f = reference::eval(material, wiLocal, woLocal);
+  result.pdf = reference::pdf(material, wiLocal, woLocal);
   return result;
 }
 
