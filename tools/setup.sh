@@ -115,11 +115,20 @@ build() {
   cmake --build --preset release
 }
 
+# `import raylab` from .venv: the module the build made (build/release/python/raylab), found through a .pth
+# file in the venv's site-packages, so that a rebuild is picked up without reinstalling anything.
+python_module() {
+  local site
+  site=$(.venv/bin/python -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
+  printf '%s\n' "$PWD/build/release/python" >"$site/raylab.pth"
+}
+
 install_packages
 if [[ $mode == deps ]]; then exit 0; fi
 python_tools
 environments
 build
+python_module
 case "$mode" in
   render)
     build/release/raylab render --out out/default.exr --png out/default.png

@@ -23,11 +23,16 @@ struct PythonSweepStudy {
   SweepStudy study;
   std::unique_ptr<SweepCellRenderer> cells;  // this process's device, made at the first cell
 
+  void prepare() {
+    py::gil_scoped_release release;
+    if (!cells) cells = std::make_unique<SweepCellRenderer>(study, true);
+  }
+
   py::array_t<float> renderCell(std::uint32_t cell) {
+    prepare();
     Image image;
     {
       py::gil_scoped_release release;
-      if (!cells) cells = std::make_unique<SweepCellRenderer>(study, true);
       image = renderSweepCell(*cells, study, cell, [](std::uint32_t) {
         // Between submissions: Ctrl-C stops the cell (the farm reruns it).
         py::gil_scoped_acquire acquire;
@@ -51,18 +56,18 @@ void bindSweep(py::module_& m) {
   py::class_<PythonSweepStudy>(m, "SweepStudy",
                                "A parameter sweep as `raylab sweep ARGUMENTS` describes it: its cells rendered one by "
                                "one (on any process) and its contact sheet.")
-      .def(py::init([](const std::vector<std::string>& arguments, bool writeGltf) {
+      .def(py::init([](const std::vector<std::string>& arguments, bool outputs) {
              SweepOptions options;
              const std::string help = parseSweepArguments(arguments, options);
              if (!help.empty()) throw Error("raylab sweep: --help is not a study", kExitUsage);
-             if (!writeGltf) options.gltfPath.clear();
              auto study = std::make_unique<PythonSweepStudy>();
-             study->study = planSweep(options);
+             study->study = planSweep(options, outputs ? SweepOutputs::CheckAndWrite : SweepOutputs::None);
              return study;
            }),
-           py::arg("arguments"), py::kw_only(), py::arg("write_gltf") = false,
-           "Parses and checks `raylab sweep`'s options (ValueError with the command's message), and the output "
-           "paths. With write_gltf, --gltf is written here (the farm's client does it once, workers never).")
+           py::arg("arguments"), py::kw_only(), py::arg("outputs") = true,
+           "Parses and checks `raylab sweep`'s options (ValueError with the command's message). With outputs, "
+           "also checks the output paths (creating their directories) and writes --gltf, as the command does: the "
+           "farm's client; its workers pass outputs=False and only render cells.")
       .def_property_readonly("cells", [](const PythonSweepStudy& s) { return s.study.sweep.values.size(); })
       .def_property_readonly("spp", [](const PythonSweepStudy& s) { return s.study.options.spp; })
       .def_property_readonly("cell_size", [](const PythonSweepStudy& s) { return s.study.options.cell; })
@@ -75,8 +80,10 @@ void bindSweep(py::module_& m) {
       .def_property_readonly("values", [](const PythonSweepStudy& s) { return s.study.sweep.values; })
       .def("label", [](const PythonSweepStudy& s, std::uint32_t cell) { return sweepLabel(s.study.sweep, cell); })
       .def_property_readonly("title", [](const PythonSweepStudy& s) { return sweepTitle(s.study.sweep); })
+      .def("prepare", &PythonSweepStudy::prepare,
+           "Creates this process's device and uploads the cell scene (otherwise done by the first render_cell).")
       .def("render_cell", &PythonSweepStudy::renderCell, py::arg("cell"),
-           "Renders one cell on this process's device (made at the first call): float32 (cell, cell, 4).")
+           "Renders one cell on this process's device: float32 (cell, cell, 4).")
       .def(
           "write_sheet",
           [](const PythonSweepStudy& s, const std::vector<py::array_t<float, py::array::c_style | py::array::forcecast>>& arrays) {

@@ -1,6 +1,7 @@
 """Shared fixtures of the Python module's tests: the raylab binary, the source tree, a scratch directory, and a
 helper that runs the command line for the results the module must equal."""
 import os
+import shutil
 import subprocess
 from pathlib import Path
 
@@ -26,8 +27,10 @@ def source_dir() -> Path:
 
 @pytest.fixture
 def work(request) -> Path:
+    # Emptied first: results of an earlier run (the farm's finished cells) must not stand in for this run's.
     directory = _path("RAYLAB_TEST_WORK") / request.node.name
-    directory.mkdir(parents=True, exist_ok=True)
+    shutil.rmtree(directory, ignore_errors=True)
+    directory.mkdir(parents=True)
     return directory
 
 

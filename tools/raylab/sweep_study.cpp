@@ -165,7 +165,7 @@ std::string parseSweepArguments(const std::vector<std::string>& arguments, Sweep
                              arguments);
 }
 
-SweepStudy planSweep(SweepOptions o) {
+SweepStudy planSweep(SweepOptions o, SweepOutputs outputs) {
   const SweepSpec spec = validatedSpec(o);
   SweepStudy study;
   study.render = o.gltfPath.empty() || !o.pngPath.empty();
@@ -178,14 +178,15 @@ SweepStudy planSweep(SweepOptions o) {
   }
   study.pngPath = o.pngPath;
   study.exrPath = std::filesystem::path(o.pngPath).replace_extension(".exr").string();
-  if (!o.gltfPath.empty()) checkOutputPath(o.gltfPath, "--gltf");
-  if (study.render) {
+  const bool writes = outputs == SweepOutputs::CheckAndWrite;
+  if (writes && !o.gltfPath.empty()) checkOutputPath(o.gltfPath, "--gltf");
+  if (writes && study.render) {
     checkOutputPath(study.pngPath, "--out");
     checkOutputPath(study.exrPath, "--out (the EXR beside it)");
   }
   study.sweep = makeSweepScene(spec);
   study.options = o;
-  if (!o.gltfPath.empty()) {
+  if (writes && !o.gltfPath.empty()) {
     writeSweepGltf(study.sweep, o.gltfPath);
     std::printf("wrote %s\n", o.gltfPath.c_str());
   }

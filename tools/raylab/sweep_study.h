@@ -60,9 +60,13 @@ struct SweepStudy {
   bool render = true;   // false: --gltf alone
 };
 
-// Checks the options (every message names the option and the accepted range) and the output paths, fills in the
-// defaults and lays out the row. Writes --gltf when given.
-SweepStudy planSweep(SweepOptions options);
+// Whether planSweep checks the output paths (creating their directories) and writes --gltf: the command and the
+// farm's client do; the farm's workers, which only render cells (maybe on other machines), do not.
+enum class SweepOutputs { CheckAndWrite, None };
+
+// Checks the options (every message names the option and the accepted range) and, unless told not to, the output
+// paths; fills in the defaults and lays out the row. Writes --gltf when given.
+SweepStudy planSweep(SweepOptions options, SweepOutputs outputs = SweepOutputs::CheckAndWrite);
 
 // What decides a cell's pixels (model, parameters, values, cell size, samples, seed, depth, backend), as a short
 // hexadecimal key: the farm keeps finished cells under it, so that a rerun with other options renders anew.

@@ -1,0 +1,104 @@
+"""Any study as independent jobs on a Dask cluster: each job renders one image on whichever worker takes it; the
+client stores each result as an EXR file (atomically) as soon as it arrives, so a rerun skips every job whose file
+exists, and a worker killed mid-job costs only that job, which the scheduler gives to another worker.
+
+Results travel back to the client (a cell of 192x192 is 0.6 MB), so workers on other machines need no shared
+filesystem."""
+import os
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable
+
+from distributed import as_completed
+
+from .. import _raylab
+from .progress import Progress
+
+
+@dataclass(frozen=True)
+class Job:
+    """One render. `function(*args)` runs on a worker and returns (float32 array, info) where info is a dict
+    with at least "pid", "host", "render_s" and "setup_s" (device and scene set-up paid by this job)."""
+    key: str           # unique for what decides the pixels: equal keys are the same work
+    name: str          # for people: progress, logs, errors
+    path: Path         # where the result is kept; the job is done when this file exists
+    function: Callable[..., Any]
+    args: tuple
+    samples: int       # samples per pixel, for the progress line
+
+
+@dataclass
+class FarmReport:
+    jobs: int = 0
+    skipped: int = 0          # done by an earlier run
+    rendered: int = 0
+    workers: int = 0
+    wall_s: float = 0.0       # submission to last result
+    render_s: float = 0.0     # the workers' rendering, summed
+    setup_s: float = 0.0      # the workers' device and scene set-up, summed
+    by_pid: dict = field(default_factory=dict)  # job name -> the worker process that rendered it
+
+    @property
+    def overhead_per_job_s(self) -> float:
+        """Worker time not spent rendering or setting up, per job: scheduling, transfers, storing, idle tails."""
+        if not self.rendered:
+            return 0.0
+        return max(0.0, self.wall_s * self.workers - self.render_s - self.setup_s) / self.rendered
+
+    def summary(self) -> str:
+        if not self.rendered:
+            return f"raylab.farm: all {self.jobs} jobs were already done"
+        return (f"raylab.farm: {self.rendered} jobs rendered ({self.skipped} already done) on {self.workers} workers "
+                f"in {self.wall_s:.2f} s: rendering {self.render_s:.2f} s, set-up {self.setup_s:.2f} s of worker "
+                f"time; farm overhead {self.overhead_per_job_s * 1000:.0f} ms per job")
+
+
+def run_jobs(client, jobs: list[Job], log_path: Path, label: str = "raylab.farm", progress: bool = True) -> FarmReport:
+    """Runs the jobs whose result file does not exist yet; returns when every job's file exists. A failing job
+    (bad input, a device error) cancels the rest and raises its error with the job's name."""
+    todo = [job for job in jobs if not job.path.exists()]
+    report = FarmReport(jobs=len(jobs), skipped=len(jobs) - len(todo),
+                        workers=len(client.scheduler_info()["workers"]))
+    if not todo:
+        return report
+    log_path.parent.mkdir(parents=True, exist_ok=True)
+    bar = Progress(label, len(jobs), jobs[0].samples, report.skipped, progress)
+    bar.show()
+    start = time.monotonic()
+    # pure=False: a resubmission after an interruption must run again, not find a forgotten result.
+    futures = {client.submit(job.function, *job.args, key=job.key, pure=False): job for job in todo}
+    try:
+        for future in as_completed(futures):
+            job = futures[future]
+            try:
+                image, info = future.result()
+            except Exception as error:
+                raise _naming(job, error) from error
+            job.path.parent.mkdir(parents=True, exist_ok=True)
+            _raylab.write_exr(str(job.path), image)
+            report.rendered += 1
+            report.render_s += info["render_s"]
+            report.setup_s += info["setup_s"]
+            report.by_pid[job.name] = info["pid"]
+            with open(log_path, "a") as log:
+                log.write(f"{job.path.name}\t{job.name}\tpid {info['pid']} on {info['host']}\t"
+                          f"render {info['render_s']:.3f} s\tset-up {info['setup_s']:.3f} s\n")
+            bar.job_done()
+    finally:
+        client.cancel(list(futures))
+    report.wall_s = time.monotonic() - start
+    return report
+
+
+def _naming(job: Job, error: Exception) -> Exception:
+    """The error again, its message prefixed with the job's name; the kinds the module raises keep their type."""
+    for kind in (ValueError, FileNotFoundError, RuntimeError):
+        if isinstance(error, kind):
+            return kind(f"{job.name}: {error}")
+    # e.g. distributed's KilledWorker, when a job took down every worker it was given
+    return RuntimeError(f"{job.name}: {type(error).__name__}: {error}")
+
+
+def worker_info(render_s: float, setup_s: float) -> dict:
+    return {"pid": os.getpid(), "host": os.uname().nodename, "render_s": render_s, "setup_s": setup_s}

@@ -1,0 +1,128 @@
+"""raylab.farm against `raylab sweep`: the same contact sheet bit for bit from a LocalCluster of 2 worker processes,
+also when a worker is killed while it renders (its job runs again elsewhere), and a rerun after an interruption
+renders only the missing cells."""
+import os
+import re
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+from distributed import Client, LocalCluster
+
+import raylab
+import raylab.farm
+
+# Cells of about a second each on one lavapipe thread: long enough to kill a worker or interrupt the client while
+# cells are rendering, short enough for CI.
+CELLS = 6
+STUDY = ["--model", "ward", "--param", "alpha_x", "--steps", str(CELLS), "--cell", "96", "--spp", "384",
+         "--set", "rho_d=0.2/0.1/0.05", "--seed", "7"]
+
+
+@pytest.fixture(scope="module")
+def reference(tmp_path_factory, run_raylab):
+    """The single-process sheet: `raylab sweep` itself."""
+    png = tmp_path_factory.mktemp("reference") / "sheet.png"
+    run_raylab("sweep", *STUDY, "--out", png)
+    return png
+
+
+def assert_same_sheet(png, reference):
+    exr, reference_exr = png.with_suffix(".exr"), reference.with_suffix(".exr")
+    farmed, single = raylab.read_exr(str(exr)), raylab.read_exr(str(reference_exr))
+    assert farmed.shape == single.shape
+    assert np.array_equal(farmed, single), f"EXR differs: max |difference| {np.abs(farmed - single).max()}"
+    assert png.read_bytes() == reference.read_bytes(), "PNG differs"
+
+
+def local_cluster():
+    return LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+
+
+def test_two_workers_make_the_same_sheet_as_raylab_sweep(work, reference):
+    png = work / "sheet.png"
+    report = raylab.farm.sweep([*STUDY, "--out", png], workers=2, progress=False)
+    assert report.rendered == CELLS and report.skipped == 0 and report.workers == 2
+    assert len(set(report.by_pid.values())) == 2, f"one worker rendered every cell: {report.by_pid}"
+    assert_same_sheet(png, reference)
+
+
+def test_a_worker_killed_while_it_renders_costs_only_its_job(work, reference):
+    png = work / "sheet.png"
+    killed = {}
+
+    def executing(dask_worker):
+        return [str(task.key) for task in dask_worker.state.executing]  # the keys of its running jobs
+
+    def kill_a_rendering_worker(client):
+        # Not the first two cells: their workers are still creating their devices. A later cell runs on a worker
+        # that has rendered before, so killing it interrupts a render.
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline:
+            for address, keys in client.run(executing).items():
+                late = [key for key in keys if int(key.rsplit("-", 1)[1]) >= 2]
+                if late:
+                    pid = client.run(os.getpid, workers=[address])[address]
+                    os.kill(pid, signal.SIGKILL)
+                    killed.update(key=late[0], pid=pid, cell=int(late[0].rsplit("-", 1)[1]))
+                    return
+            time.sleep(0.02)
+
+    with local_cluster() as cluster, Client(cluster) as client:
+        killer = threading.Thread(target=kill_a_rendering_worker, args=(client,))
+        killer.start()
+        report = raylab.farm.sweep([*STUDY, "--out", png], client=client, progress=False)
+        killer.join()
+    assert killed, "no worker was seen rendering a cell"
+    # The killed job was rendered again, by another process (the restarted worker or the other one).
+    retried = next(name for name in report.by_pid if name.startswith(f"cell {killed['cell']} "))
+    assert report.by_pid[retried] != killed["pid"], f"{retried} finished on the killed worker {killed['pid']}"
+    assert report.rendered == CELLS
+    assert_same_sheet(png, reference)
+
+
+def farm_command(png, source_dir):
+    return [sys.executable, "-m", "raylab.farm", "sweep", *STUDY, "--out", str(png), "--workers", "2"]
+
+
+def test_a_rerun_after_an_interruption_renders_only_what_is_missing(work, reference, source_dir):
+    png = work / "sheet.png"
+    cells = png.with_suffix(".cells")
+    # Ctrl-C in a terminal: SIGINT to the whole process group (the client and its workers).
+    process = subprocess.Popen(farm_command(png, source_dir), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True, start_new_session=True)
+    deadline = time.monotonic() + 120
+    while len(list(cells.glob("*/cell_*.exr"))) < 2 and process.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.02)
+    os.killpg(process.pid, signal.SIGINT)
+    out, err = process.communicate(timeout=60)
+    done = len(list(cells.glob("*/cell_*.exr")))
+    assert process.returncode != 0, f"the farm finished before the interruption:\n{out}{err}"
+    assert 2 <= done < CELLS, f"{done} cells after the interruption\n{err}"
+    assert not png.exists(), "a sheet was written by an interrupted sweep"
+    assert "a rerun renders the rest" in err
+
+    rerun = subprocess.run(farm_command(png, source_dir), capture_output=True, text=True, timeout=300)
+    assert rerun.returncode == 0, rerun.stdout + rerun.stderr
+    counts = re.search(r"(\d+) jobs rendered \((\d+) already done\)", rerun.stdout)
+    assert counts, rerun.stdout
+    assert (int(counts[1]), int(counts[2])) == (CELLS - done, done), rerun.stdout
+    assert_same_sheet(png, reference)
+
+
+def test_the_command_line_takes_raylab_sweeps_options_and_errors(run_raylab):
+    help_text = subprocess.run([sys.executable, "-m", "raylab.farm", "sweep", "--help"], capture_output=True,
+                               text=True, check=True).stdout
+    assert "--workers N" in help_text and "--scheduler ADDRESS" in help_text
+    assert run_raylab("sweep", "--help").stdout.strip() in help_text  # every option of raylab sweep, as it is
+    bad = subprocess.run([sys.executable, "-m", "raylab.farm", "sweep", "--model", "ward", "--param", "alpha_q",
+                          "--workers", "2"], capture_output=True, text=True)
+    command = run_raylab("sweep", "--model", "ward", "--param", "alpha_q", check=False)
+    assert bad.returncode == command.returncode == 2
+    assert bad.stderr.strip() == command.stderr.strip()
+    with pytest.raises(ValueError, match="not both"):
+        raylab.farm.sweep(STUDY, workers=2, scheduler="tcp://127.0.0.1:1")
