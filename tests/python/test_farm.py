@@ -126,3 +126,27 @@ def test_the_command_line_takes_raylab_sweeps_options_and_errors(run_raylab):
     assert bad.stderr.strip() == command.stderr.strip()
     with pytest.raises(ValueError, match="not both"):
         raylab.farm.sweep(STUDY, workers=2, scheduler="tcp://127.0.0.1:1")
+
+
+def test_a_turntable_frame_is_raylab_render_and_a_rerun_with_other_options_renders_again(work, run_raylab,
+                                                                                         source_dir):
+    scene = str(source_dir / "assets" / "scenes" / "minimal.gltf")
+    options = dict(width=64, height=48, spp=4, seed=2)
+    jobs = raylab.farm.turntable(scene, 4, str(work / "turn.exr"), **options)
+    report = raylab.farm.renders(jobs, workers=2, progress=False)
+    assert report.rendered == 4
+    # Frame 0 is the scene's camera: `raylab render` with the same options.
+    run_raylab("render", scene, "--width", 64, "--height", 48, "--spp", 4, "--seed", 2, "--out", work / "cli.exr",
+               "--no-png")
+    assert np.array_equal(raylab.read_exr(jobs[0].out), raylab.read_exr(str(work / "cli.exr")))
+    # Frame 2 looks at the target from the other side: the camera moved, the target stayed in view.
+    moved = raylab.Scene.load(scene)
+    moved.set_camera(**jobs[2].camera)
+    assert np.allclose(moved.camera["target"], raylab.Scene.load(scene).camera["target"])
+    direct = raylab.Renderer(moved, width=64, height=48).render(spp=4, seed=2)
+    assert np.array_equal(raylab.read_exr(jobs[2].out), direct)
+    assert not np.array_equal(raylab.read_exr(jobs[2].out), raylab.read_exr(jobs[0].out))
+    # The same study again: nothing to do. Other samples: every frame again.
+    assert raylab.farm.renders(jobs, workers=1, progress=False).rendered == 0
+    more = raylab.farm.turntable(scene, 4, str(work / "turn.exr"), **{**options, "spp": 5})
+    assert raylab.farm.renders(more, workers=1, progress=False).rendered == 4

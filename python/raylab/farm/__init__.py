@@ -3,20 +3,24 @@
     import raylab.farm
     report = raylab.farm.sweep(["--model", "ward", "--param", "alpha_x", "--steps", "16"], workers=2)
     print(report.summary())
+    jobs = raylab.farm.turntable("assets/scenes/minimal.gltf", frames=36, out="out/turn.exr", spp=64)
+    raylab.farm.renders(jobs, scheduler="tcp://head:8786")
 
-or from a shell, with exactly `raylab sweep`'s options plus where to run:
+or from a shell (a sweep takes exactly `raylab sweep`'s options, plus where to run):
 
     python -m raylab.farm sweep --model ward --param alpha_x --steps 16 --workers 2
-    python -m raylab.farm sweep --model ward --param alpha_x --scheduler tcp://head:8786
+    python -m raylab.farm turntable assets/scenes/minimal.gltf --frames 36 --png --scheduler tcp://head:8786
 
 Each job renders on one worker process, which owns one Vulkan device; LP_NUM_THREADS is set per worker so that the
 workers of a machine share its cores. Results are stored atomically as they arrive, a rerun skips finished jobs,
-and a job whose worker dies is run again on another. Other studies are lists of `Job`s given to `run_jobs`.
+and a job whose worker dies is run again on another. Any other study is a list of RenderJobs (`renders`) or of
+Jobs (`run_jobs`).
 """
 from .jobs import FarmReport, Job, run_jobs  # noqa: F401
+from .renders import RenderJob, renders, turntable  # noqa: F401
 from .sweep import sweep  # noqa: F401
 
-__all__ = ["FarmReport", "Job", "run_jobs", "sweep", "connect"]
+__all__ = ["FarmReport", "Job", "RenderJob", "connect", "renders", "run_jobs", "sweep", "turntable"]
 
 
 def connect(workers=None, scheduler=None):

@@ -1,9 +1,11 @@
 """Any study as independent jobs on a Dask cluster: each job renders one image on whichever worker takes it; the
-client stores each result as an EXR file (atomically) as soon as it arrives, so a rerun skips every job whose file
-exists, and a worker killed mid-job costs only that job, which the scheduler gives to another worker.
+client stores each result as an EXR file (atomically) as soon as it arrives and records in its directory's
+manifest (raylab-farm.json) what decided its pixels, so a rerun skips every job whose file exists with the same
+description, and a worker killed mid-job costs only that job, which the scheduler gives to another worker.
 
 Results travel back to the client (a cell of 192x192 is 0.6 MB), so workers on other machines need no shared
 filesystem."""
+import json
 import os
 import time
 from dataclasses import dataclass, field
@@ -22,10 +24,35 @@ class Job:
     with at least "pid", "host", "render_s" and "setup_s" (device and scene set-up paid by this job)."""
     key: str           # unique for what decides the pixels: equal keys are the same work
     name: str          # for people: progress, logs, errors
-    path: Path         # where the result is kept; the job is done when this file exists
+    path: Path         # where the result is kept (EXR)
     function: Callable[..., Any]
     args: tuple
     samples: int       # samples per pixel, for the progress line
+    description: str   # what decides the pixels: the job is done when its file exists and the manifest says this
+    png: Callable[[Any, Path], None] | None = None  # also writes a PNG beside the EXR (e.g. a frame)
+
+
+MANIFEST = "raylab-farm.json"
+
+
+def _manifest(directory: Path) -> dict:
+    try:
+        return json.loads((directory / MANIFEST).read_text())
+    except (FileNotFoundError, json.JSONDecodeError):
+        return {}
+
+
+def _record(job: "Job"):
+    """Adds the finished job to its directory's manifest, atomically (a temporary file renamed over it)."""
+    manifest = _manifest(job.path.parent)
+    manifest[job.path.name] = job.description
+    temporary = job.path.parent / f".{MANIFEST}.{os.getpid()}.tmp"
+    temporary.write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
+    os.replace(temporary, job.path.parent / MANIFEST)
+
+
+def is_done(job: "Job") -> bool:
+    return job.path.exists() and _manifest(job.path.parent).get(job.path.name) == job.description
 
 
 @dataclass
@@ -55,9 +82,9 @@ class FarmReport:
 
 
 def run_jobs(client, jobs: list[Job], log_path: Path, label: str = "raylab.farm", progress: bool = True) -> FarmReport:
-    """Runs the jobs whose result file does not exist yet; returns when every job's file exists. A failing job
-    (bad input, a device error) cancels the rest and raises its error with the job's name."""
-    todo = [job for job in jobs if not job.path.exists()]
+    """Runs the jobs that are not done yet; returns when every job is. A failing job (bad input, a device error)
+    cancels the rest and raises its error with the job's name."""
+    todo = [job for job in jobs if not is_done(job)]
     report = FarmReport(jobs=len(jobs), skipped=len(jobs) - len(todo),
                         workers=len(client.scheduler_info()["workers"]))
     if not todo:
@@ -77,6 +104,9 @@ def run_jobs(client, jobs: list[Job], log_path: Path, label: str = "raylab.farm"
                 raise _naming(job, error) from error
             job.path.parent.mkdir(parents=True, exist_ok=True)
             _raylab.write_exr(str(job.path), image)
+            if job.png is not None:
+                job.png(image, job.path)
+            _record(job)
             report.rendered += 1
             report.render_s += info["render_s"]
             report.setup_s += info["setup_s"]
@@ -89,6 +119,18 @@ def run_jobs(client, jobs: list[Job], log_path: Path, label: str = "raylab.farm"
         client.cancel(list(futures))
     report.wall_s = time.monotonic() - start
     return report
+
+
+def farm(jobs: list[Job], log_path: Path, label: str, *, client=None, workers=None, scheduler=None,
+         progress=True) -> FarmReport:
+    """run_jobs through `client`, or on a cluster made for the jobs (cluster.connect) when any is left to do."""
+    if client is not None:
+        return run_jobs(client, jobs, log_path, label, progress)
+    if all(is_done(job) for job in jobs):
+        return FarmReport(jobs=len(jobs), skipped=len(jobs))
+    from .cluster import connect  # distributed's cluster machinery, only when there is work
+    with connect(workers, scheduler) as own_client:
+        return run_jobs(own_client, jobs, log_path, label, progress)
 
 
 def _naming(job: Job, error: Exception) -> Exception:

@@ -8,7 +8,7 @@ import time
 from pathlib import Path
 
 from .. import _raylab
-from .jobs import FarmReport, Job, run_jobs, worker_info
+from .jobs import FarmReport, Job, farm, worker_info
 
 # Options that name the sheet's files: the client writes those; workers, maybe on other machines, never see them.
 _OUTPUT_OPTIONS = ("--out", "--gltf")
@@ -56,8 +56,6 @@ def sweep(arguments, *, workers=None, scheduler=None, client=None, progress=True
     """Renders `raylab sweep ARGUMENTS` (a list of its command-line arguments) on a LocalCluster of `workers`
     processes, on the running scheduler at `scheduler`, or through `client`, and writes its contact sheet as the
     command does. Raises ValueError with the command's message for bad options."""
-    from .cluster import connect  # distributed is imported only by those who farm
-
     arguments = [str(argument) for argument in arguments]
     study = _raylab.SweepStudy(arguments, outputs=True)
     if not study.renders:  # --gltf alone: written above
@@ -66,12 +64,9 @@ def sweep(arguments, *, workers=None, scheduler=None, client=None, progress=True
     on_workers = worker_arguments(arguments)
     jobs = [Job(key=f"raylab-sweep-{study.key}-cell-{cell:03d}", name=f"cell {cell} ({study.label(cell)})",
                 path=directory / f"cell_{cell:03d}.exr", function=render_cell, args=(on_workers, cell),
-                samples=study.spp)
+                samples=study.spp, description=f"raylab sweep {study.key} cell {cell}")
             for cell in range(study.cells)]
-    if client is not None:
-        report = run_jobs(client, jobs, directory / "jobs.log", "raylab.farm sweep", progress)
-    else:
-        with connect(workers, scheduler) as own_client:
-            report = run_jobs(own_client, jobs, directory / "jobs.log", "raylab.farm sweep", progress)
+    report = farm(jobs, directory / "jobs.log", "raylab.farm sweep", client=client, workers=workers,
+                  scheduler=scheduler, progress=progress)
     study.write_sheet([_raylab.read_exr(str(job.path)) for job in jobs])
     return report

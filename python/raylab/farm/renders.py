@@ -1,0 +1,123 @@
+"""Any list of renders on a Dask cluster, and the camera path built on it: a turntable around the scene's camera
+target. Each job is `raylab render` with the job's options, bit for bit: frame 0 of a turntable is the scene's own
+camera, so it equals `raylab render SCENE` with the same size, samples and seed.
+
+Scene files must be readable at the same path on every worker (a shared filesystem when workers are on other
+machines); results come back to the client, which writes them."""
+import hashlib
+import math
+import threading
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+from .. import _raylab
+from .jobs import FarmReport, Job, farm, worker_info
+
+_device_lock = threading.Lock()  # one job at a time on the worker process's device
+
+
+@dataclass(frozen=True)
+class RenderJob:
+    """One `raylab render`: the scene (a glTF path, or "" for the built-in scene), the EXR to write, and the
+    options, named as raylab.Renderer names them. `camera` holds Scene.set_camera's keywords (position, target,
+    up, fov_deg); `materials` maps material names to Scene.set_material's keywords."""
+    out: str
+    scene: str = ""
+    width: int = 640
+    height: int = 360
+    spp: int = 16
+    seed: int = 0
+    integrator: str = "auto"
+    backend: str = "auto"
+    max_depth: int = 8
+    env: str = ""
+    camera: dict = field(default_factory=dict)
+    materials: dict = field(default_factory=dict)
+    png: bool = False  # also a tone-mapped PNG beside the EXR (clamp, exposure 0, as `raylab render`)
+
+    def description(self) -> str:
+        """What decides the pixels, for the farm's manifest (the output path itself excluded)."""
+        options = asdict(self)
+        del options["out"], options["png"]
+        return repr(sorted(options.items()))
+
+
+def _scene_of(job: RenderJob):
+    scene = _raylab.Scene.load(job.scene, env=job.env) if job.scene else _raylab.Scene.default()
+    if job.env and not job.scene:
+        scene.set_environment(job.env)
+    for name, edits in job.materials.items():
+        scene.set_material(name, **edits)
+    if job.camera:
+        scene.set_camera(**job.camera)
+    return scene
+
+
+def render_job(job: RenderJob):
+    """A farm job, on a worker: the render the job describes."""
+    with _device_lock:
+        setup_start = time.monotonic()
+        renderer = _raylab.Renderer(_scene_of(job), width=job.width, height=job.height, integrator=job.integrator,
+                                    backend=job.backend, max_depth=job.max_depth)
+        start = time.monotonic()
+        image = renderer.render(spp=job.spp, seed=job.seed)
+        render_s = time.monotonic() - start
+    return image, worker_info(render_s, start - setup_start)
+
+
+def _write_png(image, exr: Path):
+    _raylab.write_png(str(exr.with_suffix(".png")), image)
+
+
+def renders(render_jobs: list[RenderJob], *, workers=None, scheduler=None, client=None, progress=True,
+            label="raylab.farm renders") -> FarmReport:
+    """Renders every job on a LocalCluster of `workers` processes, the scheduler at `scheduler`, or through
+    `client`; a rerun skips the jobs whose EXR exists from a render with the same options."""
+    if not render_jobs:
+        return FarmReport()
+    jobs = []
+    for index, job in enumerate(render_jobs):
+        out = Path(job.out)
+        if out.suffix != ".exr":
+            raise ValueError(f"raylab.farm: job {index}: out '{job.out}' must end in .exr")
+        identity = hashlib.sha1(f"{out.resolve()}|{job.description()}".encode()).hexdigest()[:16]
+        jobs.append(Job(key=f"raylab-render-{identity}",
+                        name=f"{out.name}", path=out, function=render_job, args=(job,), samples=job.spp,
+                        description=job.description(), png=_write_png if job.png else None))
+    if len({job.path.resolve() for job in jobs}) != len(jobs):
+        raise ValueError("raylab.farm: two jobs write the same file")
+    return farm(jobs, jobs[0].path.parent / "jobs.log", label, client=client, workers=workers, scheduler=scheduler,
+                progress=progress)
+
+
+def _rotate(v, axis, angle):
+    """v turned by `angle` radians about the unit vector `axis` (Rodrigues)."""
+    c, s = math.cos(angle), math.sin(angle)
+    dot = sum(a * b for a, b in zip(axis, v))
+    cross = (axis[1] * v[2] - axis[2] * v[1], axis[2] * v[0] - axis[0] * v[2], axis[0] * v[1] - axis[1] * v[0])
+    return tuple(v[i] * c + cross[i] * s + axis[i] * dot * (1 - c) for i in range(3))
+
+
+def turntable(scene: str, frames: int, out: str, **options) -> list[RenderJob]:
+    """`frames` renders of `scene` with its camera carried round its target, about the vertical (+Y, glTF's up),
+    by 360°/frames per frame: each frame's camera is frame 0's turned rigidly, so the horizon stays where it was.
+    Frame 0 is the scene's camera. `out` (FILE.exr) becomes FILE_000.exr, FILE_001.exr, ...; `options` are
+    RenderJob's (width, height, spp, seed, ...)."""
+    if frames < 1:
+        raise ValueError(f"raylab.farm turntable: --frames must be at least 1, not {frames}")
+    base = Path(out)
+    if base.suffix != ".exr":
+        raise ValueError(f"raylab.farm turntable: --out '{out}' must end in .exr")
+    camera = (_raylab.Scene.load(scene) if scene else _raylab.Scene.default()).camera
+    target = camera["target"]
+    offset = tuple(p - t for p, t in zip(camera["position"], target))
+    vertical = (0.0, 1.0, 0.0)
+    jobs = []
+    for frame in range(frames):
+        angle = 2 * math.pi * frame / frames
+        position = tuple(t + o for t, o in zip(target, _rotate(offset, vertical, angle)))
+        turned = {"position": position, "up": _rotate(camera["up"], vertical, angle)}
+        jobs.append(RenderJob(out=str(base.with_name(f"{base.stem}_{frame:03d}.exr")), scene=scene,
+                              camera={} if frame == 0 else turned, **options))
+    return jobs
