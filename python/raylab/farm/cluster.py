@@ -7,13 +7,18 @@ from distributed import Client, LocalCluster
 from distributed.diagnostics.plugin import WorkerPlugin
 
 
+def usable_cores() -> int:
+    """The cores this process may run on: a Slurm allocation or a container's cpuset, not the whole machine."""
+    return len(os.sched_getaffinity(0))
+
+
 # How long a running scheduler may be without workers before the farm gives up.
 WAIT_FOR_WORKERS_S = 60
 
 
 class LavapipeThreads(WorkerPlugin):
-    """Sets LP_NUM_THREADS on each worker (when its environment does not already) to the host's cores divided by
-    the worker processes on that host, before the worker creates its Vulkan device (at its first job). lavapipe
+    """Sets LP_NUM_THREADS on each worker (when its environment does not already) to the cores it may use divided
+    by the worker processes on that host, before the worker creates its Vulkan device (at its first job). lavapipe
     otherwise starts one rasterizer thread per core in every process: N workers on N cores would run N² threads.
 
     Workers that join a host later count the workers present then; start every worker with `--nthreads 1`, or set
@@ -26,7 +31,7 @@ class LavapipeThreads(WorkerPlugin):
             return
         identity = await worker.scheduler.identity()
         on_this_host = sum(1 for w in identity["workers"].values() if w["host"] == worker.ip)
-        os.environ["LP_NUM_THREADS"] = str(max(1, (os.cpu_count() or 1) // max(1, on_this_host)))
+        os.environ["LP_NUM_THREADS"] = str(max(1, usable_cores() // max(1, on_this_host)))
 
 
 @contextlib.contextmanager
@@ -41,11 +46,10 @@ def connect(workers=None, scheduler=None):
             _prepare(client)
             yield client
         return
-    count = workers if workers is not None else (os.cpu_count() or 1)
+    count = workers if workers is not None else usable_cores()
     if count < 1:
         raise ValueError(f"raylab.farm: --workers must be at least 1, not {count}")
-    # dashboard_address=None: no web server (and no port to collide with another farm); silence_logs keeps
-    # worker restarts at warning level.
+    # dashboard_address=None: no web server (and no port to collide with another farm).
     with LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
             Client(cluster) as client:
         client.wait_for_workers(count)

@@ -21,7 +21,8 @@ from .progress import Progress
 @dataclass(frozen=True)
 class Job:
     """One render. `function(*args)` runs on a worker and returns (float32 array, info) where info is a dict
-    with at least "pid", "host", "render_s" and "setup_s" (device and scene set-up paid by this job)."""
+    with at least "pid", "host", "render_s", "render_cpu_s" and "setup_s" (device and scene set-up paid by this
+    job): Stopwatch.info()."""
     key: str           # unique for what decides the pixels: equal keys are the same work
     name: str          # for people: progress, logs, errors
     path: Path         # where the result is kept (EXR)
@@ -63,6 +64,7 @@ class FarmReport:
     workers: int = 0
     wall_s: float = 0.0       # submission to last result
     render_s: float = 0.0     # the workers' rendering, summed
+    render_cpu_s: float = 0.0  # the CPU time of that rendering (all of lavapipe's threads), summed
     setup_s: float = 0.0      # the workers' device and scene set-up, summed
     by_pid: dict = field(default_factory=dict)  # job name -> the worker process that rendered it
 
@@ -109,6 +111,7 @@ def run_jobs(client, jobs: list[Job], log_path: Path, label: str = "raylab.farm"
             _record(job)
             report.rendered += 1
             report.render_s += info["render_s"]
+            report.render_cpu_s += info["render_cpu_s"]
             report.setup_s += info["setup_s"]
             report.by_pid[job.name] = info["pid"]
             with open(log_path, "a") as log:
@@ -142,5 +145,17 @@ def _naming(job: Job, error: Exception) -> Exception:
     return RuntimeError(f"{job.name}: {type(error).__name__}: {error}")
 
 
-def worker_info(render_s: float, setup_s: float) -> dict:
-    return {"pid": os.getpid(), "host": os.uname().nodename, "render_s": render_s, "setup_s": setup_s}
+class Stopwatch:
+    """Wall and CPU time (the process's: every lavapipe thread) of a worker's job, set-up and render apart."""
+
+    def __init__(self):
+        self.wall, self.cpu = time.monotonic(), time.process_time()
+        self.setup_s = 0.0
+
+    def setup_done(self):
+        self.setup_s = time.monotonic() - self.wall
+        self.wall, self.cpu = time.monotonic(), time.process_time()
+
+    def info(self) -> dict:
+        return {"pid": os.getpid(), "host": os.uname().nodename, "render_s": time.monotonic() - self.wall,
+                "render_cpu_s": time.process_time() - self.cpu, "setup_s": self.setup_s}

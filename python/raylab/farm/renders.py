@@ -7,12 +7,11 @@ machines); results come back to the client, which writes them."""
 import hashlib
 import math
 import threading
-import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 from .. import _raylab
-from .jobs import FarmReport, Job, farm, worker_info
+from .jobs import FarmReport, Job, Stopwatch, farm
 
 _device_lock = threading.Lock()  # one job at a time on the worker process's device
 
@@ -57,13 +56,12 @@ def _scene_of(job: RenderJob):
 def render_job(job: RenderJob):
     """A farm job, on a worker: the render the job describes."""
     with _device_lock:
-        setup_start = time.monotonic()
+        clock = Stopwatch()
         renderer = _raylab.Renderer(_scene_of(job), width=job.width, height=job.height, integrator=job.integrator,
                                     backend=job.backend, max_depth=job.max_depth)
-        start = time.monotonic()
+        clock.setup_done()
         image = renderer.render(spp=job.spp, seed=job.seed)
-        render_s = time.monotonic() - start
-    return image, worker_info(render_s, start - setup_start)
+        return image, clock.info()
 
 
 def _write_png(image, exr: Path):

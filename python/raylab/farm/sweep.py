@@ -4,11 +4,10 @@ Finished cells are kept as EXR files in FILE.cells/KEY/ beside the sheet, KEY st
 decides their pixels, so a rerun of an interrupted sweep renders only the missing cells, and a rerun with other
 options starts a new set."""
 import threading
-import time
 from pathlib import Path
 
 from .. import _raylab
-from .jobs import FarmReport, Job, farm, worker_info
+from .jobs import FarmReport, Job, Stopwatch, farm
 
 # Options that name the sheet's files: the client writes those; workers, maybe on other machines, never see them.
 _OUTPUT_OPTIONS = ("--out", "--gltf")
@@ -35,17 +34,15 @@ def worker_arguments(arguments: list[str]) -> tuple[str, ...]:
 def render_cell(arguments: tuple[str, ...], cell: int):
     """A farm job, on a worker: cell `cell` of the sweep `raylab sweep ARGUMENTS` describes."""
     with _device_lock:
-        setup_start = time.monotonic()
+        clock = Stopwatch()
         study = _studies.get(arguments)
         if study is None:
             study = _raylab.SweepStudy(list(arguments), outputs=False)
             study.prepare()
             _studies[arguments] = study
-        start = time.monotonic()
+        clock.setup_done()
         image = study.render_cell(cell)
-        setup_s = start - setup_start
-        render_s = time.monotonic() - start
-    return image, worker_info(render_s, setup_s)
+        return image, clock.info()
 
 
 def cells_directory(study) -> Path:
