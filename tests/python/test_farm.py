@@ -150,3 +150,21 @@ def test_a_turntable_frame_is_raylab_render_and_a_rerun_with_other_options_rende
     assert raylab.farm.renders(jobs, workers=1, progress=False).rendered == 0
     more = raylab.farm.turntable(scene, 4, str(work / "turn.exr"), **{**options, "spp": 5})
     assert raylab.farm.renders(more, workers=1, progress=False).rendered == 4
+
+
+def test_bad_jobs_are_refused_before_any_cluster_starts(work, source_dir):
+    scene = str(source_dir / "assets" / "scenes" / "minimal.gltf")
+    rough = raylab.farm.RenderJob(out=str(work / "a.exr"), scene=scene,
+                                  materials={"red plastic": {"model": "cooktorrance", "m": -1}})
+    with pytest.raises(ValueError, match=r"job 0 \(.*a.exr\): material 'red plastic': m = -1 is outside"):
+        raylab.farm.renders([rough], scheduler="tcp://127.0.0.1:1")  # nobody listens: the check comes first
+    missing = raylab.farm.RenderJob(out=str(work / "b.exr"), scene=str(work / "nope.gltf"))
+    with pytest.raises(FileNotFoundError, match="job 0 .*nope.gltf"):
+        raylab.farm.renders([missing], scheduler="tcp://127.0.0.1:1")
+    with pytest.raises(ValueError, match="must end in .exr"):
+        raylab.farm.renders([raylab.farm.RenderJob(out=str(work / "c.png"))], scheduler="tcp://127.0.0.1:1")
+    same = raylab.farm.RenderJob(out=str(work / "d.exr"))
+    with pytest.raises(ValueError, match="same file"):
+        raylab.farm.renders([same, same], scheduler="tcp://127.0.0.1:1")
+    with pytest.raises(ValueError, match="--frames must be at least 1"):
+        raylab.farm.turntable(scene, 0, str(work / "t.exr"))

@@ -7,7 +7,7 @@ machines); results come back to the client, which writes them."""
 import hashlib
 import math
 import threading
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 
 from .. import _raylab
@@ -42,14 +42,20 @@ class RenderJob:
         return repr(sorted(options.items()))
 
 
-def _scene_of(job: RenderJob):
-    scene = _raylab.Scene.load(job.scene, env=job.env) if job.scene else _raylab.Scene.default()
-    if job.env and not job.scene:
-        scene.set_environment(job.env)
+def _scene_of(job: RenderJob, loaded=None):
+    """The job's scene with its edits: loaded from its file, or `loaded` (a scene from the same file) edited."""
+    scene = loaded if loaded is not None else _load(job)
     for name, edits in job.materials.items():
         scene.set_material(name, **edits)
     if job.camera:
         scene.set_camera(**job.camera)
+    return scene
+
+
+def _load(job: RenderJob):
+    scene = _raylab.Scene.load(job.scene, env=job.env) if job.scene else _raylab.Scene.default()
+    if job.env and not job.scene:
+        scene.set_environment(job.env)
     return scene
 
 
@@ -74,19 +80,37 @@ def renders(render_jobs: list[RenderJob], *, workers=None, scheduler=None, clien
     `client`; a rerun skips the jobs whose EXR exists from a render with the same options."""
     if not render_jobs:
         return FarmReport()
+    loaded = {}  # one load per scene file for the checks: a turntable's frames share theirs
+    render_jobs = [_checked(render_jobs, index, loaded) for index in range(len(render_jobs))]
     jobs = []
-    for index, job in enumerate(render_jobs):
+    for job in render_jobs:
         out = Path(job.out)
-        if out.suffix != ".exr":
-            raise ValueError(f"raylab.farm: job {index}: out '{job.out}' must end in .exr")
         identity = hashlib.sha1(f"{out.resolve()}|{job.description()}".encode()).hexdigest()[:16]
-        jobs.append(Job(key=f"raylab-render-{identity}",
-                        name=f"{out.name}", path=out, function=render_job, args=(job,), samples=job.spp,
-                        description=job.description(), png=_write_png if job.png else None))
+        jobs.append(Job(key=f"raylab-render-{identity}", name=out.name, path=out, function=render_job, args=(job,),
+                        samples=job.spp, description=job.description(), png=_write_png if job.png else None))
     if len({job.path.resolve() for job in jobs}) != len(jobs):
         raise ValueError("raylab.farm: two jobs write the same file")
     return farm(jobs, jobs[0].path.parent / "jobs.log", label, client=client, workers=workers, scheduler=scheduler,
                 progress=progress)
+
+
+def _checked(render_jobs: list[RenderJob], index: int, loaded: dict) -> RenderJob:
+    """The job with its files as absolute paths (workers may run elsewhere), after the checks a worker would
+    make, here, before any cluster starts: its scene loads and takes its edits (ValueError or FileNotFoundError
+    naming the job otherwise)."""
+    job = render_jobs[index]
+    if Path(job.out).suffix != ".exr":
+        raise ValueError(f"raylab.farm: job {index}: out '{job.out}' must end in .exr")
+    absolute = replace(job, scene=str(Path(job.scene).resolve()) if job.scene else "",
+                       env=str(Path(job.env).resolve()) if job.env else "")
+    try:
+        key = (absolute.scene, absolute.env)
+        if key not in loaded:
+            loaded[key] = _load(absolute)
+        _scene_of(absolute, loaded[key])  # the edits, checked on the shared copy
+    except (ValueError, FileNotFoundError, RuntimeError) as error:
+        raise type(error)(f"raylab.farm: job {index} ({job.out}): {error}") from None
+    return absolute
 
 
 def _rotate(v, axis, angle):
