@@ -1,6 +1,9 @@
 """The Python module against the command line: the same renders bit for bit, the same BRDF values, the same
 errors; and a render that another thread interrupts stops within one submission."""
 import _thread
+import os
+import subprocess
+import sys
 import threading
 import time
 
@@ -183,3 +186,23 @@ def test_ctrl_c_raises_keyboard_interrupt_between_submissions():
         renderer.render(spp=100000)
     assert time.monotonic() - start < 2.5
     timer.cancel()
+
+
+
+def test_a_device_without_what_was_asked_raises_runtime_error_with_the_command_lines_message(raylab_binary, work):
+    # The device survey is made once per process: fresh processes see the ray queries hidden.
+    environment = {**os.environ, "RAYLAB_HIDE_RAY_QUERIES": "1"}
+    code = ("import raylab\n"
+            "try:\n"
+            "    raylab.Renderer(raylab.Scene.default(), width=8, height=8, backend='query')\n"
+            "except RuntimeError as error:\n"
+            "    print(error)\n"
+            "print(raylab.Renderer(raylab.Scene.default(), width=8, height=8).report()['backend'])\n")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=environment)
+    assert result.returncode == 0, result.stderr
+    message, backend = result.stdout.strip().splitlines()
+    command = subprocess.run([str(raylab_binary), "render", "--backend", "query", "--width", "8", "--height", "8",
+                              "--out", str(work / "never.exr"), "--no-png"], capture_output=True, text=True, env=environment)
+    assert command.returncode == 3
+    assert "offers no ray queries" in message and message in command.stderr
+    assert backend == "pipeline"  # auto takes the ray-tracing pipeline, as the command line does
