@@ -166,5 +166,7 @@ def test_bad_jobs_are_refused_before_any_cluster_starts(work, source_dir):
     same = raylab.farm.RenderJob(out=str(work / "d.exr"))
     with pytest.raises(ValueError, match="same file"):
         raylab.farm.renders([same, same], scheduler="tcp://127.0.0.1:1")
+    with pytest.raises(ValueError, match=r"spp must be an integer in \[1, 1048576\], not 0"):
+        raylab.farm.turntable(scene, 4, str(work / "t.exr"), spp=0)
     with pytest.raises(ValueError, match="--frames must be at least 1"):
         raylab.farm.turntable(scene, 0, str(work / "t.exr"))

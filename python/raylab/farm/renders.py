@@ -35,6 +35,17 @@ class RenderJob:
     materials: dict = field(default_factory=dict)
     png: bool = False  # also a tone-mapped PNG beside the EXR (clamp, exposure 0, as `raylab render`)
 
+    def __post_init__(self):
+        # `raylab render`'s ranges, checked where the job is made rather than on a worker after a cluster started.
+        for name, low, high in (("width", 1, 16384), ("height", 1, 16384), ("spp", 1, 1 << 20),
+                                ("seed", 0, (1 << 32) - 1), ("max_depth", 0, 64)):
+            value = getattr(self, name)
+            if not isinstance(value, int) or not low <= value <= high:
+                raise ValueError(f"raylab.farm: {name} must be an integer in [{low}, {high}], not {value!r}")
+        for name, choices in (("integrator", ("auto", "slides", "path")), ("backend", ("auto", "query", "pipeline"))):
+            if getattr(self, name) not in choices:
+                raise ValueError(f"raylab.farm: {name} is {', '.join(choices)}, not {getattr(self, name)!r}")
+
     def description(self) -> str:
         """What decides the pixels, for the farm's manifest (the output path itself excluded)."""
         options = asdict(self)
