@@ -13,7 +13,7 @@ Overhead: a sweep of 64 cells of 16x16 at 1 spp, whose renders take about a mill
 job beyond rendering and set-up (scheduling, transfer of the result, the client writing the EXR and the
 manifest) is what remains: (wall x workers - render - set-up) / jobs.
 
-    .venv/bin/python tools/farm_scaling.py            # about 3 minutes on 2 cores
+    .venv/bin/python tools/farm_scaling.py            # about 6 minutes on 2 cores
     .venv/bin/python tools/farm_scaling.py --spp 256  # quicker, smaller renders
 """
 from __future__ import annotations
