@@ -38,6 +38,7 @@ FrameSlot createFrameSlot(const Device& device) {
 
 void destroyFrameSlot(const Device& device, FrameSlot& slot) {
   destroyBuffer(device, slot.capture);
+  destroyBuffer(device, slot.difference);
   destroyBuffer(device, slot.rayStats);
   if (slot.timestamps != VK_NULL_HANDLE) vkDestroyQueryPool(device.handle, slot.timestamps, nullptr);
   if (slot.imageAvailable != VK_NULL_HANDLE) vkDestroySemaphore(device.handle, slot.imageAvailable, nullptr);

@@ -1,6 +1,6 @@
 // What one frame in flight owns: its command buffer, the fence the main thread polls instead of waiting, the
 // acquire semaphore, timestamps around the trace passes (the scheduler's cost model), a copy of the ray
-// counters, and a read-back buffer for window captures.
+// counters, and read-back buffers for window captures and the comparison's difference statistics.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -31,6 +31,7 @@ struct FrameSlot {
   VkQueryPool timestamps = VK_NULL_HANDLE;
   Buffer rayStats;     // RayStats after this frame's passes
   Buffer capture;      // swapchain pixels, when the frame captured the window
+  Buffer difference;   // both sides' accumulated sums, when the frame read them for the difference statistics
   bool inFlight = false;
 
   // What the submitted frame did, read back when it completes.
@@ -42,6 +43,8 @@ struct FrameSlot {
   bool measure = false;   // its timings may feed the cost model (not a kernel's first dispatch)
   bool captured = false;
   VkExtent2D captureExtent{};
+  bool differenceRead = false;
+  glm::uvec2 differenceExtent{0};
 };
 
 FrameSlot createFrameSlot(const Device& device);

@@ -24,7 +24,6 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
   PanelEdits edits;
   if (v.panelShown) {
     updateStatus(v);
-    updateDifferenceStats(v);
     edits = drawPanel(v.scene, v.settings, v.selection, v.status, v.controller.sceneSize,
                       float(v.swapchain.extent.height), [&v] { drawComparisonSections(v); });
   }
@@ -72,7 +71,7 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
   }
 
   const bool capture = !v.options.windowCapture.empty() && v.options.frames && v.frameIndex + 1 == *v.options.frames;
-  recordFrame(v, slot, paused ? nullptr : &plan, imageIndex, capture);
+  recordFrame(v, slot, paused ? nullptr : &plan, imageIndex, capture, !paused && differenceStatsDue(v));
   slot.submitSeconds = now;
   slot.pixelSamples = plan.pixelSamples;
   slot.traceExtent = v.scheduler.traceExtent;

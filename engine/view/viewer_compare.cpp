@@ -16,6 +16,7 @@
 #include "scene/camera_pivot.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "vk/commands.h"
 
 namespace raylab {
 
@@ -149,27 +150,55 @@ void pickAt(Viewer& v, glm::vec2 fraction) {
   }
 }
 
-void updateDifferenceStats(Viewer& v) {
-  if (!v.comparison.active || v.scheduler.sampleIndex == 0 || v.scheduler.preview) return;
-  const double now = v.clock.seconds();
-  if (v.difference.valid && (v.difference.spp == v.scheduler.sampleIndex || now - v.lastDifference < kDifferenceSeconds)) {
-    return;
+bool differenceStatsDue(const Viewer& v) {
+  if (!v.panelShown || !v.comparison.active || v.scheduler.sampleIndex == 0 || v.scheduler.preview) return false;
+  const bool reading = std::any_of(v.slots.begin(), v.slots.end(),
+                                   [](const FrameSlot& slot) { return slot.inFlight && slot.differenceRead; });
+  if (reading) return false;
+  if (!v.difference.valid) return true;
+  if (v.difference.spp == v.scheduler.sampleIndex) return false;
+  // Scripts measure at every sample count they can (their output is deterministic); a person reads them at most
+  // once a second.
+  return v.automation || v.clock.seconds() - v.lastDifference >= kDifferenceSeconds;
+}
+
+void recordDifferenceReadback(VkCommandBuffer cmd, Viewer& v, FrameSlot& slot) {
+  const glm::uvec2 extent(v.renderer.params.width, v.renderer.params.height);
+  const VkDeviceSize side = VkDeviceSize(extent.x) * extent.y * sizeof(glm::vec4);
+  if (slot.difference.size < 2 * side) {
+    destroyBuffer(v.device, slot.difference);
+    slot.difference = createBuffer(v.device, 2 * side, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kHost,
+                                   "difference read-back");
   }
-  waitForFrames(v);
-  const Image a = readImage(v.device, v.renderer);
-  const Image b = readImage(v.device, v.comparison.renderer);
+  computeBarrier(cmd);  // the trace passes' sums, before the copies read them
+  const VkBufferCopy left{0, 0, side};
+  const VkBufferCopy right{0, side, side};
+  vkCmdCopyBuffer(cmd, v.renderer.accumulation.handle, slot.difference.handle, 1, &left);
+  vkCmdCopyBuffer(cmd, v.comparison.renderer.accumulation.handle, slot.difference.handle, 1, &right);
+  computeBarrier(cmd);  // the copies' writes, visible to the host
+  slot.differenceRead = true;
+  slot.differenceExtent = extent;
+}
+
+void readDifferenceStats(Viewer& v, FrameSlot& slot) {
+  slot.differenceRead = false;
+  if (!v.comparison.active) return;  // stopped while the frame was in flight
+  const auto* sums = static_cast<const glm::vec4*>(slot.difference.mapped);
+  const std::size_t pixels = std::size_t(slot.differenceExtent.x) * slot.differenceExtent.y;
+  const auto mean = [](const glm::vec4& sum) { return sum.w > 0.0f ? sum / sum.w : glm::vec4(0.0f); };
   const bool relative = v.compareView.show == CompareShow::kRelativeDifference;
-  double sum = 0.0, largest = 0.0;
-  for (std::uint32_t y = 0; y < a.height; ++y) {
-    for (std::uint32_t x = 0; x < a.width; ++x) {
-      const double d = pixelDifference(a.at(x, y), b.at(x, y), relative);
-      sum += d;
-      largest = std::max(largest, d);
-    }
+  double total = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const double d = pixelDifference(mean(sums[i]), mean(sums[pixels + i]), relative);
+    total += d;
+    largest = std::max(largest, d);
   }
-  v.difference = {true, sum / double(std::max<std::size_t>(1, std::size_t(a.width) * a.height)), largest,
-                  v.scheduler.sampleIndex};
-  v.lastDifference = now;
+  v.difference = {true, total / double(std::max<std::size_t>(1, pixels)), largest, slot.spp};
+  v.lastDifference = v.clock.seconds();
+  if (!v.options.quiet && v.automation) {
+    std::printf("raylab view: difference %s mean %.9g max %.9g (%u spp)\n", relative ? "relative" : "absolute",
+                v.difference.mean, v.difference.max, v.difference.spp);
+  }
 }
 
 void drawComparisonSections(Viewer& v) {

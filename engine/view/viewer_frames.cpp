@@ -54,6 +54,7 @@ void completeFrame(Viewer& v, FrameSlot& slot) {
   record.pixelSamples = slot.pixelSamples;
   v.report.frames.push_back(record);
   if (slot.captured) writeWindowCapture(v, slot);
+  if (slot.differenceRead) readDifferenceStats(v, slot);
   slot.inFlight = false;
   slot.captured = false;
 }
@@ -101,7 +102,8 @@ void recordCapture(VkCommandBuffer cmd, Viewer& v, FrameSlot& slot, VkImage imag
   slot.captureExtent = extent;
 }
 
-void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_t imageIndex, bool capture) {
+void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_t imageIndex, bool capture,
+                 bool readDifference) {
   VkCommandBuffer cmd = slot.cmd;
   VK_CHECK(vkResetCommandBuffer(cmd, 0));
   VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
@@ -133,6 +135,7 @@ void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_
   }
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, slot.timestamps, kTraceEnd);
   recordCopyRayStats(cmd, v.renderer, slot.rayStats.handle);
+  if (readDifference) recordDifferenceReadback(cmd, v, slot);
 
   // The display pass: the whole preview while moving; while refining only the tiles traced this frame (the
   // refined image keeps its texels), which saves most of the pass at large sizes.

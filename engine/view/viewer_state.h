@@ -41,7 +41,7 @@ constexpr double kResizeTimeout = 5.0;  // seconds a scripted resize may take
 constexpr double kRaysWindow = 1.0;     // rays/s over this many seconds of frames
 constexpr double kIdleWaitSeconds = 0.5;    // idle: the status line still refreshes this often
 constexpr double kBuildPollSeconds = 0.05;  // a kernel build's end is noticed within this
-constexpr double kDifferenceSeconds = 1.0;  // the difference statistics read both images back at most this often
+constexpr double kDifferenceSeconds = 1.0;  // the difference statistics are measured at most this often
 constexpr double kHoverSeconds = 0.1;       // the hovered material is cast for at most this often
 constexpr std::uint64_t kHoverTriangles = 200'000;  // above this the CPU cast is too slow for hovering
 
@@ -134,7 +134,8 @@ void reapFinishedFrames(Viewer& v);
 // what they use (buffers, pipelines, the swapchain).
 void waitForFrames(Viewer& v);
 bool anyInFlight(const Viewer& v);
-void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_t imageIndex, bool capture);
+void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_t imageIndex, bool capture,
+                 bool readDifference);
 void submitAndPresent(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex);
 
 // viewer_edits.cpp
@@ -163,7 +164,11 @@ void pickAt(Viewer& v, glm::vec2 fraction);
 // The panel's Compare, Picked pixel and Lobe sections.
 void drawComparisonSections(Viewer& v);
 void drawOverlay(Viewer& v);
-void updateDifferenceStats(Viewer& v);
+// The difference statistics, without stalling the frames: a frame that is due copies both sides' sums into its
+// slot after its trace passes, and the statistics are computed when that frame completes.
+bool differenceStatsDue(const Viewer& v);
+void recordDifferenceReadback(VkCommandBuffer cmd, Viewer& v, FrameSlot& slot);
+void readDifferenceStats(Viewer& v, FrameSlot& slot);
 DisplaySettings displaySettings(const Viewer& v);
 // With a comparison, FILE_compare.exr (the right side) and FILE_difference.exr (|A - B|) beside a screenshot.
 void saveComparison(Viewer& v, const std::string& exrPath);

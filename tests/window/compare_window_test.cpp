@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -139,6 +140,42 @@ TEST(CompareWindowTest, DifferenceOfIdenticalSidesIsExactlyZeroInTheImageAndTheW
   for (int y = int(kFirstUnlabelledRow); y < window.height - 40; ++y) {  // above the colour bar
     for (int x = 0; x < window.width; ++x) ASSERT_EQ(window.at(x, y), zero) << "pixel " << x << ", " << y;
   }
+}
+
+// The panel's mean and largest |A - B| are measured from a frame's own copy of both sides when that frame completes
+// (no stall of the frames in flight): they are those of the two renders at the samples the frame had.
+TEST(CompareWindowTest, DifferenceStatisticsAreThoseOfTheTwoRenders) {
+  const std::string dir = scratchDir();
+  std::vector<std::string> arguments = viewArguments(kWard, dir + "/stats", {"--frames", "3"});
+  arguments.erase(std::find(arguments.begin(), arguments.end(), "--no-panel"));  // the statistics are the panel's
+  const CommandResult result = runView(arguments);
+  expectCleanRun(result);
+  const std::string prefix = "raylab view: difference absolute mean ";
+  const std::size_t at = result.output.rfind(prefix);  // the last measurement
+  ASSERT_NE(at, std::string::npos) << "no statistics were measured:\n" << result.output;
+  double mean = 0.0, largest = 0.0;
+  unsigned spp = 0;
+  ASSERT_EQ(std::sscanf(result.output.c_str() + at + prefix.size(), "%lf max %lf (%u spp)", &mean, &largest, &spp), 3)
+      << result.output.substr(at);
+  // A frame reuses the slot of the frame two before, so the third frame measures again: at 3 spp, where a
+  // statistic that forgot to divide the sums by the sample count would be three times too large.
+  ASSERT_GE(spp, 2u) << result.output;
+  const Image a = renderReference(renderArguments(std::to_string(spp)), dir + "/stats_scene.exr");
+  std::vector<std::string> switched = renderArguments(std::to_string(spp));
+  switched.insert(switched.end(), {"--material", kWard});
+  const Image b = renderReference(switched, dir + "/stats_switched.exr");
+  double expectedSum = 0.0, expectedLargest = 0.0;
+  for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+    double d = 0.0;
+    for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(double(a.rgba[i + c]) - double(b.rgba[i + c])));
+    expectedSum += d;
+    expectedLargest = std::max(expectedLargest, d);
+  }
+  const double expectedMean = expectedSum / double(a.width * a.height);
+  EXPECT_GT(expectedMean, 0.01) << "the models hardly differ: the test would not see wrong statistics";
+  // The viewer divides the sums by the sample count where raylab render multiplies by its reciprocal: rounding.
+  EXPECT_NEAR(mean, expectedMean, 1e-5 * expectedMean);
+  EXPECT_NEAR(largest, expectedLargest, 1e-5 * expectedLargest);
 }
 
 TEST(CompareWindowTest, DifferenceOfTwoModelsIsTheDifferenceOfTheirRenders) {
