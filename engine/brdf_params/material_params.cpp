@@ -136,4 +136,23 @@ gpu::MaterialRecord defaultRecord(std::uint32_t model) {
   return record;
 }
 
+std::string formatParamValue(glm::vec3 value, bool rgb) {
+  char text[96];
+  if (rgb && !(value.x == value.y && value.y == value.z)) {
+    std::snprintf(text, sizeof text, "%g/%g/%g", double(value.x), double(value.y), double(value.z));
+  } else {
+    std::snprintf(text, sizeof text, "%g", double(value.x));
+  }
+  return text;
+}
+
+std::string describeModelParams(const gpu::MaterialRecord& record) {
+  const ModelInfo& model = modelInfo(record.model);
+  std::string text(model.name);
+  for (const ParamInfo& param : model.params) {
+    text += " " + std::string(param.name) + "=" + formatParamValue(getParam(record, param.name), param.rgb);
+  }
+  return text;
+}
+
 }  // namespace raylab

@@ -48,4 +48,10 @@ glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name);
 // A record of `model` with every parameter at its default.
 gpu::MaterialRecord defaultRecord(std::uint32_t model);
 
+// A parameter's value as the command line writes it: "0.5", or "0.7/0.1/0.1" for an RGB value with unequal channels.
+std::string formatParamValue(glm::vec3 value, bool rgb);
+// "phong rho_d=0.7/0.1/0.1 rho_s=0.5 s=50": the model and its own parameters (not delta), in the syntax of
+// `raylab brdf eval` and `--compare`.
+std::string describeModelParams(const gpu::MaterialRecord& record);
+
 }  // namespace raylab

@@ -137,7 +137,7 @@ void addStage(Scene& scene, SweepStage stage, std::uint32_t count) {
   }
 }
 
-std::string formatParamValue(glm::vec3 value, bool rgb) {
+std::string formatSweepParam(glm::vec3 value, bool rgb) {
   if (!rgb || (value.x == value.y && value.y == value.z)) return formatSweepValue(value.x);
   return formatSweepValue(value.x) + "/" + formatSweepValue(value.y) + "/" + formatSweepValue(value.z);
 }
@@ -253,7 +253,7 @@ std::string sweepTitle(const SweepScene& sweep) {
                       " to " + formatSweepValue(sweep.spec.to) + (sweep.spec.logScale ? " (log)" : "");
   for (const ParamInfo& param : model.params) {
     if (param.name == sweep.spec.param) continue;
-    title += ", " + std::string(param.name) + " = " + formatParamValue(getParam(sweep.fixed, param.name), param.rgb);
+    title += ", " + std::string(param.name) + " = " + formatSweepParam(getParam(sweep.fixed, param.name), param.rgb);
   }
   if (sweep.spec.param != deltaParam().name && sweep.fixed.delta != 0.0f) {
     title += ", delta = " + formatSweepValue(sweep.fixed.delta);

@@ -42,16 +42,6 @@ float parseFloat(const std::string& word, const std::string& where) {
   return value;
 }
 
-std::string formatValue(glm::vec3 v, bool rgb) {
-  char text[96];
-  if (rgb && !(v.x == v.y && v.y == v.z)) {
-    std::snprintf(text, sizeof text, "%g/%g/%g", double(v.x), double(v.y), double(v.z));
-  } else {
-    std::snprintf(text, sizeof text, "%g", double(v.x));
-  }
-  return text;
-}
-
 }  // namespace
 
 CompareSpec parseCompareSpec(const std::string& text, const Scene& scene, const std::string& where) {
@@ -112,12 +102,8 @@ CompareSpec parseCompareSpec(const std::string& text, const Scene& scene, const 
 }
 
 std::string describeRecord(const gpu::MaterialRecord& record) {
-  const ModelInfo& model = modelInfo(record.model);
-  std::string text(model.name);
-  for (const ParamInfo& param : model.params) {
-    text += " " + std::string(param.name) + "=" + formatValue(getParam(record, param.name), param.rgb);
-  }
-  if (record.delta > 0.0f) text += " delta=" + formatValue(glm::vec3(record.delta), false);
+  std::string text = describeModelParams(record);
+  if (record.delta > 0.0f) text += " delta=" + formatParamValue(glm::vec3(record.delta), false);
   return text;
 }
 

@@ -16,16 +16,6 @@ namespace raylab {
 
 namespace {
 
-std::string formatValue(glm::vec3 v, bool rgb) {
-  char text[96];
-  if (rgb && !(v.x == v.y && v.y == v.z)) {
-    std::snprintf(text, sizeof text, "%g/%g/%g", double(v.x), double(v.y), double(v.z));
-  } else {
-    std::snprintf(text, sizeof text, "%g", double(v.x));
-  }
-  return text;
-}
-
 std::string formatVector(glm::vec3 v) {
   char text[96];
   std::snprintf(text, sizeof text, "(%g, %g, %g)", double(v.x), double(v.y), double(v.z));
@@ -34,14 +24,9 @@ std::string formatVector(glm::vec3 v) {
 
 // "phong rho_d=0.7/0.1/0.1 rho_s=0.5 s=50 delta=0", in the syntax of `raylab brdf eval` and `--compare`.
 std::string describeMaterial(const gpu::MaterialRecord& record) {
-  const ModelInfo& model = modelInfo(record.model);
-  std::string text(model.name);
-  for (const ParamInfo& param : model.params) {
-    text += " " + std::string(param.name) + "=" + formatValue(getParam(record, param.name), param.rgb);
-  }
-  text += " delta=" + formatValue(glm::vec3(record.delta), false);
+  std::string text = describeModelParams(record) + " delta=" + formatParamValue(glm::vec3(record.delta), false);
   if (std::max({record.emission.x, record.emission.y, record.emission.z}) > 0.0f) {
-    text += " emission=" + formatValue(record.emission, true);
+    text += " emission=" + formatParamValue(record.emission, true);
   }
   return text;
 }
