@@ -20,31 +20,53 @@ void checkCapacity(const char* what, std::size_t count, std::uint32_t capacity) 
   }
 }
 
+struct BatchLayout {
+  const char* shader;
+  std::uint32_t pushBytes;
+  std::uint32_t inputBinding;
+  VkDeviceSize inputStride;
+  const char* inputName;
+  std::uint32_t outputBinding;
+  VkDeviceSize outputStride;
+  const char* outputName;
+};
+
+BatchKernel createBatchKernel(const Device& device, const BatchLayout& layout, std::uint32_t capacity) {
+  BatchKernel batch;
+  batch.capacity = capacity;
+  const DescriptorBinding bindings[] = {{layout.inputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                        {layout.outputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+  batch.kernel = createComputeKernel(device, layout.shader, bindings, layout.pushBytes);
+  batch.inputs = createBuffer(device, VkDeviceSize(capacity) * layout.inputStride,
+                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kDevice,
+                              layout.inputName);
+  batch.outputs = createBuffer(device, VkDeviceSize(capacity) * layout.outputStride,
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                               MemoryUse::kDevice, layout.outputName);
+  writeStorageBuffer(device, batch.kernel.descriptors.set, layout.inputBinding, batch.inputs.handle);
+  writeStorageBuffer(device, batch.kernel.descriptors.set, layout.outputBinding, batch.outputs.handle);
+  return batch;
+}
+
 }  // namespace
+
+void destroyBatchKernel(const Device& device, BatchKernel& batch) {
+  destroyBuffer(device, batch.outputs);
+  destroyBuffer(device, batch.inputs);
+  destroyComputeKernel(device, batch.kernel);
+  batch = {};
+}
 
 BrdfEvaluator createBrdfEvaluator(const Device& device, std::uint32_t capacity) {
   BrdfEvaluator evaluator;
-  evaluator.capacity = capacity;
-  const DescriptorBinding bindings[] = {{gpu::kBindingBrdfCases, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                        {gpu::kBindingBrdfValues, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-  evaluator.kernel = createComputeKernel(device, "brdf_eval.comp", bindings, sizeof(std::uint32_t));
-  evaluator.cases = createBuffer(device, VkDeviceSize(capacity) * sizeof(gpu::BrdfEvalCase),
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                 MemoryUse::kDevice, "brdf eval cases");
-  evaluator.values = createBuffer(device, VkDeviceSize(capacity) * sizeof(gpu::BrdfEvalValue),
-                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                  MemoryUse::kDevice, "brdf eval values");
-  writeStorageBuffer(device, evaluator.kernel.descriptors.set, gpu::kBindingBrdfCases, evaluator.cases.handle);
-  writeStorageBuffer(device, evaluator.kernel.descriptors.set, gpu::kBindingBrdfValues, evaluator.values.handle);
+  static_cast<BatchKernel&>(evaluator) = createBatchKernel(
+      device, {"brdf_eval.comp", sizeof(std::uint32_t), gpu::kBindingBrdfCases, sizeof(gpu::BrdfEvalCase),
+               "brdf eval cases", gpu::kBindingBrdfValues, sizeof(gpu::BrdfEvalValue), "brdf eval values"},
+      capacity);
   return evaluator;
 }
 
-void destroyBrdfEvaluator(const Device& device, BrdfEvaluator& evaluator) {
-  destroyBuffer(device, evaluator.values);
-  destroyBuffer(device, evaluator.cases);
-  destroyComputeKernel(device, evaluator.kernel);
-  evaluator = {};
-}
+void destroyBrdfEvaluator(const Device& device, BrdfEvaluator& evaluator) { destroyBatchKernel(device, evaluator); }
 
 std::vector<gpu::BrdfEvalValue> evaluateBrdfCases(const Device& device, BrdfEvaluator& evaluator,
                                                   std::span<const gpu::BrdfEvalCase> cases,
@@ -53,14 +75,14 @@ std::vector<gpu::BrdfEvalValue> evaluateBrdfCases(const Device& device, BrdfEval
   const auto count = static_cast<std::uint32_t>(cases.size());
   std::vector<gpu::BrdfEvalValue> values(count);
   if (count == 0) return values;
-  uploadBuffer(device, evaluator.cases, cases.data(), cases.size_bytes());
+  uploadBuffer(device, evaluator.inputs, cases.data(), cases.size_bytes());
   const Stopwatch clock;
   submitAndWait(device, [&](VkCommandBuffer cmd) {
     recordDispatch(cmd, evaluator.kernel, &count, workgroups(count));
     computeBarrier(cmd);
   });
   if (dispatchSeconds != nullptr) *dispatchSeconds = clock.seconds();
-  downloadBuffer(device, evaluator.values, values.data(), values.size() * sizeof(gpu::BrdfEvalValue));
+  downloadBuffer(device, evaluator.outputs, values.data(), values.size() * sizeof(gpu::BrdfEvalValue));
   return values;
 }
 
@@ -79,27 +101,14 @@ std::vector<gpu::BrdfEvalValue> evaluateBrdfCasesOnce(const Device& device, std:
 
 BrdfSampler createBrdfSampler(const Device& device, std::uint32_t capacity) {
   BrdfSampler sampler;
-  sampler.capacity = capacity;
-  const DescriptorBinding bindings[] = {{gpu::kBindingBrdfUniforms, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                        {gpu::kBindingBrdfSamples, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-  sampler.kernel = createComputeKernel(device, "brdf_sample.comp", bindings, sizeof(gpu::BrdfSampleParams));
-  sampler.uniforms = createBuffer(device, VkDeviceSize(capacity) * sizeof(glm::vec3),
-                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                  MemoryUse::kDevice, "brdf sample uniforms");
-  sampler.samples = createBuffer(device, VkDeviceSize(capacity) * sizeof(gpu::BrdfSampleValue),
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                 MemoryUse::kDevice, "brdf samples");
-  writeStorageBuffer(device, sampler.kernel.descriptors.set, gpu::kBindingBrdfUniforms, sampler.uniforms.handle);
-  writeStorageBuffer(device, sampler.kernel.descriptors.set, gpu::kBindingBrdfSamples, sampler.samples.handle);
+  static_cast<BatchKernel&>(sampler) = createBatchKernel(
+      device, {"brdf_sample.comp", sizeof(gpu::BrdfSampleParams), gpu::kBindingBrdfUniforms, sizeof(glm::vec3),
+               "brdf sample uniforms", gpu::kBindingBrdfSamples, sizeof(gpu::BrdfSampleValue), "brdf samples"},
+      capacity);
   return sampler;
 }
 
-void destroyBrdfSampler(const Device& device, BrdfSampler& sampler) {
-  destroyBuffer(device, sampler.samples);
-  destroyBuffer(device, sampler.uniforms);
-  destroyComputeKernel(device, sampler.kernel);
-  sampler = {};
-}
+void destroyBrdfSampler(const Device& device, BrdfSampler& sampler) { destroyBatchKernel(device, sampler); }
 
 std::vector<gpu::BrdfSampleValue> drawBrdfSamples(const Device& device, BrdfSampler& sampler,
                                                   const gpu::MaterialRecord& material, glm::vec3 wo,
@@ -111,12 +120,12 @@ std::vector<gpu::BrdfSampleValue> drawBrdfSamples(const Device& device, BrdfSamp
   params.count = static_cast<std::uint32_t>(uniforms.size());
   std::vector<gpu::BrdfSampleValue> samples(params.count);
   if (params.count == 0) return samples;
-  uploadBuffer(device, sampler.uniforms, uniforms.data(), uniforms.size_bytes());
+  uploadBuffer(device, sampler.inputs, uniforms.data(), uniforms.size_bytes());
   submitAndWait(device, [&](VkCommandBuffer cmd) {
     recordDispatch(cmd, sampler.kernel, &params, workgroups(params.count));
     computeBarrier(cmd);
   });
-  downloadBuffer(device, sampler.samples, samples.data(), samples.size() * sizeof(gpu::BrdfSampleValue));
+  downloadBuffer(device, sampler.outputs, samples.data(), samples.size() * sizeof(gpu::BrdfSampleValue));
   return samples;
 }
 

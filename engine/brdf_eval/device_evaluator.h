@@ -12,12 +12,18 @@
 
 namespace raylab {
 
-struct BrdfEvaluator {
+// What both kernels are: a compute kernel over a batch of up to `capacity` items, read from `inputs` and
+// written to `outputs` (one entry per item in each).
+struct BatchKernel {
   ComputeKernel kernel;
-  Buffer cases;
-  Buffer values;
-  std::uint32_t capacity = 0;  // cases the buffers hold
+  Buffer inputs;
+  Buffer outputs;
+  std::uint32_t capacity = 0;
 };
+void destroyBatchKernel(const Device& device, BatchKernel& batch);
+
+// brdf_eval.comp: inputs are BrdfEvalCase, outputs BrdfEvalValue.
+struct BrdfEvaluator : BatchKernel {};
 
 BrdfEvaluator createBrdfEvaluator(const Device& device, std::uint32_t capacity);
 void destroyBrdfEvaluator(const Device& device, BrdfEvaluator& evaluator);
@@ -32,12 +38,8 @@ std::vector<gpu::BrdfEvalValue> evaluateBrdfCases(const Device& device, BrdfEval
 std::vector<gpu::BrdfEvalValue> evaluateBrdfCasesOnce(const Device& device, std::span<const gpu::BrdfEvalCase> cases,
                                                       double* dispatchSeconds = nullptr);
 
-struct BrdfSampler {
-  ComputeKernel kernel;
-  Buffer uniforms;
-  Buffer samples;
-  std::uint32_t capacity = 0;  // samples the buffers hold
-};
+// brdf_sample.comp: inputs are the uniforms u (vec3), outputs BrdfSampleValue.
+struct BrdfSampler : BatchKernel {};
 
 BrdfSampler createBrdfSampler(const Device& device, std::uint32_t capacity);
 void destroyBrdfSampler(const Device& device, BrdfSampler& sampler);

@@ -1,5 +1,6 @@
 #include "device_context.h"
 
+#include <algorithm>
 #include <map>
 
 namespace raylab::python {
@@ -11,22 +12,28 @@ DeviceContext::~DeviceContext() {
   if (sampler) destroyBrdfSampler(session.device, *sampler);
 }
 
-BrdfEvaluator& DeviceContext::evaluatorFor(std::uint32_t cases) {
-  if (evaluator && evaluator->capacity < cases) {
-    destroyBrdfEvaluator(session.device, *evaluator);
-    evaluator.reset();
+namespace {
+
+// The kernel, recreated larger when a batch outgrows it (at least 1024 items, so small calls share one).
+template <class Kernel>
+Kernel& grown(const Device& device, std::optional<Kernel>& kernel, std::uint32_t needed,
+              Kernel (*create)(const Device&, std::uint32_t)) {
+  if (kernel && kernel->capacity < needed) {
+    destroyBatchKernel(device, *kernel);
+    kernel.reset();
   }
-  if (!evaluator) evaluator = createBrdfEvaluator(session.device, std::max<std::uint32_t>(cases, 1024));
-  return *evaluator;
+  if (!kernel) kernel = create(device, std::max<std::uint32_t>(needed, 1024));
+  return *kernel;
+}
+
+}  // namespace
+
+BrdfEvaluator& DeviceContext::evaluatorFor(std::uint32_t cases) {
+  return grown(session.device, evaluator, cases, &createBrdfEvaluator);
 }
 
 BrdfSampler& DeviceContext::samplerFor(std::uint32_t samples) {
-  if (sampler && sampler->capacity < samples) {
-    destroyBrdfSampler(session.device, *sampler);
-    sampler.reset();
-  }
-  if (!sampler) sampler = createBrdfSampler(session.device, std::max<std::uint32_t>(samples, 1024));
-  return *sampler;
+  return grown(session.device, sampler, samples, &createBrdfSampler);
 }
 
 namespace {
