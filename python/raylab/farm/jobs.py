@@ -36,24 +36,30 @@ class Job:
 MANIFEST = "raylab-farm.json"
 
 
-def _manifest(directory: Path) -> dict:
-    try:
-        return json.loads((directory / MANIFEST).read_text())
-    except (FileNotFoundError, json.JSONDecodeError):
-        return {}
+class Manifests:
+    """The manifests of the jobs' directories, each read once and kept in memory; a finished job is added and its
+    directory's manifest rewritten atomically (a temporary file renamed over it)."""
 
+    def __init__(self):
+        self._by_directory: dict[Path, dict] = {}
 
-def _record(job: "Job"):
-    """Adds the finished job to its directory's manifest, atomically (a temporary file renamed over it)."""
-    manifest = _manifest(job.path.parent)
-    manifest[job.path.name] = job.description
-    temporary = job.path.parent / f".{MANIFEST}.{os.getpid()}.tmp"
-    temporary.write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
-    os.replace(temporary, job.path.parent / MANIFEST)
+    def _of(self, directory: Path) -> dict:
+        if directory not in self._by_directory:
+            try:
+                self._by_directory[directory] = json.loads((directory / MANIFEST).read_text())
+            except (FileNotFoundError, json.JSONDecodeError):
+                self._by_directory[directory] = {}
+        return self._by_directory[directory]
 
+    def is_done(self, job: "Job") -> bool:
+        return job.path.exists() and self._of(job.path.parent).get(job.path.name) == job.description
 
-def is_done(job: "Job") -> bool:
-    return job.path.exists() and _manifest(job.path.parent).get(job.path.name) == job.description
+    def record(self, job: "Job"):
+        manifest = self._of(job.path.parent)
+        manifest[job.path.name] = job.description
+        temporary = job.path.parent / f".{MANIFEST}.{os.getpid()}.tmp"
+        temporary.write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
+        os.replace(temporary, job.path.parent / MANIFEST)
 
 
 @dataclass
@@ -86,7 +92,8 @@ class FarmReport:
 def run_jobs(client, jobs: list[Job], log_path: Path, label: str = "raylab.farm", progress: bool = True) -> FarmReport:
     """Runs the jobs that are not done yet; returns when every job is. A failing job (bad input, a device error)
     cancels the rest and raises its error with the job's name."""
-    todo = [job for job in jobs if not is_done(job)]
+    manifests = Manifests()
+    todo = [job for job in jobs if not manifests.is_done(job)]
     report = FarmReport(jobs=len(jobs), skipped=len(jobs) - len(todo),
                         workers=len(client.scheduler_info()["workers"]))
     if not todo:
@@ -108,7 +115,7 @@ def run_jobs(client, jobs: list[Job], log_path: Path, label: str = "raylab.farm"
             _raylab.write_exr(str(job.path), image)
             if job.png is not None:
                 job.png(image, job.path)
-            _record(job)
+            manifests.record(job)
             report.rendered += 1
             report.render_s += info["render_s"]
             report.render_cpu_s += info["render_cpu_s"]
@@ -129,7 +136,7 @@ def farm(jobs: list[Job], log_path: Path, label: str, *, client=None, workers=No
     """run_jobs through `client`, or on a cluster made for the jobs (cluster.connect) when any is left to do."""
     if client is not None:
         return run_jobs(client, jobs, log_path, label, progress)
-    if all(is_done(job) for job in jobs):
+    if all(Manifests().is_done(job) for job in jobs):
         return FarmReport(jobs=len(jobs), skipped=len(jobs))
     from .cluster import connect  # distributed's cluster machinery, only when there is work
     with connect(workers, scheduler) as own_client:
