@@ -31,11 +31,18 @@ struct Image {
   }
 };
 
+// The exposure a tone-mapped image may be given, in stops either way (the command line, the viewer, Python).
+inline constexpr float kMaxExposureStops = 20.0f;
+
 enum class ToneMap {
   kClamp,     // exposure, then clip to [0, 1]: linear below white, which suits BRDF comparisons
   kReinhard,  // x / (1 + x) on each channel
   kAces,      // Narkowicz's fit of the ACES filmic curve
 };
+
+// Throws Error naming `path`, the first non-finite pixel and how many there are: no writer writes NaN or infinity,
+// which would poison every tool that reads the file (a mean, a difference, a tone curve).
+void checkFinite(const Image& image, const std::string& path);
 
 // Every writer writes atomically (util/atomic_file.h): a failure keeps the old file. Parent directories are
 // created. Errors name the file.

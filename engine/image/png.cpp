@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "image/image.h"
 #include "util/error.h"
 #include "util/atomic_file.h"
+#include "util/files.h"
 
 namespace raylab {
 
@@ -52,6 +54,7 @@ void writePngRgb8(const std::string& path, std::uint32_t width, std::uint32_t he
 }
 
 void writePng(const std::string& path, const Image& image, float exposure, ToneMap toneMap) {
+  checkFinite(image, path);
   std::vector<std::uint8_t> bytes(std::size_t(image.width) * image.height * 3);
   for (std::size_t i = 0; i < std::size_t(image.width) * image.height; ++i) {
     for (int c = 0; c < 3; ++c) bytes[i * 3 + c] = toDisplay(image.rgba[i * 4 + c], exposure, toneMap);
@@ -60,8 +63,20 @@ void writePng(const std::string& path, const Image& image, float exposure, ToneM
 }
 
 Rgb8Image readPngRgb8(const std::string& path) {
+  const std::string bytes = readInputFile(path, kMaxImageFileBytes);
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  if (bytes.size() > std::size_t(std::numeric_limits<int>::max())) throw Error(path + ": too large a PNG file");
+  const int size = static_cast<int>(bytes.size());
   int width = 0, height = 0, channels = 0;
-  unsigned char* pixels = stbi_load(path.c_str(), &width, &height, &channels, 3);
+  // The header decides the size before anything is decoded: a small file may claim any size.
+  if (stbi_info_from_memory(data, size, &width, &height, &channels) == 0) {
+    throw Error(path + ": cannot read as PNG: " + stbi_failure_reason());
+  }
+  if (width < 1 || height < 1 || std::uint32_t(width) > kMaxImageSide || std::uint32_t(height) > kMaxImageSide) {
+    throw Error(path + ": PNG of " + std::to_string(width) + "x" + std::to_string(height) + " pixels; raylab reads " +
+                "images of at most " + std::to_string(kMaxImageSide) + " pixels a side");
+  }
+  unsigned char* pixels = stbi_load_from_memory(data, size, &width, &height, &channels, 3);
   if (pixels == nullptr) throw Error(path + ": cannot read as PNG: " + stbi_failure_reason());
   Rgb8Image image;
   image.width = static_cast<std::uint32_t>(width);

@@ -17,6 +17,7 @@
 #include "scene/scene.h"
 #include "shared/frame.h"
 #include "vk/device.h"
+#include "util/render_limits.h"
 #include "vk/resources.h"
 
 namespace raylab {

@@ -5,6 +5,7 @@
 
 #include "image/image.h"
 #include "scene/gltf_files.h"
+#include "scene/radiance_limits.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -13,18 +14,11 @@ namespace raylab {
 namespace {
 
 constexpr float kPi = 3.14159265358979323846f;
-constexpr float kMaxEnvironmentRadiance = 1e20f;  // as the largest emission (docs/scenes.md, Limits)
 
 }  // namespace
 
-void checkEnvironmentStrength(float strength, const std::string& where) {
-  if (!(strength >= 0.0f) || !std::isfinite(strength)) {
-    throw Error(where + ": environment strength must be a finite number >= 0, found " + std::to_string(strength));
-  }
-}
-
-Environment loadEnvironment(const std::string& path, float strength, const std::string& where) {
-  checkEnvironmentStrength(strength, where);
+Environment loadEnvironment(const std::string& path, float strength, const std::string& where,
+                            const std::string& strengthWhere) {
   std::string bytes;
   try {
     bytes = gltf::readSceneFile(path, kMaxEnvironmentFileBytes);
@@ -33,6 +27,7 @@ Environment loadEnvironment(const std::string& path, float strength, const std::
   }
   Environment environment = decodeEnvironment(bytes, where + ": environment image " + path);
   environment.path = path;
+  checkEnvironmentStrength(environment, strength, strengthWhere.empty() ? where : strengthWhere);
   environment.strength = strength;
   return environment;
 }
@@ -50,7 +45,7 @@ Environment decodeEnvironment(const std::string& bytes, const std::string& label
     for (std::uint32_t x = 0; x < image.width; ++x) {
       glm::vec3 texel(image.at(x, y));
       // The bound keeps sums of texels (the sampling tables, the kernel's luminance) finite in float.
-      const auto bad = [](float c) { return !(std::abs(c) <= kMaxEnvironmentRadiance); };
+      const auto bad = [](float c) { return !(std::abs(c) <= kMaxRadiance); };
       if (bad(texel.r) || bad(texel.g) || bad(texel.b)) {
         throw Error(label + ": texel (" + std::to_string(x) + ", " + std::to_string(y) + ") is (" +
                     std::to_string(texel.r) + ", " + std::to_string(texel.g) + ", " + std::to_string(texel.b) +
@@ -63,6 +58,7 @@ Environment decodeEnvironment(const std::string& bytes, const std::string& label
         texel = glm::max(texel, glm::vec3(0.0f));
       }
       environment.texels[std::size_t(y) * image.width + x] = texel;
+      environment.brightest = std::max({environment.brightest, texel.r, texel.g, texel.b});
       sum += double(texel.r + texel.g + texel.b) / 3.0;
     }
   }

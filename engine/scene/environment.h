@@ -19,9 +19,13 @@ struct Environment {
   std::uint32_t width = 0;
   std::uint32_t height = 0;
   std::vector<glm::vec3> texels;  // linear RGB radiance, rows from the top; empty: no image
+  float brightest = 0.0f;         // the largest channel of any texel, for the bound on strength x radiance
 
   bool hasImage() const { return !texels.empty(); }
 };
+
+// The rotation an environment may be given, degrees (glTF, --env-rotation, the viewer, Python).
+inline constexpr float kMaxEnvironmentRotationDegrees = 360.0f;
 
 // Largest environment image, in texels (16384 x 8192 half-float would be 768 MiB on the device).
 inline constexpr std::uint64_t kMaxEnvironmentTexels = std::uint64_t(1) << 26;
@@ -29,14 +33,13 @@ inline constexpr std::uint64_t kMaxEnvironmentFileBytes = std::uint64_t(1) << 30
 
 // Reads the image at `path` (a regular OpenEXR file). Errors start with `where` and name the file: missing,
 // not an EXR, too large, or a texel that is NaN or Inf (with its position). Negative values (lossy
-// compression leaves a few) read as 0, with a warning.
-Environment loadEnvironment(const std::string& path, float strength, const std::string& where);
+// compression leaves a few) read as 0, with a warning. `strength` is checked against the image
+// (scene/radiance_limits.h); that error starts with `strengthWhere` when given (the option that set it).
+Environment loadEnvironment(const std::string& path, float strength, const std::string& where,
+                            const std::string& strengthWhere = "");
 
 // The image of an OpenEXR file held in memory, checked as loadEnvironment checks it; `label` starts errors.
 Environment decodeEnvironment(const std::string& bytes, const std::string& label);
-
-// Throws Error(where: ...) unless strength is finite and >= 0.
-void checkEnvironmentStrength(float strength, const std::string& where);
 
 // The direction of (u, v) in the image's own frame, and back (before the rotation about +Y).
 glm::vec3 environmentDirection(glm::vec2 uv);

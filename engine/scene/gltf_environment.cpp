@@ -39,7 +39,8 @@ EnvironmentEntry readEntry(Document& document, const json& value, const std::str
     } else if (field == "strength") {
       entry.strength = readNumber(v, where + ".strength", 0.0, 3.4e38, "a finite number >= 0");
     } else if (field == "rotation") {
-      entry.rotation = readNumber(v, where + ".rotation", -360.0, 360.0, "degrees in [-360, 360]");
+      entry.rotation = readNumber(v, where + ".rotation", -kMaxEnvironmentRotationDegrees, kMaxEnvironmentRotationDegrees,
+                                  "degrees in [-360, 360]");
     } else {
       throw Error(where + ": unknown key '" + field + "' (an environment has uri, strength and rotation)");
     }
@@ -82,7 +83,9 @@ Environment readEnvironment(Document& document, const GltfOptions& options) {
   };
   if (options.environmentStrength) {
     entry.strength = *options.environmentStrength;
-    checkEnvironmentStrength(float(entry.strength), "--env-strength");
+    if (!(entry.strength >= 0.0) || !std::isfinite(entry.strength)) {
+      throw Error("--env-strength: environment strength must be a finite number >= 0", kExitUsage);
+    }
     needsImage("--env-strength");
   }
   if (options.environmentRotation) {
@@ -90,7 +93,8 @@ Environment readEnvironment(Document& document, const GltfOptions& options) {
     needsImage("--env-rotation");
   }
   if (entry.path.empty()) return {};
-  Environment environment = loadEnvironment(entry.path, float(entry.strength), where);
+  Environment environment = loadEnvironment(entry.path, float(entry.strength), where,
+                                            options.environmentStrength ? "--env-strength" : where + ".strength");
   environment.rotation = glm::radians(float(entry.rotation));
   return environment;
 }

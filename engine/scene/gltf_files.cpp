@@ -1,52 +1,17 @@
 #include "scene/gltf_files.h"
 
-#include <fcntl.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <algorithm>
 #include <cctype>
 #include <cstring>
 
 #include "util/error.h"
+#include "util/files.h"
 
 namespace raylab::gltf {
 
 namespace {
-
-// Reads a regular file of at most maxBytes into `out`; an empty string, or what was wrong.
-std::string readRegular(const std::string& path, std::uint64_t maxBytes, std::string* out) {
-  // O_NONBLOCK: opening a FIFO must not wait for a writer; it is then refused as not regular.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) return errno == ENOENT ? "no such file" : std::string("cannot open: ") + std::strerror(errno);
-  struct stat info {};
-  std::string problem;
-  if (::fstat(fd, &info) != 0) {
-    problem = std::string("cannot read: ") + std::strerror(errno);
-  } else if (S_ISDIR(info.st_mode)) {
-    problem = "is a directory, not a file";
-  } else if (!S_ISREG(info.st_mode)) {
-    problem = "is not a regular file (a device, FIFO or socket); raylab reads only regular files";
-  } else if (std::uint64_t(info.st_size) > maxBytes) {
-    problem = "has " + std::to_string(info.st_size) + " bytes, over raylab's limit of " + std::to_string(maxBytes) +
-              " (docs/scenes.md, Limits)";
-  } else {
-    out->resize(std::size_t(info.st_size));
-    std::size_t done = 0;
-    while (done < out->size()) {
-      const ssize_t n = ::read(fd, out->data() + done, out->size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) {
-        problem = n < 0 ? std::string("cannot read: ") + std::strerror(errno) : "changed size while being read";
-        break;
-      }
-      done += std::size_t(n);
-    }
-  }
-  ::close(fd);
-  return problem;
-}
 
 bool isInside(const std::filesystem::path& path, const std::filesystem::path& root) {
   const auto mismatch = std::mismatch(root.begin(), root.end(), path.begin(), path.end());
@@ -89,15 +54,15 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* error, const st
     if (error) *error = policy.error;
     return false;
   }
-  std::string bytes;
-  const std::string problem = readRegular(resolved.string(), kMaxExternalFileBytes, &bytes);
-  if (!problem.empty()) {
-    if (policy.error.empty()) policy.error = "'" + path + "' " + problem;
-    if (error) *error = problem;
+  try {
+    const std::string bytes = readInputFile(resolved.string(), kMaxExternalFileBytes);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const FileError& e) {
+    if (policy.error.empty()) policy.error = "'" + path + "': " + e.what();
+    if (error) *error = e.what();
     return false;
   }
-  out->assign(bytes.begin(), bytes.end());
-  return true;
 }
 
 bool writeWholeFile(std::string* error, const std::string&, const std::vector<unsigned char>&, void*) {
@@ -172,11 +137,6 @@ std::string resolveUri(const std::string& uri, const std::string& baseDirectory,
   return resolved.string();
 }
 
-std::string readSceneFile(const std::string& path, std::uint64_t maxBytes) {
-  std::string bytes;
-  const std::string problem = readRegular(path, maxBytes, &bytes);
-  if (!problem.empty()) throw Error(path + ": " + problem);
-  return bytes;
-}
+std::string readSceneFile(const std::string& path, std::uint64_t maxBytes) { return readInputFile(path, maxBytes); }
 
 }  // namespace raylab::gltf

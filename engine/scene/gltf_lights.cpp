@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/radiance_limits.h"
 #include "util/error.h"
 
 namespace raylab::gltf {
@@ -10,9 +11,6 @@ namespace raylab::gltf {
 namespace {
 
 constexpr double kHalfPi = 1.57079632679489661923;
-// Intensity (W/sr) or irradiance (W/m^2) per channel: far above any real light in scene units, far below
-// where float shading overflows (1/r^2 at r = 1e-5 still leaves a factor of 1e8 to FLT_MAX).
-constexpr float kMaxLightIntensity = 1e20f;
 
 }  // namespace
 
@@ -41,13 +39,13 @@ Light convertLight(const Document& document, int lightIndex, const glm::mat4& wo
   gpu::LightRecord& record = light.record;
   record.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
   record.intensity = color * float(gltfLight.intensity);
-  // Checked as the float the kernel uses, with headroom: shading multiplies the intensity by the BRDF and
-  // 1/r^2, and 1e39 (or 1e30 x 1e30) would reach the image as Inf.
-  const float brightest = std::max({record.intensity.r, record.intensity.g, record.intensity.b});
-  if (!(brightest <= kMaxLightIntensity) || !std::isfinite(float(gltfLight.intensity))) {
-    document.fail(where + ": color x intensity = " + formatNumber(double(gltfLight.intensity) * std::max({color.r, color.g, color.b})) +
-                  " is over raylab's limit of " + formatNumber(kMaxLightIntensity) + " (docs/scenes.md, Limits)");
+  // Checked as the float the kernel uses (1e39, or 1e30 x 1e30, would reach the image as Inf).
+  const double brightest = double(gltfLight.intensity) * std::max({color.r, color.g, color.b});
+  if (!(brightest <= double(kMaxRadiance))) {
+    document.fail(where + ": color x intensity = " + formatNumber(brightest) + " is over raylab's limit of " +
+                  formatNumber(kMaxRadiance) + " (docs/scenes.md, Limits)");
   }
+  checkLightIntensity(record.intensity, where);
   record.cosInner = -1.0f;
   record.cosOuter = -1.0f;
   const glm::vec3 minusZ = glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));

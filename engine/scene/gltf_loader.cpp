@@ -408,8 +408,7 @@ class SceneBuilder {
     const std::string where = gltf::describe("camera", chosen->camera, camera.name);
     if (camera.type != "perspective") document_.fail(where + ": type \"" + camera.type + "\" is not perspective");
     const double yfov = camera.perspective.yfov;
-    // Checked as the float the renderer keeps: below 1e-4 rad the pixel footprint underflows.
-    if (!(float(yfov) >= 1e-4f && float(yfov) < 3.1f)) {
+    if (!(float(yfov) >= kMinYfov && float(yfov) < kMaxYfov)) {
       document_.fail(where + ": yfov " + gltf::formatNumber(yfov) + " rad is outside [0.0001, 3.1)");
     }
     // The camera looks down its node's -Z with +Y up (glTF 2.0 § 3.10.1).

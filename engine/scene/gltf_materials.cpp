@@ -11,6 +11,7 @@
 #include "brdf_params/material_params.h"
 #include "image/image.h"
 #include "scene/gltf_files.h"
+#include "scene/radiance_limits.h"
 #include "util/error.h"
 
 namespace raylab::gltf {
@@ -43,9 +44,8 @@ float checkedFactor(double value, double low, double high, const std::string& wh
 }
 
 // L_e = emissiveFactor x KHR_materials_emissive_strength.emissiveStrength (default 1), linear RGB. Checked as the
-// float the kernel uses: finite, >= 0, and at most kMaxEmission so that shading stays finite.
+// float the kernel uses: finite, >= 0, and at most kMaxRadiance (scene/radiance_limits.h).
 glm::vec3 emittedRadiance(const tinygltf::Material& material, const json& materialJson, const std::string& where) {
-  constexpr double kMaxEmission = 1e20;
   glm::dvec3 factor(0.0);
   if (material.emissiveFactor.size() == 3) {
     factor = glm::dvec3(material.emissiveFactor[0], material.emissiveFactor[1], material.emissiveFactor[2]);
@@ -64,7 +64,7 @@ glm::vec3 emittedRadiance(const tinygltf::Material& material, const json& materi
     }
   }
   const glm::dvec3 radiance = factor * strength;
-  if (std::max({radiance.r, radiance.g, radiance.b}) > kMaxEmission) {
+  if (std::max({radiance.r, radiance.g, radiance.b}) > double(kMaxRadiance)) {
     throw Error(where + ": emissiveFactor x emissiveStrength = " + formatNumber(std::max({radiance.r, radiance.g, radiance.b})) +
                 " is over raylab's limit of 1e+20 (docs/scenes.md, Limits)");
   }

@@ -12,6 +12,11 @@
 
 namespace raylab {
 
+// The vertical field of view a camera may have, radians, checked as the float the renderer keeps: below 1e-4
+// the pixel footprint underflows, at pi the image plane is infinite. glTF, the viewer and Python share it.
+inline constexpr float kMinYfov = 1e-4f;
+inline constexpr float kMaxYfov = 3.1f;
+
 struct Camera {
   std::string name;
   glm::vec3 position{0.0f, 1.0f, 5.0f};

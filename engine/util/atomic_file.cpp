@@ -118,4 +118,23 @@ void checkOutputPath(const std::string& path, const std::string& option) {
   }
 }
 
+void checkDistinctOutputs(const std::string& command, const std::vector<NamedOutput>& outputs) {
+  std::vector<std::filesystem::path> resolved;
+  for (const NamedOutput& output : outputs) {
+    std::error_code error;
+    resolved.push_back(output.path.empty() ? std::filesystem::path()
+                                           : std::filesystem::weakly_canonical(std::filesystem::absolute(output.path), error));
+  }
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    for (std::size_t j = i + 1; j < outputs.size(); ++j) {
+      if (resolved[i].empty() || resolved[i] != resolved[j]) continue;
+      const std::string same = outputs[i].option == outputs[j].option ? outputs[i].option + " (twice)"
+                                                                       : outputs[i].option + " and " + outputs[j].option;
+      throw Error(command + ": " + same + " would both write " + outputs[i].path +
+                      "; give each output its own file",
+                  kExitUsage);
+    }
+  }
+}
+
 }  // namespace raylab

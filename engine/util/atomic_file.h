@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace raylab {
 
@@ -21,5 +22,13 @@ void replaceFileAtomically(const std::string& path, const std::function<void(con
 // file, and `path` is not a directory or a device. `option` names where the path came from ("--png"), for the
 // message. Throws Error.
 void checkOutputPath(const std::string& path, const std::string& option);
+
+// One command's outputs, each (option, path): throws Error (usage) when two name the same file, before any work
+// (one would silently replace the other). Empty paths (an output not written) are skipped.
+struct NamedOutput {
+  std::string option;
+  std::string path;
+};
+void checkDistinctOutputs(const std::string& command, const std::vector<NamedOutput>& outputs);
 
 }  // namespace raylab

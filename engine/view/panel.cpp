@@ -1,5 +1,7 @@
 #include "view/panel.h"
 
+#include "scene/radiance_limits.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -8,6 +10,7 @@
 #include <filesystem>
 
 #include "brdf_params/material_params.h"
+#include "scene/radiance_limits.h"
 #include "shared/features.h"
 #include "util/progress.h"
 #include "view/material_editor.h"
@@ -35,7 +38,9 @@ bool drawEnvironment(Scene& scene) {
   const std::string file = std::filesystem::path(environment.path).filename().string();
   ImGui::Text("%s  %ux%u", file.c_str(), environment.width, environment.height);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", environment.path.c_str());
-  bool changed = ImGui::SliderFloat("strength", &environment.strength, 0.0f, 100.0f, "%.3g",
+  // The slider's top keeps strength x the brightest texel within the one radiance bound (radiance_limits.h).
+  const float strongest = environment.brightest > 0.0f ? std::min(100.0f, kMaxRadiance / environment.brightest) : 100.0f;
+  bool changed = ImGui::SliderFloat("strength", &environment.strength, 0.0f, strongest, "%.3g",
                                     ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
   float degrees = glm::degrees(environment.rotation);
   if (ImGui::SliderFloat("rotation", &degrees, -180.0f, 180.0f, "%.1f deg", ImGuiSliderFlags_AlwaysClamp)) {
@@ -59,7 +64,7 @@ bool drawLight(Light& light, float dragSpeed) {
   }
   const float brightest = std::max({record.intensity.x, record.intensity.y, record.intensity.z});
   const float intensitySpeed = 0.01f * std::max(1.0f, brightest);
-  changed |= ImGui::DragFloat3("intensity", &record.intensity.x, intensitySpeed, 0.0f, FLT_MAX, "%.3g",
+  changed |= ImGui::DragFloat3("intensity", &record.intensity.x, intensitySpeed, 0.0f, kMaxRadiance, "%.3g",
                                ImGuiSliderFlags_AlwaysClamp);
   return changed;
 }

@@ -96,11 +96,7 @@ void applyScriptEvents(Viewer& v) {
         break;
       case ScriptAction::kSetEnvironmentStrength:
       case ScriptAction::kSetEnvironmentRotation:
-        if (!v.scene.environment.hasImage()) {
-          throw Error(event.where + ": the scene has no environment image (give one with --env FILE.exr)");
-        }
-        if (event.action == ScriptAction::kSetEnvironmentStrength) v.scene.environment.strength = event.value.x;
-        else v.scene.environment.rotation = glm::radians(event.value.x);
+        applyToScene(event, v.scene);
         break;
       case ScriptAction::kResize:
         // The size of the image, as --width/--height: the panel's strip comes on top.

@@ -8,8 +8,10 @@
 
 #include "brdf_params/material_params.h"
 #include "image/image.h"
+#include "scene/radiance_limits.h"
 #include "shared/scene_records.h"
 #include "util/error.h"
+#include "util/render_limits.h"
 #include "util/files.h"
 #include "view_logic/compare_spec.h"
 #include "view_logic/scene_edits.h"
@@ -170,10 +172,7 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
         else if (property == "direction") event.action = ScriptAction::kSetLightDirection;
         else throw Error(where + ": a light has intensity, position, direction and cone, not '" + property + "'");
         readValues(event, words, 6, "a light value");
-        if (event.action == ScriptAction::kSetLightIntensity &&
-            (glm::any(glm::lessThan(event.value, glm::vec3(0.0f))) || !finiteInFloat(event.value))) {
-          throw Error(where + ": a light's intensity must be finite and >= 0");
-        }
+        if (event.action == ScriptAction::kSetLightIntensity) checkLightIntensity(event.value, where);
         if (event.action == ScriptAction::kSetLightDirection) {
           if (!(glm::length(event.value) > 0.0f) || !finiteInFloat(event.value)) {
             throw Error(where + ": a light's direction must be a finite, non-zero vector");
@@ -190,7 +189,9 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
       event.action = ScriptAction::kSetMaxDepth;
       event.value.x = float(parseCount(words[4], where, "the depth"));
       event.valueCount = 1;
-      if (event.value.x > 64.0f) throw Error(where + ": max-depth must be within 0..64");
+      if (event.value.x > float(kMaxDepthLimit)) {
+        throw Error(where + ": max-depth must be within 0.." + std::to_string(kMaxDepthLimit));
+      }
     } else if (what == "integrator") {
       expectWords(words, 5, where, "at <frame> set integrator slides|path");
       event.action = ScriptAction::kSetIntegrator;
@@ -252,7 +253,7 @@ std::vector<ScriptEvent> parseScript(const std::string& text, const std::string&
   return events;
 }
 
-std::vector<ScriptEvent> loadScript(const std::string& path) { return parseScript(readTextFile(path), path); }
+std::vector<ScriptEvent> loadScript(const std::string& path) { return parseScript(readInputFile(path, kMaxScriptBytes), path); }
 
 SceneEffect applyToScene(const ScriptEvent& event, Scene& scene) {
   SceneEffect effect;
@@ -314,6 +315,18 @@ SceneEffect applyToScene(const ScriptEvent& event, Scene& scene) {
       effect.lights = true;
       break;
     }
+    case ScriptAction::kSetEnvironmentStrength:
+    case ScriptAction::kSetEnvironmentRotation:
+      if (!scene.environment.hasImage()) {
+        throw Error(event.where + ": the scene has no environment image (give one with --env FILE.exr)");
+      }
+      if (event.action == ScriptAction::kSetEnvironmentStrength) {
+        checkEnvironmentStrength(scene.environment, event.value.x, event.where);
+        scene.environment.strength = event.value.x;
+      } else {
+        scene.environment.rotation = glm::radians(event.value.x);
+      }
+      break;
     case ScriptAction::kCompare:
       if (event.name != "off") parseCompareSpec(event.name, scene, event.where);
       break;

@@ -12,7 +12,8 @@ command line with the same options. Long calls release the GIL and stop on Ctrl-
 ValueError (bad input), FileNotFoundError or RuntimeError (no device, a failed dispatch), with the command line's
 messages. raylab.farm spreads studies over a Dask cluster (docs/farm.md).
 """
-from ._raylab import (Cancelled, Renderer, Scene, brdf, devices, read_exr, read_png, write_exr,  # noqa: F401
-                      write_png)
+from ._raylab import (Cancelled, Renderer, Scene, __version__, brdf, devices, limits, read_exr,  # noqa: F401
+                      read_png, write_exr, write_png)
 
-__all__ = ["Cancelled", "Renderer", "Scene", "brdf", "devices", "read_exr", "read_png", "write_exr", "write_png"]
+__all__ = ["Cancelled", "Renderer", "Scene", "__version__", "brdf", "devices", "limits", "read_exr", "read_png",
+           "write_exr", "write_png"]

@@ -5,7 +5,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,21 +34,21 @@ using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecas
 // Largest batch of one call: 2^24 cases are 2.3 GiB of device buffers.
 constexpr std::size_t kMaxCases = std::size_t(1) << 24;
 
-// (N, 3) or (3,) (one vector for every case); `count` is N, or 0 when not known yet.
-std::vector<glm::vec3> vectors(const FloatArray& array, const char* name, std::size_t& count) {
+// (N, 3), or (3,): one vector for every case. `count` is the common N: unset until an (N, 3) array sets it, and
+// N may be 0 (an empty batch gives empty results).
+std::vector<glm::vec3> vectors(const FloatArray& array, const char* name, std::optional<std::size_t>& count) {
   std::size_t rows = 0;
-  if (array.ndim() == 1 && array.shape(0) == 3) rows = 1;
+  const bool broadcast = array.ndim() == 1 && array.shape(0) == 3;
+  if (broadcast) rows = 1;
   else if (array.ndim() == 2 && array.shape(1) == 3) rows = array.shape(0);
   else usage(std::string("raylab.brdf: ") + name + " must have shape (N, 3) or (3,)");
   if (rows > kMaxCases) usage(std::string("raylab.brdf: ") + name + ": more than 2^24 vectors in one call");
-  if (rows != 1) {
-    if (count > 1 && rows != count) {
+  if (!broadcast) {
+    if (count && *count != rows) {
       usage(std::string("raylab.brdf: ") + name + " has " + std::to_string(rows) + " rows, the others " +
-            std::to_string(count));
+            std::to_string(*count));
     }
     count = rows;
-  } else if (count == 0) {
-    count = 1;
   }
   std::vector<glm::vec3> out(rows);
   const float* data = array.data();
@@ -85,15 +87,17 @@ std::vector<BrdfResult> evaluate(const std::string& model, const py::object& par
                                  const std::string& backend, std::optional<std::uint32_t> device) {
   checkBackend(backend);
   const gpu::MaterialRecord record = material(model, params);
-  std::size_t count = 0;
-  const std::vector<glm::vec3> wis = vectors(wi, "wi", count), wos = vectors(wo, "wo", count);
-  const std::vector<glm::vec3> ns = vectors(n, "n", count), ts = vectors(t, "t", count);
+  std::optional<std::size_t> rows;
+  const std::vector<glm::vec3> wis = vectors(wi, "wi", rows), wos = vectors(wo, "wo", rows);
+  const std::vector<glm::vec3> ns = vectors(n, "n", rows), ts = vectors(t, "t", rows);
+  const std::size_t count = rows.value_or(1);
   std::vector<gpu::BrdfEvalCase> cases(count);
   for (std::size_t i = 0; i < count; ++i) {
     cases[i] = {record, pick(wis, i), pick(wos, i), pick(ns, i), pick(ts, i)};
     if (glm::dot(cases[i].n, cases[i].n) == 0.0f) usage("raylab.brdf: n[" + std::to_string(i) + "] is zero");
   }
   std::vector<BrdfResult> results(count);
+  if (count == 0) return results;  // nothing to dispatch: an empty batch is a valid one
   if (backend == "cpu") {
     py::gil_scoped_release release;
     for (std::size_t i = 0; i < count; ++i) results[i] = evaluateBrdfCaseOnCpu(cases[i]);
@@ -178,21 +182,27 @@ void bindBrdf(py::module_& parent) {
          const std::string& backend, std::optional<std::uint32_t> device) {
         checkBackend(backend);
         const gpu::MaterialRecord record = material(model, params);
-        std::size_t count = 0;
-        const std::vector<glm::vec3> uniforms = vectors(u, "u", count);
-        const std::vector<glm::vec3> wos = vectors(wo, "wo", count);
+        std::optional<std::size_t> rows;
+        const std::vector<glm::vec3> uniforms = vectors(u, "u", rows);
+        std::vector<glm::vec3> wos = vectors(wo, "wo", rows);
+        const std::size_t count = rows.value_or(1);
         for (const glm::vec3& v : uniforms) {
           if (glm::any(glm::lessThan(v, glm::vec3(0.0f))) || glm::any(glm::greaterThanEqual(v, glm::vec3(1.0f)))) {
             usage("raylab.brdf.sample: every u must lie in [0, 1)^3");
           }
         }
-        if (wos.size() != 1) usage("raylab.brdf.sample: wo is one direction (3,) in the local frame (z the normal)");
+        for (std::size_t i = 0; i < wos.size(); ++i) {
+          if (!(glm::length(wos[i]) > 0.0f)) usage("raylab.brdf.sample: wo[" + std::to_string(i) + "] is zero");
+          wos[i] = glm::normalize(wos[i]);
+        }
         DoubleArray wi({count, std::size_t(3)}), f({count, std::size_t(3)});
         DoubleArray pdf(std::vector<py::ssize_t>{py::ssize_t(count)});
-        if (backend == "cpu") {
+        if (count == 0) {
+          // nothing to draw
+        } else if (backend == "cpu") {
           const reference::Material reference = reference::fromRecord(record);
-          const glm::dvec3 w = glm::normalize(glm::dvec3(wos[0]));
           for (std::size_t i = 0; i < count; ++i) {
+            const glm::dvec3 w = glm::dvec3(pick(wos, i));
             const reference::Sample s = reference::sample(reference, w, glm::dvec3(pick(uniforms, i)));
             for (int c = 0; c < 3; ++c) {
               wi.mutable_data()[3 * i + c] = s.wi[c];
@@ -202,14 +212,24 @@ void bindBrdf(py::module_& parent) {
           }
         } else {
           const std::shared_ptr<DeviceContext> context = deviceContext(device);
-          std::vector<glm::vec3> expanded(count);
-          for (std::size_t i = 0; i < count; ++i) expanded[i] = pick(uniforms, i);
-          std::vector<gpu::BrdfSampleValue> draws;
+          // The device kernel draws for one wo per dispatch: one dispatch per run of equal wo (a single wo, the
+          // common case, is one dispatch).
+          std::vector<gpu::BrdfSampleValue> draws(count);
           {
             py::gil_scoped_release release;
             const std::lock_guard<std::mutex> lock(context->queue);
-            draws = drawBrdfSamples(context->session.device, context->samplerFor(std::uint32_t(count)), record,
-                                    glm::normalize(wos[0]), expanded);
+            BrdfSampler& sampler = context->samplerFor(std::uint32_t(count));
+            std::vector<glm::vec3> run;
+            for (std::size_t begin = 0; begin < count;) {
+              std::size_t end = begin + 1;
+              while (end < count && pick(wos, end) == pick(wos, begin)) ++end;
+              run.resize(end - begin);
+              for (std::size_t i = begin; i < end; ++i) run[i - begin] = pick(uniforms, i);
+              const std::vector<gpu::BrdfSampleValue> part =
+                  drawBrdfSamples(context->session.device, sampler, record, pick(wos, begin), run);
+              std::copy(part.begin(), part.end(), draws.begin() + std::ptrdiff_t(begin));
+              begin = end;
+            }
           }
           for (std::size_t i = 0; i < count; ++i) {
             for (int c = 0; c < 3; ++c) {
@@ -227,8 +247,9 @@ void bindBrdf(py::module_& parent) {
       },
       py::arg("model"), py::arg("params") = py::none(), py::kw_only(), py::arg("wo"), py::arg("u"),
       py::arg("backend") = "gpu", py::arg("device") = py::none(),
-      "Importance samples wi given one wo (3,) in the local frame (z the normal) for each row of u (N, 3) in "
-      "[0, 1)^3: a dict of wi (N, 3), f (N, 3) = f(wi, wo) and pdf (N,); pdf 0 for a failed sample.");
+      "Importance samples wi given wo, one direction (3,) or one per row (N, 3), in the local frame (z the normal), "
+      "for each row of u (N, 3) in [0, 1)^3: a dict of wi (N, 3), f (N, 3) = f(wi, wo) and pdf (N,); pdf 0 for a "
+      "failed sample. N may be 0.");
   m.def(
       "albedo",
       [](const std::string& model, const py::object& params, const DoubleArray& theta, double phi,

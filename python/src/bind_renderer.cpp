@@ -40,7 +40,9 @@ class PythonRenderer {
                  const std::string& schedule, std::uint32_t maxDepth, std::uint32_t seed, bool jitter,
                  std::optional<std::uint32_t> device)
       : scene_(scene) {
-    if (maxDepth > 64) throw Error("raylab.Renderer: max_depth must be within 0..64", kExitUsage);
+    if (maxDepth > kMaxDepthLimit) {
+      throw Error("raylab.Renderer: max_depth must be within 0.." + std::to_string(kMaxDepthLimit), kExitUsage);
+    }
     if (fresnel != "exact" && fresnel != "schlick") {
       throw Error("raylab.Renderer: fresnel is exact or schlick, not '" + fresnel + "'", kExitUsage);
     }
@@ -89,8 +91,10 @@ class PythonRenderer {
     destroyGpuScene(context_->session.device, gpuScene_);
   }
 
-  py::array_t<float> render(std::uint32_t spp, std::optional<std::uint32_t> seed) {
-    if (spp < 1) throw Error("raylab.Renderer.render: spp must be at least 1", kExitUsage);
+  py::array_t<float> render(std::int64_t spp, std::optional<std::uint32_t> seed) {
+    if (spp < 1 || spp > std::int64_t(kMaxSamplesPerPixel)) {
+      throw Error("raylab.Renderer.render: spp must be within 1.." + std::to_string(kMaxSamplesPerPixel), kExitUsage);
+    }
     {
       const std::lock_guard<std::mutex> lock(context_->queue);
       if (seed) renderer_.params.seed = *seed;
@@ -100,9 +104,18 @@ class PythonRenderer {
     return image();
   }
 
-  void addSamples(std::uint32_t samples) {
+  // Python integers of any size arrive here unconverted, so that 2^32 is refused rather than wrapped.
+  void addSamples(std::int64_t samples) {
+    // Checked as a sum: samplesDone + samples must neither wrap nor pass the accumulation's limit.
+    if (samples < 1) throw Error("raylab.Renderer.add_samples: n must be at least 1", kExitUsage);
+    if (std::uint64_t(samples) > kMaxSamplesPerPixel - std::min(renderer_.samplesDone, kMaxSamplesPerPixel)) {
+      throw Error("raylab.Renderer.add_samples: " + std::to_string(renderer_.samplesDone) + " + " +
+                      std::to_string(samples) + " samples would pass the limit of " +
+                      std::to_string(kMaxSamplesPerPixel) + " per pixel",
+                  kExitUsage);
+    }
     cancelled_ = false;
-    const std::uint32_t target = renderer_.samplesDone + samples;
+    const std::uint32_t target = renderer_.samplesDone + std::uint32_t(samples);
     std::uint32_t batch = 1;
     while (renderer_.samplesDone < target) {
       const std::uint32_t count = std::min(batch, target - renderer_.samplesDone);

@@ -2,8 +2,10 @@
 // and environment read and edited by name, with the ranges and messages of the glTF loader and the viewer's script.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <array>
+#include <filesystem>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -12,9 +14,12 @@
 #include "brdf_params/material_params.h"
 #include "errors.h"
 #include "scene/camera_frame.h"
+#include "scene/environment.h"
 #include "scene/load_scene.h"
+#include "scene/radiance_limits.h"
 #include "shared/scene_records.h"
 #include "util/error.h"
+#include "util/files.h"
 #include "view_logic/scene_edits.h"
 #include "vk/device.h"
 
@@ -94,8 +99,10 @@ void setLight(Scene& scene, const std::string& name, const std::optional<Vec3>& 
   gpu::LightRecord record = light.record;
   const std::string where = "light '" + name + "'";
   if (intensity) {
-    if (!finite(*intensity) || glm::any(glm::lessThan(*intensity, glm::vec3(0.0f)))) {
-      usage(where + ": the intensity must be finite and >= 0");
+    try {
+      checkLightIntensity(*intensity, where);
+    } catch (const Error& error) {
+      usage(error.what());
     }
     record.intensity = *intensity;
   }
@@ -130,7 +137,11 @@ void setCamera(Scene& scene, const std::optional<Vec3>& positionIn, const std::o
   if (target) camera.target = *target;
   if (up) camera.up = *up;
   if (fovDegrees) {
-    if (!(*fovDegrees > 0.0f && *fovDegrees < 180.0f)) usage("the camera's field of view must be within (0, 180) degrees");
+    const float radians = float(*fovDegrees * kDegree);
+    if (!(radians >= kMinYfov && radians < kMaxYfov)) {
+      usage("the camera's field of view must be within [" + std::to_string(kMinYfov / kDegree) + ", " +
+            std::to_string(kMaxYfov / kDegree) + ") degrees, as a glTF camera's");
+    }
     camera.yfov = float(*fovDegrees * kDegree);
   }
   if (!finite(camera.position) || !finite(camera.target) || !finite(camera.up)) usage("the camera must be finite");
@@ -158,8 +169,20 @@ py::dict materialDict(const Material& material) {
   return d;
 }
 
+// A number is anything Python can take as one (int, float, NumPy scalars, 0-d arrays); three numbers any sequence
+// or array of three. bool is neither.
 glm::vec3 paramValue(const py::handle& value, const std::string& where) {
-  if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) return glm::vec3(value.cast<float>());
+  if (py::isinstance<py::bool_>(value)) usage(where + ": expected a number or three numbers (r, g, b), not a bool");
+  const bool number = py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
+                      (py::hasattr(value, "__float__") && !py::isinstance<py::sequence>(value) &&
+                       (!py::isinstance<py::array>(value) || py::reinterpret_borrow<py::array>(value).ndim() == 0));
+  if (number) {
+    try {
+      return glm::vec3(py::float_(py::reinterpret_borrow<py::object>(value)).cast<float>());
+    } catch (const py::error_already_set&) {
+      usage(where + ": expected a number or three numbers (r, g, b)");
+    }
+  }
   try {
     const std::vector<float> channels = value.cast<std::vector<float>>();
     if (channels.size() == 3) return {channels[0], channels[1], channels[2]};
@@ -234,19 +257,25 @@ void bindScene(py::module_& m) {
                     "and camera by name, then render it with raylab.Renderer.")
       .def_static(
           "load",
-          [](const std::string& path, const std::string& camera, const std::string& env,
+          [](const std::filesystem::path& pathIn, const std::string& camera, const std::optional<std::filesystem::path>& envIn,
              std::optional<float> envStrength, std::optional<float> envRotationDegrees, bool allowOutsideUris) {
+            const std::string path = pathIn.string(), env = envIn ? envIn->string() : "";
             requireFile(path, "raylab.Scene.load");
-            if (!env.empty()) requireFile(env, "raylab.Scene.load: env");
+            if (envIn) {
+              if (env.empty()) usage("raylab.Scene.load: env is an empty path (leave it out for the scene's own)");
+              requireFile(env, "raylab.Scene.load: env");
+            }
             SceneRequest request{path, camera, allowOutsideUris, env, envStrength, envRotationDegrees};
             try {
               return loadScene(request);
+            } catch (const FileError&) {
+              throw;
             } catch (const Error& error) {
               // A malformed file is bad input, as on the command line.
               throw Error(error.what(), error.exitCode() == kExitNoDevice ? kExitNoDevice : kExitUsage);
             }
           },
-          py::arg("path"), py::kw_only(), py::arg("camera") = "", py::arg("env") = "",
+          py::arg("path"), py::kw_only(), py::arg("camera") = "", py::arg("env") = py::none(),
           py::arg("env_strength") = py::none(), py::arg("env_rotation_deg") = py::none(),
           py::arg("allow_outside_uris") = false,
           "Loads a glTF 2.0 file (.gltf or .glb), as `raylab render PATH --camera ... --env ...` does. "
@@ -313,17 +342,43 @@ void bindScene(py::module_& m) {
           "uniform background radiance.")
       .def(
           "set_environment",
-          [](Scene& s, std::optional<float> strength, std::optional<float> rotationDegrees) {
-            if (strength) {
-              if (!(*strength >= 0.0f) || !std::isfinite(*strength)) usage("the environment's strength must be finite and >= 0");
-              s.environment.strength = *strength;
+          [](Scene& s, const std::optional<std::filesystem::path>& path, std::optional<float> strength,
+             std::optional<float> rotationDegrees) {
+            const std::string where = "raylab.Scene.set_environment";
+            if (rotationDegrees && !(std::abs(*rotationDegrees) <= kMaxEnvironmentRotationDegrees)) {
+              usage(where + ": rotation_deg must be within [-360, 360]");
             }
-            if (rotationDegrees) {
-              if (!std::isfinite(*rotationDegrees)) usage("the environment's rotation must be finite");
-              s.environment.rotation = float(*rotationDegrees * kDegree);
+            // Everything is checked before anything changes: a refused call leaves the scene as it was.
+            Environment environment = s.environment;
+            const float newStrength = strength.value_or(path ? 1.0f : environment.strength);
+            if (path) {
+              if (path->empty()) usage(where + ": the path is empty");
+              requireFile(path->string(), where);
+              try {
+                environment = loadEnvironment(path->string(), newStrength, where);
+              } catch (const FileError&) {
+                throw;
+              } catch (const Error& error) {
+                usage(error.what());
+              }
+              environment.rotation = 0.0f;
+            } else if (!environment.hasImage() && (strength || rotationDegrees)) {
+              usage(where + ": the scene has no environment image (give one: set_environment(path))");
             }
+            try {
+              checkEnvironmentStrength(environment, newStrength, where);
+            } catch (const Error& error) {
+              usage(error.what());
+            }
+            environment.strength = newStrength;
+            if (rotationDegrees) environment.rotation = float(*rotationDegrees * kDegree);
+            s.environment = std::move(environment);
           },
-          py::kw_only(), py::arg("strength") = py::none(), py::arg("rotation_deg") = py::none())
+          py::arg("path") = py::none(), py::kw_only(), py::arg("strength") = py::none(),
+          py::arg("rotation_deg") = py::none(),
+          "Lights the scene with an equirectangular OpenEXR image (+Y up) as `--env` does, and/or sets its strength "
+          "and rotation about +Y in degrees (as --env-strength and --env-rotation). A new image starts at strength 1 "
+          "and rotation 0 unless given.")
       .def("__repr__", [](const Scene& s) {
         return "<raylab.Scene '" + s.name + "': " + std::to_string(s.materials.size()) + " materials, " +
                std::to_string(s.lights.size()) + " lights, " + std::to_string(s.spheres.size()) + " spheres, " +

@@ -2,18 +2,35 @@
 
 #include <pybind11/pybind11.h>
 
-#include <filesystem>
-
 #include "util/error.h"
+#include "util/files.h"
 
 namespace py = pybind11;
 
 namespace raylab::python {
 
+namespace {
+
+// The Python exception for what was wrong with an input file: the built-in OSError subclasses where one fits.
+PyObject* exceptionFor(FileProblem problem) {
+  switch (problem) {
+    case FileProblem::kMissing: return PyExc_FileNotFoundError;
+    case FileProblem::kDirectory: return PyExc_IsADirectoryError;
+    case FileProblem::kNotRegular:
+    case FileProblem::kTooLarge: return PyExc_ValueError;
+    case FileProblem::kUnreadable: return PyExc_OSError;
+  }
+  return PyExc_OSError;
+}
+
+}  // namespace
+
 void registerErrorTranslation() {
   py::register_exception_translator([](std::exception_ptr pointer) {
     try {
       if (pointer) std::rethrow_exception(pointer);
+    } catch (const FileError& error) {
+      PyErr_SetString(exceptionFor(error.problem()), error.what());
     } catch (const Error& error) {
       if (error.exitCode() == kExitUsage) {
         PyErr_SetString(PyExc_ValueError, error.what());
@@ -24,12 +41,10 @@ void registerErrorTranslation() {
   });
 }
 
-void requireFile(const std::string& path, const std::string& what) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    PyErr_SetString(PyExc_FileNotFoundError, (what + ": " + path + ": no such file").c_str());
-    throw py::error_already_set();
-  }
+void requireFile(const std::string& path, const std::string& what, std::uint64_t maxBytes) {
+  FileProblem problem{};
+  const std::string message = inputFileProblem(path, maxBytes, &problem);
+  if (!message.empty()) throw FileError(what + ": " + path + ": " + message, problem);
 }
 
 }  // namespace raylab::python

@@ -1,8 +1,10 @@
 // raylab's errors as Python exceptions, with the command line's messages: a usage error (a bad option, name or
-// value) is ValueError, a missing file FileNotFoundError, anything else (no capable device, a failed dispatch)
-// RuntimeError.
+// value) is ValueError, a missing file FileNotFoundError, a directory IsADirectoryError, anything else (no
+// capable device, a failed dispatch) RuntimeError.
 #pragma once
 
+#include <cstdint>
+#include <limits>
 #include <string>
 
 namespace raylab::python {
@@ -10,7 +12,9 @@ namespace raylab::python {
 // Registers the translation of raylab::Error with pybind11.
 void registerErrorTranslation();
 
-// Throws FileNotFoundError naming `path` when it is not a regular file ("raylab render: FILE: no such file").
-void requireFile(const std::string& path, const std::string& what);
+// Throws FileError (FileNotFoundError, IsADirectoryError, ValueError for a FIFO or device) naming `what` and
+// `path` when it is not a regular file of at most maxBytes, before any work starts.
+void requireFile(const std::string& path, const std::string& what,
+                 std::uint64_t maxBytes = std::numeric_limits<std::uint64_t>::max());
 
 }  // namespace raylab::python

@@ -1,16 +1,37 @@
 // The extension `raylab._raylab`: the engine library through pybind11. python/raylab/__init__.py re-exports it
 // as the package `raylab` (docs/python.md).
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+
+#include <vector>
 
 #include "bindings.h"
 #include "device_context.h"
 #include "errors.h"
+#include "image/image.h"
+#include "render/renderer.h"
 
 namespace py = pybind11;
 
 PYBIND11_MODULE(_raylab, m) {
   m.doc() = "raylab's engine: scenes, the renderer, the BRDF library and image files (docs/python.md).";
+  m.attr("__version__") = RAYLAB_VERSION;
+  // pybind11 initialises NumPy's C API lazily, under the GIL, at the first array: two threads whose first call
+  // returns an array would deadlock in that initialisation (one holds its static guard and waits for the GIL,
+  // the other holds the GIL and waits for the guard). Done here, at import, no thread can race it.
+  py::module_::import("numpy");
+  py::detail::npy_api::get();
+  py::array_t<float> warmUp(std::vector<py::ssize_t>{1});
+  py::array_t<std::uint8_t> warmUpBytes(std::vector<py::ssize_t>{1});
+  py::array_t<double> warmUpDoubles(std::vector<py::ssize_t>{1});
   raylab::python::registerErrorTranslation();
+  // The ranges the command line checks, for Python code that validates before work starts (raylab.farm).
+  py::dict limits;
+  limits["max_image_side"] = raylab::kMaxImageSide;
+  limits["max_spp"] = raylab::kMaxSamplesPerPixel;
+  limits["max_depth"] = raylab::kMaxDepthLimit;
+  limits["max_exposure_stops"] = raylab::kMaxExposureStops;
+  m.attr("limits") = limits;
   raylab::python::bindScene(m);
   raylab::python::bindRenderer(m);
   raylab::python::bindBrdf(m);

@@ -52,7 +52,7 @@ std::vector<double> numbers(const std::string& text) {
 
 // "id/quantity" -> value text, from an output file; checks the header and the echoed columns.
 std::map<std::string, std::string> readValues(const std::string& path) {
-  const std::vector<std::string> lines = splitLines(readTextFile(path));
+  const std::vector<std::string> lines = splitLines(readInputFile(path, kMaxCaseFileBytes));
   std::map<std::string, std::string> values;
   EXPECT_FALSE(lines.empty()) << path;
   if (lines.empty()) return values;

@@ -363,7 +363,7 @@ void addSceneOptions(CLI::App* command, SceneRequest& request) {
   addOptionalNumber(command, "--env-rotation", request.environmentRotation,
                     "turns the environment image about +Y, degrees counter-clockwise seen from above (default: the "
                     "scene's, or 0)",
-                    -360.0f, 360.0f);
+                    -kMaxEnvironmentRotationDegrees, kMaxEnvironmentRotationDegrees);
 }
 
 void addIntegratorOption(CLI::App* command, std::string& integrator) {
@@ -374,11 +374,12 @@ void addIntegratorOption(CLI::App* command, std::string& integrator) {
 
 void addSampleOptions(CLI::App* command, RenderSettings& settings) {
   addCount(command, "--seed", settings.seed, "random seed of the sample pattern", 0, UINT32_MAX);
-  addCount(command, "--max-depth", settings.maxDepth, "bounces after the primary hit (mirror, glass, paths)", 0, 64);
+  addCount(command, "--max-depth", settings.maxDepth, "bounces after the primary hit (mirror, glass, paths)", 0,
+           kMaxDepthLimit);
 }
 
 void addToneOptions(CLI::App* command, float& exposure, std::string& toneMap, const std::string& what) {
-  addNumber(command, "--exposure", exposure, "exposure of " + what + " in stops", -20.0f, 20.0f);
+  addNumber(command, "--exposure", exposure, "exposure of " + what + " in stops", -kMaxExposureStops, kMaxExposureStops);
   addChoice(command, "--tonemap", toneMap, {"clamp", "reinhard", "aces"}, "tone curve of " + what);
 }
 

@@ -37,7 +37,7 @@ int evaluate(const EvalOptions& o) {
   checkOutputPath(outPath, "--out");
 
   const Stopwatch total;
-  const BrdfCaseFile file = parseBrdfCases(readTextFile(o.inPath), o.inPath);
+  const BrdfCaseFile file = parseBrdfCases(readInputFile(o.inPath, kMaxCaseFileBytes), o.inPath);
   for (const std::string& error : file.errors) std::fprintf(stderr, "raylab brdf eval: %s\n", error.c_str());
 
   std::vector<BrdfResult> results;

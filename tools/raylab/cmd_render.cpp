@@ -107,18 +107,6 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
   writeFileAtomically(path, report.dump(2) + "\n");
 }
 
-// A non-finite pixel is a defect somewhere (an input that passed its checks, or the kernel): never write it
-// silently as an image that looks fine.
-void checkFinite(const Image& image) {
-  std::size_t bad = 0;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-    if (!std::isfinite(image.rgba[i]) || !std::isfinite(image.rgba[i + 1]) || !std::isfinite(image.rgba[i + 2])) ++bad;
-  }
-  if (bad > 0) {
-    throw Error(std::to_string(bad) + " pixels are NaN or Inf; no file was written (please report the scene)");
-  }
-}
-
 // Writes the images, each atomically. When one fails after another was written, the message says which
 // files were written and which was not, so nothing is taken for done that is not.
 void writeImages(const RenderOptions& o, const Image& image) {
@@ -158,13 +146,21 @@ void render(RenderOptions o) {
     throw Error("raylab render: --no-exr and --no-png leave nothing to write (add --report to time a render)",
                 kExitUsage);
   }
-  // Before any work: a render is never thrown away because its output cannot be written.
+  // Before any work: a render is never thrown away because its output cannot be written, and no output
+  // replaces another.
+  const std::string heatmapExr =
+      o.heatmapPath.empty() ? "" : std::filesystem::path(o.heatmapPath).replace_extension(".exr").string();
+  checkDistinctOutputs("raylab render", {{"--out", o.exrPath},
+                                         {"--png", o.pngPath},
+                                         {"--report", o.reportPath},
+                                         {"--heatmap", o.heatmapPath},
+                                         {"--heatmap (its .exr)", heatmapExr}});
   if (!o.exrPath.empty()) checkOutputPath(o.exrPath, "--out");
   if (!o.pngPath.empty()) checkOutputPath(o.pngPath, "--png");
   if (!o.reportPath.empty()) checkOutputPath(o.reportPath, "--report");
   if (!o.heatmapPath.empty()) {
     checkOutputPath(o.heatmapPath, "--heatmap");
-    checkOutputPath(std::filesystem::path(o.heatmapPath).replace_extension(".exr").string(), "--heatmap");
+    checkOutputPath(heatmapExr, "--heatmap");
   }
 
   Scene scene = loadScene(request);
@@ -213,7 +209,7 @@ void render(RenderOptions o) {
     const double steadyCpuSeconds = steadyCpuClock.seconds();
 
     const Image image = readImage(gpu.device, renderer);
-    checkFinite(image);
+    checkFinite(image, "raylab render");  // before any file: none is written when one would be refused
     writeImages(o, image);
     if (!o.heatmapPath.empty()) {
       writeCostMap(o.heatmapPath, readCostMap(gpu.device, renderer), scene.name);
@@ -285,7 +281,7 @@ void addRenderCommand(CLI::App& raylab) {
               "render MATERIAL as MODEL with these parameters (RGB as r/g/b; the others take the model's defaults); "
               "the right side of `raylab view --compare` with the same text");
   addImageSizeOptions(command, o->settings.width, o->settings.height, "image");
-  addCount(command, "--spp", o->spp, "samples per pixel", 1, 1u << 20);
+  addCount(command, "--spp", o->spp, "samples per pixel", 1, kMaxSamplesPerPixel);
   addSampleOptions(command, o->settings);
   addFlag(command, "--no-aa", o->noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
   addText(command, "--out", o->exrPath, "FILE.exr",

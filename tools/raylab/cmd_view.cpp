@@ -122,7 +122,7 @@ void addViewCommand(CLI::App& raylab) {
   addFlag(command, "--no-aa", o->noAntialiasing, "sample pixel centres only (no anti-aliasing jitter)");
   addNumber(command, "--target-ms", o->targetMs, "frame time to hold while the view changes", 5.0f, 1000.0f);
   addCount(command, "--spp-limit", o->viewer.sppLimit, "stop refining at this many samples per pixel; 0: never", 0,
-           1u << 20);
+           kMaxSamplesPerPixel);
   addToneOptions(command, o->viewer.exposure, o->toneMap, "the display");
   addFlag(command, "--no-panel", o->noPanel, "start with the panel hidden (F1 shows it)");
   addOptionalCount(command, "--frames", o->frames,

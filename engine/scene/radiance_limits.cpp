@@ -1,0 +1,53 @@
+#include "scene/radiance_limits.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "scene/environment.h"
+#include "util/error.h"
+
+namespace raylab {
+
+namespace {
+
+std::string shown(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+void checkRadiance(glm::vec3 value, const std::string& where, const char* what) {
+  for (int c = 0; c < 3; ++c) {
+    if (!(value[c] >= 0.0f) || !std::isfinite(value[c])) {
+      throw Error(where + ": " + what + " must be finite and >= 0, found " + shown(value[c]));
+    }
+  }
+  const float brightest = std::max({value.r, value.g, value.b});
+  if (brightest > kMaxRadiance) {
+    throw Error(where + ": " + what + " " + shown(brightest) + " is over raylab's limit of " + shown(kMaxRadiance) +
+                " (docs/scenes.md, Limits)");
+  }
+}
+
+}  // namespace
+
+void checkLightIntensity(glm::vec3 intensity, const std::string& where) {
+  checkRadiance(intensity, where, "the light's intensity");
+}
+
+void checkEmission(glm::vec3 radiance, const std::string& where) { checkRadiance(radiance, where, "the emission"); }
+
+void checkEnvironmentStrength(const Environment& environment, float strength, const std::string& where) {
+  if (!(strength >= 0.0f) || !std::isfinite(strength)) {
+    throw Error(where + ": environment strength must be a finite number >= 0, found " + shown(strength));
+  }
+  const double product = double(strength) * double(environment.brightest);
+  if (product > double(kMaxRadiance)) {
+    throw Error(where + ": environment strength " + shown(strength) + " x the image's brightest texel " +
+                shown(environment.brightest) + " = " + shown(product) + " is over raylab's limit of " +
+                shown(kMaxRadiance) + " (docs/scenes.md, Limits)");
+  }
+}
+
+}  // namespace raylab
