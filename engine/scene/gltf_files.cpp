@@ -59,7 +59,7 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* error, const st
     out->assign(bytes.begin(), bytes.end());
     return true;
   } catch (const FileError& e) {
-    if (policy.error.empty()) policy.error = "'" + path + "': " + e.what();
+    if (policy.error.empty()) policy.error = e.what();
     if (error) *error = e.what();
     return false;
   }

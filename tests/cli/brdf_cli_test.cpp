@@ -107,7 +107,9 @@ TEST(BrdfCliTest, BothBackendsAgreeAndMatchClosedForms) {
   for (const std::string backend : {"gpu", "cpu"}) {
     const std::string out = dir + "/nested/values_" + backend + ".csv";
     std::filesystem::remove(out);
-    const CommandResult result = runRaylab({"brdf", "eval", "--in", kData + "cases.csv", "--out", out, "--backend", backend});
+    // Run in `dir`: raylab creates the missing nested/ only below its working directory.
+    const CommandResult result =
+        runRaylab({"brdf", "eval", "--in", kData + "cases.csv", "--out", out, "--backend", backend}, {}, dir);
     ASSERT_EQ(result.exitCode, 0) << result.output;
     // The one-line timing summary: rows and the evaluation time.
     EXPECT_NE(result.output.find("15 rows (0 malformed)"), std::string::npos) << result.output;

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "image/image.h"
+#include "support/hostile_exr.h"
 #include "support/run_command.h"
 
 namespace raylab::test {
@@ -76,7 +77,7 @@ TEST(CliTest, ABadEnvironmentImageExitsOneNamingItAndWritesNothing) {
   std::filesystem::create_directories(dir);
   Image nan(4, 2);
   nan.set(3, 1, glm::vec4(1.0f, std::nanf(""), 0.0f, 1.0f));
-  writeExr((dir / "nan.exr").string(), nan);
+  writeExrUnchecked((dir / "nan.exr").string(), nan);
   std::ofstream(dir / "text.exr") << "P3 1 1 255 0 0 0";
   const std::string out = (dir / "image.exr").string();
   const std::string png = (dir / "image.png").string();
@@ -150,7 +151,8 @@ TEST(CliTest, RenderWritesExrAndPngAndReportsTimings) {
   const std::string png = dir + "/nested/default.png";
   std::filesystem::remove_all(dir + "/nested");
   const CommandResult result =
-      runRaylab({"render", "--width", "48", "--height", "32", "--spp", "3", "--out", exr, "--png", png});
+      runRaylab({"render", "--width", "48", "--height", "32", "--spp", "3", "--out", exr, "--png", png}, {},
+                dir);  // nested/ is created below the working directory
   ASSERT_EQ(result.exitCode, 0) << result.output;
   for (const char* line : {"3/3 spp", "rays/s", "acceleration structures:", "first sample:", "per sample:"}) {
     EXPECT_NE(result.output.find(line), std::string::npos) << "missing '" << line << "' in:\n" << result.output;

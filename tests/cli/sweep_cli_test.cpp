@@ -72,7 +72,8 @@ TEST(SweepCliTest, RhoDSweepWritesALabelledSheetWhoseCellsGetBrighter) {
   const std::string exr = dir + "/rho_d.exr";
   const CommandResult result =
       runRaylab({"sweep", "--model", "lambert", "--param", "rho_d", "--from", "0.1", "--to", "0.9", "--steps", "3",
-                 "--cell", "32", "--spp", "2", "--out", png});
+                 "--cell", "32", "--spp", "2", "--out", png},
+                {}, scratchDir());  // nested/ is created below the working directory
   ASSERT_EQ(result.exitCode, 0) << result.output;
   EXPECT_NE(result.output.find("6/6 spp"), std::string::npos) << "no progress line in:\n" << result.output;
   EXPECT_NE(result.output.find("lambert: rho_d from 0.1 to 0.9"), std::string::npos) << result.output;

@@ -9,6 +9,7 @@
 
 #include "gltf_test_support.h"
 #include "image/image.h"
+#include "support/hostile_exr.h"
 #include "scene/environment.h"
 #include "scene/environment_tables.h"
 
@@ -25,7 +26,7 @@ void writeEnvironment(const fs::path& path, std::uint32_t width, std::uint32_t h
   for (std::uint32_t y = 0; y < height; ++y) {
     for (std::uint32_t x = 0; x < width; ++x) image.set(x, y, glm::vec4(value(x, y), 1.0f));
   }
-  writeExr(path.string(), image);
+  writeExrUnchecked(path.string(), image);  // some are NaN, which raylab's own writer refuses
 }
 
 glm::vec3 gradient(std::uint32_t x, std::uint32_t y) { return {0.1f * float(x), 1.0f, 0.2f * float(y)}; }

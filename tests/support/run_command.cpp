@@ -12,7 +12,8 @@ extern char** environ;
 
 namespace raylab::test {
 
-CommandResult runCommand(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
+CommandResult runCommand(const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
+                         const std::string& workingDirectory) {
   int pipeFds[2];
   if (pipe(pipeFds) != 0) throw std::runtime_error("pipe failed");
 
@@ -38,6 +39,7 @@ CommandResult runCommand(const std::vector<std::string>& arguments, const std::v
   posix_spawn_file_actions_adddup2(&actions, pipeFds[1], STDOUT_FILENO);
   posix_spawn_file_actions_adddup2(&actions, pipeFds[1], STDERR_FILENO);
   posix_spawn_file_actions_addclose(&actions, pipeFds[0]);
+  if (!workingDirectory.empty()) posix_spawn_file_actions_addchdir_np(&actions, workingDirectory.c_str());
   pid_t pid = 0;
   const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
@@ -58,10 +60,11 @@ CommandResult runCommand(const std::vector<std::string>& arguments, const std::v
   return result;
 }
 
-CommandResult runRaylab(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
+CommandResult runRaylab(const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
+                        const std::string& workingDirectory) {
   std::vector<std::string> full = {RAYLAB_BINARY};
   full.insert(full.end(), arguments.begin(), arguments.end());
-  return runCommand(full, environment);
+  return runCommand(full, environment, workingDirectory);
 }
 
 }  // namespace raylab::test

@@ -12,10 +12,12 @@ struct CommandResult {
 };
 
 // `environment` entries ("NAME=value") are added to the current environment; "NAME=" sets it empty.
+// `workingDirectory`: where the command runs (empty: here); raylab creates output directories only below it.
 CommandResult runCommand(const std::vector<std::string>& arguments,
-                         const std::vector<std::string>& environment = {});
+                         const std::vector<std::string>& environment = {}, const std::string& workingDirectory = "");
 
 // Runs the raylab binary of this build with `arguments`.
-CommandResult runRaylab(const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {});
+CommandResult runRaylab(const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {},
+                        const std::string& workingDirectory = "");
 
 }  // namespace raylab::test

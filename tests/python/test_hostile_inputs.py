@@ -1,0 +1,199 @@
+"""The Python module off the documented path: empty arrays, threads, special files, damaged EXR files, values that
+would overflow the image, NumPy scalars and paths. Each test is one class of the defects of issue 21 and fails on
+the code before its fix."""
+import os
+import struct
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import OpenEXR
+import pytest
+
+import raylab
+
+BACKENDS = ["cpu", "gpu"]
+
+
+@pytest.fixture(scope="module")
+def minimal(source_dir) -> Path:
+    return source_dir / "assets" / "scenes" / "minimal.gltf"
+
+
+# Empty batches: the result is empty, of the documented shape, on both backends (the interpreter used to crash).
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_empty_batches_give_empty_results(backend):
+    empty = np.zeros((0, 3), np.float32)
+    assert raylab.brdf.eval("phong", wi=empty, wo=empty, backend=backend).shape == (0, 3)
+    assert raylab.brdf.eval("phong", wi=empty, wo=[0, 0, 1], backend=backend).shape == (0, 3)
+    assert raylab.brdf.pdf("ward", wi=[0, 0, 1], wo=empty, backend=backend).shape == (0,)
+    drawn = raylab.brdf.sample("lambert", wo=[0, 0, 1], u=empty, backend=backend)
+    assert drawn["wi"].shape == (0, 3) and drawn["f"].shape == (0, 3) and drawn["pdf"].shape == (0,)
+    with pytest.raises(ValueError, match="rows"):
+        raylab.brdf.eval("phong", wi=empty, wo=np.zeros((2, 3), np.float32), backend=backend)
+
+
+# brdf.sample takes one wo per row, and gives what one call per wo gives.
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_sample_takes_one_outgoing_direction_per_row(backend):
+    wo = np.array([[0, 0, 1], [0.6, 0, 0.8], [0.6, 0, 0.8], [0, 0.8, 0.6]], np.float32)
+    u = np.random.default_rng(3).random((4, 3), dtype=np.float32) * 0.999
+    together = raylab.brdf.sample("ward", {"alpha_x": 0.3}, wo=wo, u=u, backend=backend)
+    for i in range(4):
+        alone = raylab.brdf.sample("ward", {"alpha_x": 0.3}, wo=wo[i], u=u[i:i + 1], backend=backend)
+        np.testing.assert_array_equal(together["wi"][i], alone["wi"][0])
+        np.testing.assert_array_equal(together["pdf"][i], alone["pdf"][0])
+
+
+# The first NumPy-returning call from two threads at once used to deadlock in NumPy's lazy initialisation. A
+# fresh interpreter is needed (the module initialises once), and a timeout turns a hang into a failure.
+def test_threads_whose_first_call_returns_an_array_do_not_deadlock(work):
+    image = work / "tiny.exr"
+    raylab.write_exr(image, np.ones((2, 3, 4), np.float32))
+    script = textwrap.dedent(f"""
+        import threading, raylab
+        results = []
+        def read(): results.append(raylab.read_exr({str(image)!r}).shape)
+        def evaluate(): results.append(raylab.brdf.eval("phong", wi=[0, 0, 1], wo=[0, 0, 1], backend="cpu").shape)
+        threads = [threading.Thread(target=f) for f in (read, evaluate, read, evaluate)]
+        for t in threads: t.start()
+        for t in threads: t.join()
+        print(len(results))
+    """)
+    for _ in range(3):
+        done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60)
+        assert done.returncode == 0 and done.stdout.strip() == "4", done.stderr
+
+
+# Special files are refused by what they are, with the built-in exception that fits, never read.
+def test_special_files_are_refused_by_every_reader(work):
+    fifo = work / "pipe.exr"
+    os.mkfifo(fifo)
+    for reader in (raylab.read_exr, raylab.read_png, raylab.Scene.load):
+        with pytest.raises(ValueError, match="not a regular file"):
+            reader(str(fifo))
+        with pytest.raises(ValueError, match="not a regular file"):
+            reader("/dev/zero")
+        with pytest.raises(IsADirectoryError, match="is a directory"):
+            reader(work)
+        with pytest.raises(FileNotFoundError, match="no such file"):
+            reader(work / "missing.exr")
+
+
+def _exr(path, channels, **header):
+    OpenEXR.File({"compression": OpenEXR.NO_COMPRESSION, **header}, channels).write(str(path))
+    return path
+
+
+def _patched_windows(source: Path, target: Path, box):
+    """`source` with its data and display windows replaced by `box` (x0, y0, x1, y1) and nothing else changed."""
+    data = bytearray(source.read_bytes())
+    for name in (b"dataWindow\0box2i\0", b"displayWindow\0box2i\0"):
+        at = data.find(name) + len(name) + 4
+        struct.pack_into("<4i", data, at, *box)
+    target.write_bytes(bytes(data))
+    return target
+
+
+# A header is believed only as far as the file's content can hold it, and a file must hold every pixel it
+# declares: no allocation of what a small file claims, no rows of leftover memory.
+@pytest.mark.parametrize("compression", [OpenEXR.NO_COMPRESSION, OpenEXR.ZIP_COMPRESSION, OpenEXR.PIZ_COMPRESSION])
+def test_damaged_exr_files_are_refused(work, compression):
+    pixels = np.full((16, 32, 3), 0.5, np.float32)
+    good = work / "good.exr"
+    OpenEXR.File({"compression": compression}, {"RGB": pixels}).write(str(good))
+    np.testing.assert_array_equal(raylab.read_exr(good)[..., :3], pixels)
+    taller = _patched_windows(good, work / "taller.exr", (0, 0, 31, 215))
+    huge = _patched_windows(good, work / "huge.exr", (0, 0, 16383, 16383))
+    truncated = work / "truncated.exr"
+    truncated.write_bytes(good.read_bytes()[:-40])
+    for damaged in (taller, huge, truncated):
+        with pytest.raises(RuntimeError, match="OpenEXR"):
+            raylab.read_exr(damaged)
+
+
+def test_exr_channels_are_read_correctly_or_refused_naming_them(work):
+    grey = np.full((4, 6), 0.25, np.float32)
+    red, green, blue = grey * 2, grey, grey / 2
+    expected = np.stack([red, green, blue], axis=-1)
+    np.testing.assert_array_equal(raylab.read_exr(_exr(work / "y.exr", {"Y": grey}))[..., :3],
+                                  np.stack([grey] * 3, axis=-1))
+    np.testing.assert_array_equal(
+        raylab.read_exr(_exr(work / "layer.exr", {"diffuse.R": red, "diffuse.G": green, "diffuse.B": blue}))[..., :3],
+        expected)
+    np.testing.assert_array_equal(raylab.read_exr(_exr(work / "lower.exr", {"r": red, "g": green, "b": blue}))[..., :3],
+                                  expected)
+    with pytest.raises(RuntimeError, match="it has A;"):
+        raylab.read_exr(_exr(work / "alpha.exr", {"A": grey}))
+    with pytest.raises(RuntimeError, match="several RGB layers"):
+        raylab.read_exr(_exr(work / "two.exr", {"a.R": red, "a.G": red, "a.B": red, "b.R": red, "b.G": red,
+                                                "b.B": red}))
+    parts = [OpenEXR.Part({"compression": OpenEXR.NO_COMPRESSION}, {"RGB": expected}, name=name)
+             for name in ("left", "right")]
+    OpenEXR.File(parts).write(str(work / "parts.exr"))
+    with pytest.raises(RuntimeError, match="2 parts \\('left', 'right'\\)"):
+        raylab.read_exr(work / "parts.exr")
+    # A data window inside the display window is placed in it, not stretched over it: 0 outside.
+    window = raylab.read_exr(_exr(work / "window.exr", {"RGB": np.ones((8, 8, 3), np.float32)},
+                                  dataWindow=((4, 4), (11, 11)), displayWindow=((0, 0), (31, 15))))
+    assert window.shape == (16, 32, 4)
+    assert window[4:12, 4:12].min() == 1.0 and window[:4].max() == 0.0 and window[:, 12:].max() == 0.0
+
+
+# One bound on what emits light, wherever a value enters: strength x the brightest texel, a light's intensity.
+def test_values_that_would_overflow_the_image_are_refused(work, minimal):
+    sky = _exr(work / "sky.exr", {"RGB": np.full((8, 16, 3), 2.0, np.float32)})
+    scene = raylab.Scene.load(minimal)
+    scene.set_environment(sky, strength=4.0)
+    with pytest.raises(ValueError, match="strength 1e\\+30 x the image's brightest texel 2"):
+        scene.set_environment(strength=1e30)
+    with pytest.raises(ValueError, match="over raylab's limit"):
+        scene.set_environment(strength=3e38)
+    assert scene.environment["strength"] == 4.0, "a refused edit changed the scene"
+    with pytest.raises(ValueError, match="over raylab's limit"):
+        scene.set_light("lamp", intensity=(3e38, 0, 0))
+    with pytest.raises(ValueError, match="over raylab's limit"):
+        raylab.Scene.load(minimal, env=sky, env_strength=1e25)
+    image = raylab.Renderer(scene, width=16, height=8, integrator="path").render(spp=2)
+    assert np.isfinite(image).all()
+    with pytest.raises(ValueError, match="no NaN or infinity"):
+        raylab.write_exr(work / "nan.exr", np.full((2, 2, 3), np.inf, np.float32))
+    assert not (work / "nan.exr").exists()
+
+
+def test_python_checks_what_the_command_line_checks(work, minimal):
+    scene = raylab.Scene.load(minimal)
+    with pytest.raises(ValueError, match="field of view"):
+        scene.set_camera(fov_deg=1e-30)
+    with pytest.raises(ValueError, match="rotation_deg"):
+        scene.set_environment(rotation_deg=1e30)
+    with pytest.raises(ValueError, match="exposure"):
+        raylab.write_png(work / "x.png", np.zeros((2, 2, 3), np.float32), exposure=float("nan"))
+    with pytest.raises(ValueError, match="must end in .png"):
+        raylab.write_png(work / "x.jpg", np.zeros((2, 2, 3), np.float32))
+    with pytest.raises(ValueError, match="must end in .exr"):
+        raylab.write_exr(work / "x.png", np.zeros((2, 2, 3), np.float32))
+    renderer = raylab.Renderer(scene, width=8, height=8)
+    with pytest.raises(ValueError, match="limit of 1048576"):
+        renderer.add_samples(2 ** 32)  # used to wrap to 0 and add nothing
+    with pytest.raises(ValueError, match="at least 1"):
+        renderer.add_samples(-1)
+
+
+def test_numpy_scalars_paths_and_display_images_are_taken(work, minimal):
+    scene = raylab.Scene.load(Path(minimal))
+    scene.set_material("red plastic", rho_d=np.float32(0.25), m=np.float64(0.3))
+    scene.set_material("ground", rho_d=np.array([0.1, 0.2, 0.3]))
+    assert scene.material("red plastic")["m"] == pytest.approx(0.3)
+    assert scene.material("ground")["rho_d"] == pytest.approx((0.1, 0.2, 0.3))
+    with pytest.raises(ValueError, match="not a bool"):
+        scene.set_material("ground", delta=True)
+    image = raylab.Renderer(scene, width=np.int64(12), height=np.int32(8)).render(spp=np.int64(1))
+    raylab.write_png(work / "linear.png", image)
+    display = raylab.read_png(work / "linear.png")
+    raylab.write_png(work / "again.png", display)  # uint8 is display-referred: written as it is
+    np.testing.assert_array_equal(raylab.read_png(work / "again.png"), display)
+    assert raylab.__version__.count(".") == 2
+    assert raylab.limits["max_spp"] == 1 << 20
