@@ -5,6 +5,8 @@
 // limit on the whole process would stop the device first.)
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -124,6 +126,67 @@ TEST(OutputSafety, ImagesBeyondTheDeviceLimitAreRefusedNamingTheLimit) {
     EXPECT_NE(result.output.find("--width/--height"), std::string::npos) << result.output;
   }
   EXPECT_FALSE(fs::exists(dir + "/h.exr"));
+}
+
+// Two outputs of one command on one file: refused before work, naming both options; nothing is written. The
+// heat map used to overwrite the render's own default outputs.
+TEST(OutputSafety, OutputsThatNameOneFileTwiceAreRefusedBeforeWork) {
+  const std::string dir = freshDir("twice");
+  const std::vector<std::vector<std::string>> cases = {
+      {"--heatmap", "out/minimal.png"},  // its PNG is the default --png, its EXR the default --out
+      {"--out", dir + "/a.exr", "--png", dir + "/a.png", "--heatmap", dir + "/a.png"},
+      {"--out", dir + "/a.exr", "--png", dir + "/b.png", "--heatmap", dir + "/a.png"},  // heat map's EXR is --out
+      {"--out", dir + "/a.exr", "--png", dir + "/b.png", "--heatmap", dir + "/../twice/./a.png"},
+  };
+  for (const std::vector<std::string>& outputs : cases) {
+    std::vector<std::string> args = {"render", RAYLAB_SOURCE_DIR "/assets/scenes/minimal.gltf", "--width", "8",
+                                     "--height", "8", "--spp", "1"};
+    args.insert(args.end(), outputs.begin(), outputs.end());
+    const CommandResult result = runRaylab(args, {}, dir);
+    EXPECT_EQ(result.exitCode, 2) << result.output;
+    EXPECT_NE(result.output.find("would both write"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("first sample"), std::string::npos) << "rendered before refusing: " << result.output;
+  }
+  EXPECT_TRUE(fs::is_empty(dir)) << "a refused command wrote something";
+}
+
+// A typo'd directory is not created: only directories below the working directory are.
+TEST(OutputSafety, MissingDirectoriesOutsideTheWorkingDirectoryAreNotCreated) {
+  const std::string dir = freshDir("directories");
+  const std::string outside = fs::temp_directory_path() / "raylab_output_safety_test" / "no_such_dir";
+  fs::remove_all(outside);
+  const CommandResult refused = runRaylab(
+      {"render", "--width", "8", "--height", "8", "--spp", "1", "--out", outside + "/x.exr", "--no-png"}, {}, dir);
+  EXPECT_EQ(refused.exitCode, 1) << refused.output;
+  EXPECT_NE(refused.output.find("does not exist"), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(outside));
+  const CommandResult root = runRaylab({"render", "--width", "8", "--height", "8", "--png", "/nonexistent_dir/x.png",
+                                        "--no-exr"}, {}, dir);
+  EXPECT_EQ(root.exitCode, 1) << root.output;
+  EXPECT_FALSE(fs::exists("/nonexistent_dir"));
+  const CommandResult below = runRaylab(
+      {"render", "--width", "8", "--height", "8", "--spp", "1", "--out", "results/run1/x.exr", "--no-png"}, {}, dir);
+  EXPECT_EQ(below.exitCode, 0) << below.output;
+  EXPECT_TRUE(fs::exists(dir + "/results/run1/x.exr"));
+}
+
+// Every input file goes through one reader: a FIFO, /dev/zero and a directory are refused at once (they used to
+// hang, grow without bound, or be taken as an empty script).
+TEST(OutputSafety, SpecialFilesAreRefusedAsInputsWithoutHanging) {
+  const std::string dir = freshDir("inputs");
+  const std::string fifo = dir + "/pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& input : {fifo, std::string("/dev/zero"), dir}) {
+    const std::string expected = input == dir ? "is a directory" : "not a regular file";
+    const CommandResult eval = runCommand(
+        {"/usr/bin/timeout", "20", RAYLAB_BINARY, "brdf", "eval", "--in", input, "--out", dir + "/v.csv"});
+    EXPECT_EQ(eval.exitCode, 1) << input << ": " << eval.output;
+    EXPECT_NE(eval.output.find(expected), std::string::npos) << eval.output;
+    const CommandResult view = runCommand({"/usr/bin/timeout", "20", RAYLAB_BINARY, "view", "--script", input,
+                                           "--frames", "1"});
+    EXPECT_EQ(view.exitCode, 1) << input << ": " << view.output;
+    EXPECT_NE(view.output.find(expected), std::string::npos) << view.output;
+  }
 }
 
 }  // namespace
