@@ -70,9 +70,7 @@ std::optional<float> firstHitDistance(const Scene& scene, glm::vec3 origin, glm:
   return hit->distance;
 }
 
-glm::vec3 orbitPivot(const Scene& scene, glm::vec3 position, glm::vec3 direction) {
-  const glm::vec3 d = glm::normalize(direction);
-  if (const auto t = firstHitDistance(scene, position, d)) return position + *t * d;
+SceneBounds sceneBounds(const Scene& scene) {
   glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
   const auto add = [&](glm::vec3 p) {
     low = glm::min(low, p);
@@ -85,6 +83,14 @@ glm::vec3 orbitPivot(const Scene& scene, glm::vec3 position, glm::vec3 direction
     add(sphere.center - sphere.radius);
     add(sphere.center + sphere.radius);
   }
+  if (low.x > high.x) return {};
+  return {low, high};
+}
+
+glm::vec3 orbitPivot(const Scene& scene, glm::vec3 position, glm::vec3 direction) {
+  const glm::vec3 d = glm::normalize(direction);
+  if (const auto t = firstHitDistance(scene, position, d)) return position + *t * d;
+  const auto [low, high] = sceneBounds(scene);
   const glm::vec3 center = 0.5f * (low + high);
   const float size = std::max(glm::length(high - low), 1e-3f);
   const float along = std::max(glm::dot(center - position, d), 1e-3f * size);

@@ -20,6 +20,13 @@ struct SceneHit {
 std::optional<SceneHit> firstHit(const Scene& scene, glm::vec3 origin, glm::vec3 direction);
 std::optional<float> firstHitDistance(const Scene& scene, glm::vec3 origin, glm::vec3 direction);
 
+// The axis-aligned box around every triangle and sphere (world space); both corners 0 for an empty scene.
+struct SceneBounds {
+  glm::vec3 low{0.0f};
+  glm::vec3 high{0.0f};
+};
+SceneBounds sceneBounds(const Scene& scene);
+
 // Where the camera's view ray meets the scene; when it meets nothing, the point of the view ray nearest to
 // the centre of the scene's bounds (at least a small distance ahead).
 glm::vec3 orbitPivot(const Scene& scene, glm::vec3 position, glm::vec3 direction);

@@ -14,6 +14,7 @@
 #include "brdf_params/material_params.h"
 #include "errors.h"
 #include "scene/camera_frame.h"
+#include "scene/camera_pivot.h"
 #include "scene/environment.h"
 #include "scene/load_scene.h"
 #include "scene/radiance_limits.h"
@@ -327,6 +328,13 @@ void bindScene(py::module_& m) {
           "The camera: position, target, up and the vertical field of view in degrees.")
       .def("set_camera", &setCamera, py::kw_only(), py::arg("position") = py::none(), py::arg("target") = py::none(),
            py::arg("up") = py::none(), py::arg("fov_deg") = py::none(), "Moves the camera; a degenerate view raises.")
+      .def_property_readonly(
+          "bounds",
+          [](const Scene& s) {
+            const SceneBounds bounds = sceneBounds(s);
+            return py::make_tuple(tupleOf(bounds.low), tupleOf(bounds.high));
+          },
+          "The axis-aligned box (low, high) around every triangle and sphere, in world space.")
       .def_property_readonly(
           "environment",
           [](const Scene& s) {

@@ -139,10 +139,17 @@ def test_a_turntable_frame_is_raylab_render_and_a_rerun_with_other_options_rende
     run_raylab("render", scene, "--width", 64, "--height", 48, "--spp", 4, "--seed", 2, "--out", work / "cli.exr",
                "--no-png")
     assert np.array_equal(raylab.read_exr(jobs[0].out), raylab.read_exr(str(work / "cli.exr")))
-    # Frame 2 looks at the target from the other side: the camera moved, the target stayed in view.
+    # Frame 2 looks at the scene from the other side: camera and target turned by 180 degrees about the vertical
+    # through the centre of the scene's bounds, so the scene turns in place.
     moved = raylab.Scene.load(scene)
     moved.set_camera(**jobs[2].camera)
-    assert np.allclose(moved.camera["target"], raylab.Scene.load(scene).camera["target"])
+    low, high = moved.bounds
+    centre = (np.array(low) + np.array(high)) / 2
+    original = raylab.Scene.load(scene).camera
+    for point in ("position", "target"):
+        turned = np.array(moved.camera[point]) - centre
+        before = np.array(original[point]) - centre
+        assert np.allclose(turned, [-before[0], before[1], -before[2]], atol=1e-5), point
     direct = raylab.Renderer(moved, width=64, height=48).render(spp=4, seed=2)
     assert np.array_equal(raylab.read_exr(jobs[2].out), direct)
     assert not np.array_equal(raylab.read_exr(jobs[2].out), raylab.read_exr(jobs[0].out))
@@ -168,5 +175,73 @@ def test_bad_jobs_are_refused_before_any_cluster_starts(work, source_dir):
         raylab.farm.renders([same, same], scheduler="tcp://127.0.0.1:1")
     with pytest.raises(ValueError, match=r"spp must be an integer in \[1, 1048576\], not 0"):
         raylab.farm.turntable(scene, 4, str(work / "t.exr"), spp=0)
-    with pytest.raises(ValueError, match="--frames must be at least 1"):
+    with pytest.raises(ValueError, match=r"--frames must be within 1..3600"):
         raylab.farm.turntable(scene, 0, str(work / "t.exr"))
+    with pytest.raises(ValueError, match=r"--frames must be within 1..3600"):
+        raylab.farm.turntable(scene, 10 ** 6, str(work / "t.exr"))
+    with pytest.raises(ValueError, match=r"--workers must be within 1\.\."):
+        raylab.farm.renders([raylab.farm.RenderJob(out=str(work / "e.exr"))], workers=5000)
+    for option, value in (("--workers", "5000"), ("--frames", "99999"), ("--target", "1,2")):
+        refused = subprocess.run([sys.executable, "-m", "raylab.farm", "turntable", option, value],
+                                 capture_output=True, text=True, timeout=60)
+        assert refused.returncode == 2 and option in refused.stderr, refused.stderr
+
+
+def _cells(png):
+    return sorted(png.with_suffix(".cells").glob("*/cell_*.exr"))
+
+
+def test_damaged_replaced_or_unreadable_results_are_rendered_again(work, reference):
+    """A cell truncated, replaced by another valid cell, or a manifest that is not an object: the rerun renders
+    what cannot be trusted (checked against the SHA-256 the manifest records) and the sheet is still the same."""
+    png = work / "sheet.png"
+    raylab.farm.sweep([*STUDY, "--out", png], workers=2, progress=False)
+    cells = _cells(png)
+    cells[1].write_bytes(cells[1].read_bytes()[:1000])  # truncated
+    cells[3].write_bytes(cells[4].read_bytes())  # a valid EXR, of another cell
+    report = raylab.farm.sweep([*STUDY, "--out", png], workers=2, progress=False)
+    assert (report.rendered, report.skipped) == (2, CELLS - 2)
+    assert_same_sheet(png, reference)
+    manifest = cells[0].parent / "raylab-farm.json"
+    manifest.write_text("[1, 2, 3]\n")
+    rerun = subprocess.run([sys.executable, "-m", "raylab.farm", "sweep", *STUDY, "--out", str(png), "--workers", "2",
+                            "--quiet"], capture_output=True, text=True, timeout=300)
+    assert rerun.returncode == 0, rerun.stderr
+    assert "is not a JSON object; its jobs are rendered again" in rerun.stderr
+    assert f"{CELLS} jobs rendered (0 already done)" in rerun.stdout
+    assert_same_sheet(png, reference)
+
+
+def test_a_scheduler_that_never_answers_is_an_error_not_a_hang(work, monkeypatch):
+    """A server that accepts the connection and says nothing (not a Dask scheduler): RuntimeError within the
+    farm's bound (shortened here), not a wait forever."""
+    import socket
+
+    import raylab.farm.cluster
+    monkeypatch.setattr(raylab.farm.cluster, "SCHEDULER_ANSWER_S", 2)
+    server = socket.socket()
+    server.bind(("127.0.0.1", 0))
+    server.listen(4)
+    accepted = []
+    stop = threading.Event()
+
+    def accept():
+        server.settimeout(0.2)
+        while not stop.is_set():
+            try:
+                accepted.append(server.accept()[0])
+            except OSError:
+                pass
+
+    thread = threading.Thread(target=accept, daemon=True)
+    thread.start()
+    try:
+        start = time.monotonic()
+        with pytest.raises(RuntimeError, match="did not answer|cannot reach"):
+            raylab.farm.renders([raylab.farm.RenderJob(out=str(work / "a.exr"), width=8, height=8, spp=1)],
+                                scheduler=f"tcp://127.0.0.1:{server.getsockname()[1]}", progress=False)
+        assert time.monotonic() - start < 30
+    finally:
+        stop.set()
+        thread.join()
+        server.close()

@@ -197,3 +197,32 @@ def test_numpy_scalars_paths_and_display_images_are_taken(work, minimal):
     np.testing.assert_array_equal(raylab.read_png(work / "again.png"), display)
     assert raylab.__version__.count(".") == 2
     assert raylab.limits["max_spp"] == 1 << 20
+
+
+# The farm's manifests are files a user (or a crash) may leave in any state: whatever they hold, the farm decides
+# "done" or "render again" and never raises. A fixed-seed fuzz over bytes and over JSON values of every shape.
+def test_farm_manifests_of_any_content_never_crash_and_vouch_only_for_matching_files(work):
+    import json
+    import random
+
+    from raylab.farm.jobs import MANIFEST, Job, Manifests, file_digest
+
+    cell = work / "cell_000.exr"
+    raylab.write_exr(cell, np.ones((2, 2, 4), np.float32))
+    job = Job(key="k", name="cell 0", path=cell, function=print, args=(), samples=1, description="study 0")
+    rng = random.Random(21)
+    values = [None, True, 0, -1.5, "text", [], [1, 2], {}, {"cell_000.exr": "study 0"},
+              {"cell_000.exr": {"description": "study 0"}}, {"cell_000.exr": {"description": "study 0", "sha256": 7}},
+              {"cell_000.exr": {"description": "study 0", "sha256": "0" * 64}}, {"cell_000.exr": [None]}]
+    contents = [json.dumps(v).encode() for v in values]
+    contents += [bytes(rng.randrange(256) for _ in range(rng.randrange(64))) for _ in range(200)]
+    contents += [b"\xff\xfe{", b"{" * 100000, b"[" * 100000, b'{"cell_000.exr": {"description": "study 0", "sha256": "']
+    for content in contents:
+        (work / MANIFEST).write_bytes(content)
+        assert Manifests().is_done(job) is False, content[:80]
+    # Only the entry that names the description and this file's digest vouches for it.
+    good = {"cell_000.exr": {"description": "study 0", "sha256": file_digest(cell)}}
+    (work / MANIFEST).write_text(json.dumps(good))
+    assert Manifests().is_done(job) is True
+    cell.write_bytes(cell.read_bytes()[:-1])
+    assert Manifests().is_done(job) is False

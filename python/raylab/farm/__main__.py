@@ -1,13 +1,16 @@
 """python -m raylab.farm sweep|turntable ... [--workers N | --scheduler ADDRESS]"""
 import argparse
+import math
 import sys
 
 from .. import _raylab
+from .cluster import MAX_WORKERS_PER_CORE, max_local_workers
+from .renders import MAX_FRAMES
 
 USAGE = """python -m raylab.farm sweep [raylab sweep's options] [--workers N | --scheduler ADDRESS] [--quiet]
        python -m raylab.farm turntable [SCENE] [options] [--workers N | --scheduler ADDRESS] [--quiet]"""
 
-WHERE_HELP = """  --workers N          a local cluster of N worker processes (default: one per core)
+WHERE_HELP = """  --workers N          a local cluster of N worker processes (default: one per core, at most 2 per core)
   --scheduler ADDRESS  a running Dask scheduler instead, e.g. tcp://head:8786 (`dask scheduler`, `dask worker`)
   --quiet              no progress line"""
 
@@ -27,10 +30,35 @@ raylab sweep's options (all taken as they are):
 {sweep_help}"""
 
 
+def _bounded(low, high, option):
+    """An argparse type: an integer within [low, high], else a usage error naming the option and the range."""
+    def parse(text):
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected an integer, not {text!r}") from None
+        if not low <= value <= high:
+            raise argparse.ArgumentTypeError(f"{option} must be within {low}..{high}, not {value}")
+        return value
+    return parse
+
+
+def _point(text):
+    """An argparse type: three finite numbers x,y,z."""
+    try:
+        point = tuple(float(word) for word in text.split(","))
+    except ValueError:
+        point = ()
+    if len(point) != 3 or not all(math.isfinite(p) for p in point):
+        raise argparse.ArgumentTypeError(f"expected three finite numbers x,y,z, not {text!r}")
+    return point
+
+
 def _where(parser):
     group = parser.add_argument_group("where the jobs run")
-    group.add_argument("--workers", type=int, metavar="N", help="a local cluster of N worker processes "
-                       "(default: one per core)")
+    group.add_argument("--workers", type=_bounded(1, max_local_workers(), "--workers"), metavar="N",
+                       help="a local cluster of N worker processes (default: one per core; at most "
+                            f"{MAX_WORKERS_PER_CORE} per core)")
     group.add_argument("--scheduler", metavar="ADDRESS", help="a running Dask scheduler instead, e.g. "
                        "tcp://head:8786")
     group.add_argument("--quiet", action="store_true", help="no progress line")
@@ -43,9 +71,13 @@ def _turntable_parser():
                     "360/FRAMES degrees per frame, one job per frame; frame 0 equals `raylab render` with the same "
                     "options bit for bit. A rerun renders only the frames missing or made with other options.")
     parser.add_argument("scene", nargs="?", default="", metavar="SCENE", help="a .gltf or .glb file")
-    parser.add_argument("--frames", type=int, default=36, help="number of frames (default 36)")
+    parser.add_argument("--frames", type=_bounded(1, MAX_FRAMES, "--frames"), default=36,
+                        help=f"number of frames, 1..{MAX_FRAMES} (default 36)")
     parser.add_argument("--out", default="out/turntable.exr", metavar="FILE.exr",
                         help="frames as FILE_000.exr, FILE_001.exr, ... (default out/turntable.exr)")
+    parser.add_argument("--target", type=_point, metavar="X,Y,Z",
+                        help="a point of the vertical axis the camera turns about (default: the centre of the scene's "
+                             "bounds)")
     parser.add_argument("--png", action="store_true", help="also FILE_NNN.png, tone-mapped")
     parser.add_argument("--width", type=int, default=640)
     parser.add_argument("--height", type=int, default=360)
@@ -76,7 +108,8 @@ def _turntable(arguments) -> int:
     from .renders import renders, turntable
 
     def run():
-        jobs = turntable(options.scene, options.frames, options.out, width=options.width, height=options.height,
+        jobs = turntable(options.scene, options.frames, options.out, target=options.target,
+                         width=options.width, height=options.height,
                          spp=options.spp, seed=options.seed, max_depth=options.max_depth,
                          integrator=options.integrator, backend=options.backend, env=options.env, png=options.png)
         report = renders(jobs, workers=options.workers, scheduler=options.scheduler, progress=not options.quiet,

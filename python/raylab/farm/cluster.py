@@ -2,6 +2,7 @@
 thread count on every worker, so that the workers on one machine share its cores instead of each taking all."""
 import contextlib
 import os
+import threading
 
 from distributed import Client, LocalCluster
 from distributed.diagnostics.plugin import WorkerPlugin
@@ -14,6 +15,16 @@ def usable_cores() -> int:
 
 # How long a running scheduler may be without workers before the farm gives up.
 WAIT_FOR_WORKERS_S = 60
+# How long a scheduler may take to answer the client's first message. Dask's own connect timeout covers the TCP
+# connection only: a server that accepts and never answers would hold the client forever.
+SCHEDULER_ANSWER_S = 30
+# Worker processes per usable core a local cluster may have: lavapipe already spreads one render over the cores,
+# so more workers than this only multiply memory (a typo such as --workers 2000 would exhaust it).
+MAX_WORKERS_PER_CORE = 2
+
+
+def max_local_workers() -> int:
+    return MAX_WORKERS_PER_CORE * usable_cores()
 
 
 class LavapipeThreads(WorkerPlugin):
@@ -42,19 +53,50 @@ def connect(workers=None, scheduler=None):
     if workers is not None and scheduler is not None:
         raise ValueError("raylab.farm: give --workers (a local cluster) or --scheduler (a running one), not both")
     if scheduler is not None:
-        with Client(scheduler) as client:
+        with _client_of_scheduler(scheduler) as client:
             _prepare(client)
             yield client
         return
     count = workers if workers is not None else usable_cores()
-    if count < 1:
-        raise ValueError(f"raylab.farm: --workers must be at least 1, not {count}")
+    check_workers(count)
     # dashboard_address=None: no web server (and no port to collide with another farm).
     with LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
             Client(cluster) as client:
         client.wait_for_workers(count)
         _prepare(client)
         yield client
+
+
+def check_workers(count: int):
+    """--workers N is a count of processes on this machine: at least 1, at most MAX_WORKERS_PER_CORE per core."""
+    if not 1 <= count <= max_local_workers():
+        raise ValueError(f"raylab.farm: --workers must be within 1..{max_local_workers()} ({MAX_WORKERS_PER_CORE} per "
+                         f"usable core of this machine), not {count}; spread wider with --scheduler (docs/farm.md)")
+
+
+def _client_of_scheduler(address: str) -> Client:
+    """A Client of the scheduler at `address`, or RuntimeError when it does not answer within SCHEDULER_ANSWER_S.
+    The connection is made on a daemon thread so that a silent server cannot hold the process."""
+    made = {}
+
+    def connect_once():
+        try:
+            made["client"] = Client(address, timeout=SCHEDULER_ANSWER_S)
+        except BaseException as error:  # noqa: BLE001 (handed to the caller's thread)
+            made["error"] = error
+
+    thread = threading.Thread(target=connect_once, name="raylab-farm-connect", daemon=True)
+    thread.start()
+    thread.join(SCHEDULER_ANSWER_S + 5)
+    if thread.is_alive():
+        raise RuntimeError(f"raylab.farm: {address} accepted the connection but did not answer as a Dask scheduler "
+                           f"within {SCHEDULER_ANSWER_S} s (is it one? `dask scheduler` prints its address)")
+    if "error" in made:
+        error = made["error"]
+        if isinstance(error, (OSError, TimeoutError)):
+            raise RuntimeError(f"raylab.farm: cannot reach the scheduler at {address}: {error}") from None
+        raise error
+    return made["client"]
 
 
 def _prepare(client):

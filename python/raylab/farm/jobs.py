@@ -5,8 +5,10 @@ description, and a worker killed mid-job costs only that job, which the schedule
 
 Results travel back to the client (a cell of 192x192 is 0.6 MB), so workers on other machines need no shared
 filesystem."""
+import hashlib
 import json
 import os
+import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -36,27 +38,51 @@ class Job:
 MANIFEST = "raylab-farm.json"
 
 
+def file_digest(path: Path) -> str | None:
+    """SHA-256 of a regular file's bytes; None when it is missing or not a regular file."""
+    try:
+        if not path.is_file():
+            return None
+        return hashlib.sha256(path.read_bytes()).hexdigest()
+    except OSError:
+        return None
+
+
 class Manifests:
     """The manifests of the jobs' directories, each read once and kept in memory; a finished job is added and its
-    directory's manifest rewritten atomically (a temporary file renamed over it)."""
+    directory's manifest rewritten atomically (a temporary file renamed over it). Each entry records what decided
+    the file's pixels and the SHA-256 of the file written, so that a truncated, corrupted or replaced file is
+    rendered again rather than trusted."""
 
     def __init__(self):
         self._by_directory: dict[Path, dict] = {}
 
     def _of(self, directory: Path) -> dict:
         if directory not in self._by_directory:
+            path = directory / MANIFEST
             try:
-                self._by_directory[directory] = json.loads((directory / MANIFEST).read_text())
-            except (FileNotFoundError, json.JSONDecodeError):
-                self._by_directory[directory] = {}
+                manifest = json.loads(path.read_text())
+            except FileNotFoundError:
+                manifest = {}
+            except (OSError, UnicodeDecodeError, RecursionError, json.JSONDecodeError) as error:
+                print(f"raylab.farm: {path} is not readable JSON ({error}); its jobs are rendered again",
+                      file=sys.stderr)
+                manifest = {}
+            if not isinstance(manifest, dict):
+                print(f"raylab.farm: {path} is not a JSON object; its jobs are rendered again", file=sys.stderr)
+                manifest = {}
+            self._by_directory[directory] = manifest
         return self._by_directory[directory]
 
     def is_done(self, job: "Job") -> bool:
-        return job.path.exists() and self._of(job.path.parent).get(job.path.name) == job.description
+        entry = self._of(job.path.parent).get(job.path.name)
+        return (isinstance(entry, dict) and entry.get("description") == job.description
+                and entry.get("sha256") is not None and entry.get("sha256") == file_digest(job.path))
 
-    def record(self, job: "Job"):
+    def record(self, job: "Job", written: Path):
+        """Records `job` as done by the file `written` (which is then renamed to job.path)."""
         manifest = self._of(job.path.parent)
-        manifest[job.path.name] = job.description
+        manifest[job.path.name] = {"description": job.description, "sha256": file_digest(written)}
         temporary = job.path.parent / f".{MANIFEST}.{os.getpid()}.tmp"
         temporary.write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
         os.replace(temporary, job.path.parent / MANIFEST)
@@ -112,10 +138,14 @@ def run_jobs(client, jobs: list[Job], log_path: Path, label: str = "raylab.farm"
             except Exception as error:
                 raise _naming(job, error) from error
             job.path.parent.mkdir(parents=True, exist_ok=True)
-            _raylab.write_exr(str(job.path), image)
+            # The manifest records the file before it appears (written beside, renamed last): an interruption
+            # at any point leaves either no file or a file the manifest vouches for.
+            staged = job.path.with_name(f".{job.path.stem}.staged.exr")
+            _raylab.write_exr(str(staged), image)
             if job.png is not None:
                 job.png(image, job.path)
-            manifests.record(job)
+            manifests.record(job, staged)
+            os.replace(staged, job.path)
             report.rendered += 1
             report.render_s += info["render_s"]
             report.render_cpu_s += info["render_cpu_s"]

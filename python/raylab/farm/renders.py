@@ -6,6 +6,7 @@ Scene files must be readable at the same path on every worker (a shared filesyst
 machines); results come back to the client, which writes them."""
 import hashlib
 import math
+import operator
 import threading
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
@@ -37,11 +38,19 @@ class RenderJob:
 
     def __post_init__(self):
         # `raylab render`'s ranges, checked where the job is made rather than on a worker after a cluster started.
-        for name, low, high in (("width", 1, 16384), ("height", 1, 16384), ("spp", 1, 1 << 20),
-                                ("seed", 0, (1 << 32) - 1), ("max_depth", 0, 64)):
+        limits = _raylab.limits
+        for name, low, high in (("width", 1, limits["max_image_side"]), ("height", 1, limits["max_image_side"]),
+                                ("spp", 1, limits["max_spp"]), ("seed", 0, (1 << 32) - 1),
+                                ("max_depth", 0, limits["max_depth"])):
             value = getattr(self, name)
-            if not isinstance(value, int) or not low <= value <= high:
-                raise ValueError(f"raylab.farm: {name} must be an integer in [{low}, {high}], not {value!r}")
+            try:
+                value = operator.index(value)  # int and NumPy integers; not float or bool-like strings
+            except TypeError:
+                value = None
+            if value is None or isinstance(getattr(self, name), bool) or not low <= value <= high:
+                raise ValueError(f"raylab.farm: {name} must be an integer in [{low}, {high}], "
+                                 f"not {getattr(self, name)!r}")
+            object.__setattr__(self, name, value)  # a plain int, so that descriptions compare equal
         for name, choices in (("integrator", ("auto", "slides", "path")), ("backend", ("auto", "query", "pipeline"))):
             if getattr(self, name) not in choices:
                 raise ValueError(f"raylab.farm: {name} is {', '.join(choices)}, not {getattr(self, name)!r}")
@@ -64,7 +73,7 @@ def _scene_of(job: RenderJob, loaded=None):
 
 
 def _load(job: RenderJob):
-    scene = _raylab.Scene.load(job.scene, env=job.env) if job.scene else _raylab.Scene.default()
+    scene = _raylab.Scene.load(job.scene, env=job.env or None) if job.scene else _raylab.Scene.default()
     if job.env and not job.scene:
         scene.set_environment(job.env)
     return scene
@@ -132,25 +141,41 @@ def _rotate(v, axis, angle):
     return tuple(v[i] * c + cross[i] * s + axis[i] * dot * (1 - c) for i in range(3))
 
 
-def turntable(scene: str, frames: int, out: str, **options) -> list[RenderJob]:
-    """`frames` renders of `scene` with its camera carried round its target, about the vertical (+Y, glTF's up),
-    by 360°/frames per frame: each frame's camera is frame 0's turned rigidly, so the horizon stays where it was.
-    Frame 0 is the scene's camera. `out` (FILE.exr) becomes FILE_000.exr, FILE_001.exr, ...; `options` are
-    RenderJob's (width, height, spp, seed, ...)."""
-    if frames < 1:
-        raise ValueError(f"raylab.farm turntable: --frames must be at least 1, not {frames}")
+# A turntable of 0.1 degree steps; more frames than this is a typo, not a film.
+MAX_FRAMES = 3600
+
+
+def turntable(scene: str, frames: int, out: str, *, target=None, **options) -> list[RenderJob]:
+    """`frames` renders of `scene` as on a turntable: the camera carried round the vertical axis (+Y, glTF's up)
+    through `target` by 360°/frames per frame, each frame's camera frame 0's turned rigidly (the horizon stays where
+    it was). `target` (x, y, z) defaults to the centre of the scene's bounds, so the scene turns in place; frame 0
+    is the scene's camera. `out` (FILE.exr) becomes FILE_000.exr, FILE_001.exr, ...; `options` are RenderJob's
+    (width, height, spp, seed, ...)."""
+    frames = operator.index(frames)
+    if not 1 <= frames <= MAX_FRAMES:
+        raise ValueError(f"raylab.farm turntable: --frames must be within 1..{MAX_FRAMES}, not {frames}")
     base = Path(out)
     if base.suffix != ".exr":
         raise ValueError(f"raylab.farm turntable: --out '{out}' must end in .exr")
-    camera = (_raylab.Scene.load(scene) if scene else _raylab.Scene.default()).camera
-    target = camera["target"]
-    offset = tuple(p - t for p, t in zip(camera["position"], target))
+    loaded = _raylab.Scene.load(scene) if scene else _raylab.Scene.default()
+    camera = loaded.camera
+    if target is None:
+        low, high = loaded.bounds
+        target = tuple(0.5 * (a + b) for a, b in zip(low, high))
+    target = tuple(float(t) for t in target)
+    if len(target) != 3 or not all(math.isfinite(t) for t in target):
+        raise ValueError(f"raylab.farm turntable: --target must be three finite numbers x,y,z, not {target!r}")
     vertical = (0.0, 1.0, 0.0)
+
+    def turned_point(point, angle):
+        offset = tuple(p - t for p, t in zip(point, target))
+        return tuple(t + o for t, o in zip(target, _rotate(offset, vertical, angle)))
+
     jobs = []
     for frame in range(frames):
         angle = 2 * math.pi * frame / frames
-        position = tuple(t + o for t, o in zip(target, _rotate(offset, vertical, angle)))
-        turned = {"position": position, "up": _rotate(camera["up"], vertical, angle)}
+        turned = {"position": turned_point(camera["position"], angle), "target": turned_point(camera["target"], angle),
+                  "up": _rotate(camera["up"], vertical, angle)}
         jobs.append(RenderJob(out=str(base.with_name(f"{base.stem}_{frame:03d}.exr")), scene=scene,
                               camera={} if frame == 0 else turned, **options))
     return jobs
