@@ -134,35 +134,7 @@ gpu::MaterialRecord parseMaterial(std::string_view model, std::string_view param
     throw Error(fieldWhere(where, "model") + ": unknown model '" + std::string(model) + "' (known: " + known + ")");
   }
   gpu::MaterialRecord record = defaultRecord(info->id);
-  const std::string paramsWhere = fieldWhere(where, "params");
-  std::set<std::string, std::less<>> seen;
-  for (std::string_view entry : split(params, ';')) {
-    entry = trim(entry);
-    if (entry.empty()) continue;  // "" (all defaults) and a trailing ';'
-    const std::size_t equals = entry.find('=');
-    if (equals == std::string_view::npos) {
-      throw Error(paramsWhere + ": expected name=value, got '" + std::string(entry) + "'");
-    }
-    const std::string name(trim(entry.substr(0, equals)));
-    const std::string_view valueText = trim(entry.substr(equals + 1));
-    const ParamInfo* param = findParam(*info, name);
-    // setParam's message for an unknown name lists the model's parameters.
-    if (param == nullptr) setParam(record, name, glm::vec3(0.0f), paramsWhere);
-    if (!seen.insert(name).second) throw Error(paramsWhere + ": '" + name + "' is given twice");
-    const std::vector<std::string_view> channels = split(valueText, '/');
-    glm::vec3 value(0.0f);
-    bool valid = channels.size() == 1 || (channels.size() == 3 && param->rgb);
-    for (std::size_t c = 0; valid && c < channels.size(); ++c) {
-      valid = parseFloat(trim(channels[c]), value[static_cast<int>(c)]);
-    }
-    if (!valid) {
-      const std::string expected = param->rgb ? "a number or r/g/b" : "a number";
-      throw Error(paramsWhere + ": " + name + ": expected " + expected + ", got '" + std::string(valueText) + "'");
-    }
-    if (channels.size() == 1) value = glm::vec3(value.x);  // a grey RGB value
-    // Out-of-range values are reported by setParam, with the accepted range.
-    setParam(record, name, value, paramsWhere);
-  }
+  applyParamList(record, params, fieldWhere(where, "params"));
   return record;
 }
 

@@ -35,6 +35,10 @@ BrdfCaseFile parseBrdfCases(std::string_view text, const std::string& source);
 
 // A material from a model name and a "k=v;k=v" list; unspecified parameters keep their defaults. Throws
 // Error naming `where`, the field and what was expected.
+// The backend every BRDF command and call takes unless told otherwise (`raylab brdf eval|albedo`, raylab.brdf): the
+// device, whose shaders render; `cpu` is the double-precision reference to compare against.
+inline constexpr const char* kDefaultBrdfBackend = "gpu";
+
 gpu::MaterialRecord parseMaterial(std::string_view model, std::string_view params, const std::string& where);
 
 // "x y z": three finite numbers separated by spaces. Throws Error naming `where`.

@@ -1,7 +1,12 @@
 #include "brdf_params/material_params.h"
 
+#include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <set>
 
 #include "util/error.h"
 
@@ -153,6 +158,56 @@ std::string describeModelParams(const gpu::MaterialRecord& record) {
     text += " " + std::string(param.name) + "=" + formatParamValue(getParam(record, param.name), param.rgb);
   }
   return text;
+}
+
+namespace {
+
+std::string_view trimmed(std::string_view text) {
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
+  return text;
+}
+
+bool parseNumber(std::string_view text, float& value) {
+  text = trimmed(text);
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return !text.empty() && error == std::errc() && end == text.data() + text.size() && std::isfinite(value);
+}
+
+}  // namespace
+
+void applyParamList(gpu::MaterialRecord& record, std::string_view text, const std::string& where) {
+  std::set<std::string, std::less<>> seen;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find_first_of(",;", start), text.size());
+    const std::string_view entry = trimmed(text.substr(start, end - start));
+    start = end + 1;
+    if (entry.empty()) continue;  // "" (all defaults) and a trailing separator
+    const std::size_t equals = entry.find('=');
+    if (equals == std::string_view::npos) {
+      throw Error(where + ": expected name=value, got '" + std::string(entry) + "'");
+    }
+    const std::string name(trimmed(entry.substr(0, equals)));
+    const std::string_view valueText = trimmed(entry.substr(equals + 1));
+    const ParamInfo* param = findParam(modelInfo(record.model), name);
+    if (param == nullptr) setParam(record, name, glm::vec3(0.0f), where);  // its message lists the parameters
+    if (!seen.insert(name).second) throw Error(where + ": '" + name + "' is given twice");
+    glm::vec3 value(0.0f);
+    int channels = 0;
+    bool valid = true;
+    for (std::size_t from = 0; valid && from <= valueText.size(); ++channels) {
+      const std::size_t slash = std::min(valueText.find('/', from), valueText.size());
+      valid = channels < 3 && parseNumber(valueText.substr(from, slash - from), value[channels]);
+      from = slash + 1;
+    }
+    if (!valid || !(channels == 1 || (channels == 3 && param->rgb))) {
+      const std::string expected = param->rgb ? "a number or r/g/b" : "a number";
+      throw Error(where + ": " + name + ": expected " + expected + ", got '" + std::string(valueText) + "'");
+    }
+    if (channels == 1) value = glm::vec3(value.x);  // a grey RGB value
+    setParam(record, name, value, where);  // out-of-range values: the message names the range
+  }
 }
 
 }  // namespace raylab

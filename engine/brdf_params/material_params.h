@@ -45,6 +45,12 @@ void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 valu
 // The current value of a parameter (RGB parameters return three channels, scalars a splat).
 glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name);
 
+// The one grammar of a parameter list, on every command line, in CSV files and in Python strings: `k=v` entries
+// separated by ',' or ';' (either; a CSV field uses ';' since ',' separates its columns), spaces around them
+// ignored, RGB values as r/g/b (one number: grey). Sets each on `record` (whose model is set) with setParam's
+// checks; a name given twice or a malformed value throws Error starting with `where`.
+void applyParamList(gpu::MaterialRecord& record, std::string_view text, const std::string& where);
+
 // A record of `model` with every parameter at its default.
 gpu::MaterialRecord defaultRecord(std::uint32_t model);
 

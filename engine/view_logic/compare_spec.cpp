@@ -1,25 +1,14 @@
 #include "view_logic/compare_spec.h"
 
-#include <charconv>
-#include <cmath>
 #include <cstdio>
-#include <sstream>
-#include <vector>
 
 #include "brdf_params/material_params.h"
 #include "util/error.h"
+#include "view_logic/scene_edits.h"
 
 namespace raylab {
 
 namespace {
-
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::stringstream stream(text);
-  std::string part;
-  while (std::getline(stream, part, separator)) parts.push_back(part);
-  return parts;
-}
 
 std::string materialNames(const Scene& scene) {
   std::string names;
@@ -33,27 +22,41 @@ std::string modelNames() {
   return names;
 }
 
-float parseFloat(const std::string& word, const std::string& where) {
-  float value = 0.0f;
-  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-  if (error != std::errc() || end != word.data() + word.size() || !std::isfinite(value)) {
-    throw Error(where + ": '" + word + "' is not a number", kExitUsage);
-  }
-  return value;
-}
-
 }  // namespace
 
 CompareSpec parseCompareSpec(const std::string& text, const Scene& scene, const std::string& where) {
-  const std::size_t equals = text.rfind('=', text.find(':'));
-  if (equals == std::string::npos || equals == 0) {
-    throw Error(where + ": '" + text + "' is not MATERIAL=MODEL[:k=v,...] (materials: " + materialNames(scene) + ")",
+  const std::string form = "MATERIAL=MODEL[:k=v,...] (materials: " + materialNames(scene) + "; models: " +
+                           modelNames() + ")";
+  if (text.empty()) throw Error(where + ": empty; expected " + form, kExitUsage);
+  // The material is what precedes the first '=' that is followed by a model's name and then the end, ':', ',' or
+  // ';' (material names may hold '='; "MATERIAL=MODEL;k=v" is read as meant).
+  std::size_t equals = std::string::npos, paramsAt = std::string::npos;
+  const ModelInfo* model = nullptr;
+  for (std::size_t at = text.find('='); at != std::string::npos && model == nullptr; at = text.find('=', at + 1)) {
+    for (const ModelInfo& candidate : allModels()) {
+      const std::size_t end = at + 1 + candidate.name.size();
+      if (text.compare(at + 1, candidate.name.size(), candidate.name) == 0 &&
+          (end == text.size() || text[end] == ':' || text[end] == ',' || text[end] == ';')) {
+        equals = at, model = &candidate, paramsAt = end;
+      }
+    }
+  }
+  if (model == nullptr) {
+    const std::size_t first = text.find('=');
+    if (first == std::string::npos || first == 0) throw Error(where + ": '" + text + "' is not " + form, kExitUsage);
+    const std::string name = text.substr(0, first);
+    bool known = false;
+    for (const Material& material : scene.materials) known |= material.name == name;
+    if (!known) {
+      throw Error(where + ": the scene has no material '" + name + "' (materials: " + materialNames(scene) + ")",
+                  kExitUsage);
+    }
+    const std::string rest = text.substr(first + 1);
+    throw Error(where + ": '" + rest.substr(0, rest.find_first_of(":,;")) + "' is not a BRDF model (models: " +
+                    modelNames() + ")",
                 kExitUsage);
   }
   const std::string materialName = text.substr(0, equals);
-  const std::size_t colon = text.find(':', equals);
-  const std::string modelName = text.substr(equals + 1, colon == std::string::npos ? std::string::npos : colon - equals - 1);
-
   CompareSpec spec;
   bool found = false;
   for (std::uint32_t i = 0; i < scene.materials.size(); ++i) {
@@ -67,36 +70,13 @@ CompareSpec parseCompareSpec(const std::string& text, const Scene& scene, const 
     throw Error(where + ": the scene has no material '" + materialName + "' (materials: " + materialNames(scene) + ")",
                 kExitUsage);
   }
-  const ModelInfo* model = findModel(modelName);
-  if (model == nullptr) {
-    throw Error(where + ": '" + modelName + "' is not a BRDF model (models: " + modelNames() + ")", kExitUsage);
-  }
-  const gpu::MaterialRecord& original = scene.materials[spec.material].record;
-  spec.record = defaultRecord(model->id);
-  spec.record.delta = original.delta;
-  spec.record.baseColorTexture = original.baseColorTexture;
-  spec.record.emission = original.emission;
-  if (colon != std::string::npos) {
-    for (const std::string& assignment : split(text.substr(colon + 1), ',')) {
-      const std::size_t sign = assignment.find('=');
-      if (sign == std::string::npos) {
-        throw Error(where + ": '" + assignment + "' is not k=v", kExitUsage);
-      }
-      const std::string name = assignment.substr(0, sign);
-      const std::vector<std::string> channels = split(assignment.substr(sign + 1), '/');
-      if (channels.size() != 1 && channels.size() != 3) {
-        throw Error(where + ": " + name + " takes one value or r/g/b", kExitUsage);
-      }
-      glm::vec3 value(parseFloat(channels[0], where + ": " + name));
-      if (channels.size() == 3) {
-        value = glm::vec3(value.x, parseFloat(channels[1], where + ": " + name), parseFloat(channels[2], where + ": " + name));
-      }
-      try {
-        setParam(spec.record, name, value, where);
-      } catch (const Error& error) {
-        throw Error(error.what(), kExitUsage);
-      }
-    }
+  // From the material as it is, switched as the panel switches it: its colours carry over to the other model.
+  spec.record = scene.materials[spec.material].record;
+  switchModel(spec.record, model->id);
+  try {
+    if (paramsAt < text.size()) applyParamList(spec.record, std::string_view(text).substr(paramsAt + 1), where);
+  } catch (const Error& error) {
+    throw Error(error.what(), kExitUsage);
   }
   return spec;
 }

@@ -14,8 +14,9 @@ struct CompareSpec {
   gpu::MaterialRecord record;   // what that material becomes on the right side
 };
 
-// Parses `text` against `scene`: the material by name, the model, and parameters (k=v, RGB as r/g/b, separated
-// by commas) over the model's defaults, delta and the base-colour texture kept from the material. Throws
+// Parses `text` against `scene`: the material by name, the model, and parameters (applyParamList's k=v list, ','
+// or ';' between them) over the material switched to that model as the panel switches it (switchModel: its
+// colours and roughness carried over). Throws
 // Error(kExitUsage) starting with `where`, listing the materials, models or parameters that exist.
 CompareSpec parseCompareSpec(const std::string& text, const Scene& scene, const std::string& where);
 

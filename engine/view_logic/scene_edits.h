@@ -13,8 +13,10 @@ namespace raylab {
 Material* findMaterial(Scene& scene, std::string_view name);
 Light* findLight(Scene& scene, std::string_view name);
 
-// Sets the model; every parameter of the new model whose current value is outside its range (or not finite)
-// takes its default, so a record that came from another model is always valid.
+// Sets the model, carrying over what means the same thing in both (docs/viewer.md, "Switching models"): the
+// diffuse colour, the specular colour where it weighs a lobe, the roughness through the Beckmann slope and its
+// stated equivalents (Blinn-Phong s = 2/alpha^2 - 2, Phong s a quarter of that, Ashikhmin-Shirley nu and nv per
+// axis), eta, delta, the texture and the emission; every other parameter takes the new model's default.
 void switchModel(gpu::MaterialRecord& record, std::uint32_t model);
 
 }  // namespace raylab

@@ -159,7 +159,7 @@ void bindBrdf(py::module_& parent) {
       },
       py::arg("model"), py::arg("params") = py::none(), py::kw_only(), py::arg("wi"), py::arg("wo"),
       py::arg("n") = std::vector<float>{0.0f, 0.0f, 1.0f}, py::arg("t") = std::vector<float>{1.0f, 0.0f, 0.0f},
-      py::arg("backend") = "gpu", py::arg("device") = py::none(),
+      py::arg("backend") = kDefaultBrdfBackend, py::arg("device") = py::none(),
       "f(wi, wo), RGB, shape (N, 3), for directions wi, wo (N, 3) pointing away from the surface, in the frame of "
       "the normal n and tangent hint t (each (3,) or (N, 3)); the values of `raylab brdf eval` on the same rows. "
       "0 below the horizon and for glass (a delta BSDF).");
@@ -174,7 +174,7 @@ void bindBrdf(py::module_& parent) {
       },
       py::arg("model"), py::arg("params") = py::none(), py::kw_only(), py::arg("wi"), py::arg("wo"),
       py::arg("n") = std::vector<float>{0.0f, 0.0f, 1.0f}, py::arg("t") = std::vector<float>{1.0f, 0.0f, 0.0f},
-      py::arg("backend") = "gpu", py::arg("device") = py::none(),
+      py::arg("backend") = kDefaultBrdfBackend, py::arg("device") = py::none(),
       "The density per unit solid angle with which sample() draws wi given wo, shape (N,).");
   m.def(
       "sample",
@@ -246,7 +246,7 @@ void bindBrdf(py::module_& parent) {
         return out;
       },
       py::arg("model"), py::arg("params") = py::none(), py::kw_only(), py::arg("wo"), py::arg("u"),
-      py::arg("backend") = "gpu", py::arg("device") = py::none(),
+      py::arg("backend") = kDefaultBrdfBackend, py::arg("device") = py::none(),
       "Importance samples wi given wo, one direction (3,) or one per row (N, 3), in the local frame (z the normal), "
       "for each row of u (N, 3) in [0, 1)^3: a dict of wi (N, 3), f (N, 3) = f(wi, wo) and pdf (N,); pdf 0 for a "
       "failed sample. N may be 0.");
@@ -294,7 +294,7 @@ void bindBrdf(py::module_& parent) {
         return out;
       },
       py::arg("model"), py::arg("params") = py::none(), py::kw_only(), py::arg("theta_deg"), py::arg("phi_deg") = 0.0,
-      py::arg("backend") = "cpu", py::arg("samples") = 1u << 18, py::arg("seed") = 1u, py::arg("tolerance") = 1e-6,
+      py::arg("backend") = kDefaultBrdfBackend, py::arg("samples") = 1u << 18, py::arg("seed") = 1u, py::arg("tolerance") = 1e-6,
       py::arg("device") = py::none(),
       "Directional albedo a(wo) = integral of f cos_i dwi at the outgoing angles theta_deg (N,) (azimuth phi_deg), as "
       "`raylab brdf albedo`: the reference's adaptive cubature (cpu, to `tolerance`) or the mean of f cos / pdf over "

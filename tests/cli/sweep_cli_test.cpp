@@ -160,7 +160,9 @@ TEST(SweepCliTest, UsageErrorsExitTwoAndNameTheOptionAndRange) {
       {with({"--set", "rho_s"}), {"--set", "K=V"}},
       {with({"--set"}), {"--set"}},
       {with({"--set", "rho_s=nan"}), {"--set rho_s", "nan"}},
-      {with({"--out", "sheet.exr"}), {"--out", ".png"}},
+      {with({"--out", "sheet.tif"}), {"--out", ".exr"}},
+      {with({"--png", "sheet.exr"}), {"--png", ".png"}},
+      {with({"--out", "a.png", "--png", "b.png"}), {"--out", "is the EXR"}},
       {with({"--cell", "0"}), {"--cell"}},
       {with({"--tonemap", "filmic"}), {"--tonemap"}},
   };
@@ -174,6 +176,31 @@ TEST(SweepCliTest, UsageErrorsExitTwoAndNameTheOptionAndRange) {
           << command << ": no '" << text << "' in\n" << result.output;
     }
   }
+}
+
+// --out is the EXR and --png the PNG, as in `raylab render`; either alone puts the other beside it, and the old
+// spelling --out FILE.png is still taken as --png.
+TEST(SweepCliTest, OutIsTheExrAndPngThePngAsInRender) {
+  const std::string dir = scratchDir() + "/spellings";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::vector<std::string> sweep = {"sweep", "--model", "lambert", "--param", "rho_d", "--steps", "2",
+                                          "--cell", "16", "--spp", "1"};
+  const auto run = [&](std::vector<std::string> outputs) {
+    std::vector<std::string> args = sweep;
+    args.insert(args.end(), outputs.begin(), outputs.end());
+    const CommandResult result = runRaylab(args);
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+  };
+  run({"--out", dir + "/a.exr"});
+  EXPECT_TRUE(fs::exists(dir + "/a.exr") && fs::exists(dir + "/a.png"));
+  run({"--png", dir + "/b.png"});
+  EXPECT_TRUE(fs::exists(dir + "/b.exr") && fs::exists(dir + "/b.png"));
+  run({"--out", dir + "/c.exr", "--png", dir + "/d.png"});
+  EXPECT_TRUE(fs::exists(dir + "/c.exr") && fs::exists(dir + "/d.png") && !fs::exists(dir + "/c.png"));
+  run({"--out", dir + "/e.png"});
+  EXPECT_TRUE(fs::exists(dir + "/e.exr") && fs::exists(dir + "/e.png"));
+  EXPECT_EQ(readExr(dir + "/a.exr").rgba, readExr(dir + "/e.exr").rgba);
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ STUDY = ["--model", "ward", "--param", "alpha_x", "--steps", str(CELLS), "--cell
 def reference(tmp_path_factory, run_raylab):
     """The single-process sheet: `raylab sweep` itself."""
     png = tmp_path_factory.mktemp("reference") / "sheet.png"
-    run_raylab("sweep", *STUDY, "--out", png)
+    run_raylab("sweep", *STUDY, "--png", png)
     return png
 
 

@@ -12,6 +12,7 @@
 #include "util/error.h"
 #include "view_logic/compare_spec.h"
 #include "view_logic/pointer.h"
+#include "view_logic/scene_edits.h"
 #include "view_logic/script.h"
 
 namespace raylab::test {
@@ -52,10 +53,76 @@ TEST(CompareSpecTest, MistakesListWhatExists) {
   EXPECT_NE(usageError("ground=wardish").find("lambert, phong"), std::string::npos);
   EXPECT_NE(usageError("ground=ward:beta=2").find("alpha_x"), std::string::npos);
   EXPECT_NE(usageError("ground=ward:alpha_x=-1").find("alpha_x"), std::string::npos);
-  EXPECT_NE(usageError("ground=ward:alpha_x=inf").find("not a number"), std::string::npos);
+  EXPECT_NE(usageError("ground=ward:alpha_x=inf").find("expected a number"), std::string::npos);
   EXPECT_NE(usageError("ground=ward:rho_d=1/2").find("r/g/b"), std::string::npos);
   EXPECT_NE(usageError("ground").find("MATERIAL=MODEL"), std::string::npos);
-  EXPECT_NE(usageError("ground=ward:alpha_x").find("k=v"), std::string::npos);
+  EXPECT_NE(usageError("ground=ward:alpha_x").find("name=value"), std::string::npos);
+  EXPECT_NE(usageError("").find("empty"), std::string::npos);
+  EXPECT_NE(usageError("ground=ward:alpha_x=0.1;alpha_x=0.2").find("given twice"), std::string::npos);
+}
+
+// One grammar of parameter lists everywhere: ',' or ';' between entries; "MATERIAL=MODEL;k=v" is read as meant
+// (it used to look for a material named "red plastic=ward;alpha_x").
+TEST(CompareSpecTest, ParameterListsTakeCommasOrSemicolons) {
+  const glm::vec3 alphas(0.3f, 0.1f, 0.0f);
+  for (const char* text : {"red plastic=ward:alpha_x=0.3,alpha_y=0.1", "red plastic=ward:alpha_x=0.3;alpha_y=0.1",
+                           "red plastic=ward;alpha_x=0.3; alpha_y=0.1", "red plastic=ward, alpha_x=0.3 ,alpha_y=0.1;"}) {
+    const CompareSpec spec = parseCompareSpec(text, twoMaterials(), "x");
+    EXPECT_EQ(spec.material, 1u) << text;
+    EXPECT_EQ(getParam(spec.record, "alpha_x").x, alphas.x) << text;
+    EXPECT_EQ(getParam(spec.record, "alpha_y").x, alphas.y) << text;
+  }
+  Scene scene = twoMaterials();
+  scene.materials.push_back({"a=b", lambertMaterial(glm::vec3(0.5f))});  // a name holding '='
+  EXPECT_EQ(parseCompareSpec("a=b=phong", scene, "x").material, 2u);
+}
+
+// A model switch carries over what means the same thing: the colours (a red Cook-Torrance ball stays red as
+// Ashikhmin-Shirley, whose Rs is a Fresnel F0 and takes its default), the roughness through the stated
+// equivalences (round trips return), eta between Cook-Torrance and glass; the rest takes the model's defaults.
+TEST(CompareSpecTest, ModelSwitchesCarryOverWhatMeansTheSameThing) {
+  gpu::MaterialRecord record = defaultRecord(gpu::kModelCookTorrance);
+  setParam(record, "rho_d", glm::vec3(0.6f, 0.1f, 0.1f), "t");
+  setParam(record, "rho_s", glm::vec3(1.0f), "t");
+  setParam(record, "m", glm::vec3(0.3f), "t");
+  setParam(record, "eta", glm::vec3(1.8f), "t");
+  record.delta = 0.25f;
+  gpu::MaterialRecord as = record;
+  switchModel(as, gpu::kModelAshikhminShirley);
+  EXPECT_EQ(getParam(as, "Rd"), glm::vec3(0.6f, 0.1f, 0.1f));
+  EXPECT_EQ(getParam(as, "Rs"), getParam(defaultRecord(gpu::kModelAshikhminShirley), "Rs"));
+  EXPECT_NEAR(getParam(as, "nu").x, 2.0f / (0.3f * 0.3f) - 2.0f, 1e-3f);
+  EXPECT_EQ(as.delta, 0.25f);
+  gpu::MaterialRecord ward = record;
+  switchModel(ward, gpu::kModelWard);
+  EXPECT_EQ(getParam(ward, "rho_s"), glm::vec3(1.0f));
+  EXPECT_EQ(getParam(ward, "alpha_x"), glm::vec3(0.3f));
+  switchModel(ward, gpu::kModelCookTorrance);
+  EXPECT_NEAR(getParam(ward, "m").x, 0.3f, 1e-6f);
+  EXPECT_EQ(getParam(ward, "eta"), getParam(defaultRecord(gpu::kModelCookTorrance), "eta")) << "Ward has no eta";
+  gpu::MaterialRecord phong = defaultRecord(gpu::kModelPhong);
+  setParam(phong, "s", glm::vec3(50.0f), "t");
+  gpu::MaterialRecord there = phong;
+  for (const std::uint32_t model : {gpu::kModelBlinnPhong, gpu::kModelWardGmd, gpu::kModelAshikhminShirley,
+                                    gpu::kModelCookTorrance, gpu::kModelPhong}) {
+    switchModel(there, model);
+  }
+  EXPECT_NEAR(getParam(there, "s").x, 50.0f, 0.01f) << "Phong -> ... -> Phong keeps the exponent";
+  gpu::MaterialRecord glass = record;
+  switchModel(glass, gpu::kModelGlass);
+  EXPECT_EQ(getParam(glass, "eta"), glm::vec3(1.8f));
+  // Every switch leaves a record whose every parameter is in range, whatever came before.
+  for (const ModelInfo& from : allModels()) {
+    for (const ModelInfo& to : allModels()) {
+      gpu::MaterialRecord r = defaultRecord(from.id);
+      for (const ParamInfo& p : from.params) setParam(r, p.name, glm::vec3(p.max), "t");
+      switchModel(r, to.id);
+      for (const ParamInfo& p : to.params) {
+        const glm::vec3 v = getParam(r, p.name);
+        EXPECT_TRUE(v.x >= p.min && v.x <= p.max) << from.name << " -> " << to.name << ": " << p.name;
+      }
+    }
+  }
 }
 
 TEST(CompareScriptTest, ComparisonEventsParseAndTheirMistakesNameTheLine) {

@@ -75,7 +75,7 @@ struct AlbedoOptions {
   std::string params;
   std::string angles = "0,10,20,30,40,50,60,70,80,85,88,89,89.9";
   float phiDeg = 0.0f;
-  std::string backend = "cpu";
+  std::string backend = kDefaultBrdfBackend;
   std::uint32_t samples = 1u << 18;
   std::uint32_t seed = 1;
   float tolerance = 1e-6f;
@@ -166,11 +166,11 @@ void addBrdfAlbedoCommand(CLI::App& brdf) {
       [o] { return albedo(*o); });
   addText(command, "--model", o->model, "MODEL",
           "lambert, phong, blinnphong, cooktorrance, ward, ward_duer, ward_gmd, ashikhmin_shirley");
-  addText(command, "--params", o->params, "'k=v;k=v'",
+  addText(command, "--params", o->params, "'k=v,k=v'",
           "parameters as in `raylab brdf eval` (RGB as r/g/b); others take defaults");
   addText(command, "--angles", o->angles, "LIST", "theta_o in degrees, in [0, 90), comma-separated", true);
   addNumber(command, "--phi", o->phiDeg, "azimuth of wo from the tangent, degrees", 0.0f, 360.0f);
-  addChoice(command, "--backend", o->backend, {"cpu", "gpu"}, "reference cubature or device Monte Carlo");
+  addChoice(command, "--backend", o->backend, {"gpu", "cpu"}, "device Monte Carlo or reference cubature");
   addCount(command, "--samples", o->samples, "gpu backend: samples per angle", 1, 1u << 22);
   addCount(command, "--seed", o->seed, "gpu backend: seed of the uniform numbers", 0, UINT32_MAX);
   addNumber(command, "--tolerance", o->tolerance, "cpu backend: relative tolerance of the cubature", 1e-12f, 1e-2f);

@@ -25,7 +25,7 @@ namespace {
 struct EvalOptions {
   std::string inPath;
   std::string outPath;
-  std::string backend = "gpu";
+  std::string backend = kDefaultBrdfBackend;
   std::optional<std::uint32_t> device;
 };
 

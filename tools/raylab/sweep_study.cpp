@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "brdf_params/material_params.h"
@@ -136,9 +137,10 @@ const char* const kSweepDescription =
     "render a parameter sweep of one BRDF model into a labelled contact sheet\n"
     "Renders a row of spheres sweeping one parameter of one BRDF model, like the figures of the original "
     "slides, into a contact sheet: one cell per value, each labelled, under a title line. Every sphere is seen "
-    "and lit from the same directions (upper front left, one point light). Writes FILE.png (tone-mapped, with "
-    "text) and FILE.exr beside it (linear cells, no text). --gltf writes the sweep's scene instead (and also "
-    "renders when --out is given). Models and parameters are those of `raylab brdf` and docs/brdfs.md.";
+    "and lit from the same directions (upper front left, one point light). Writes the sheet as FILE.exr (--out: "
+    "linear cells, no text) and FILE.png (--png: tone-mapped, with text), as `raylab render` names its outputs; "
+    "either given alone puts the other beside it. --gltf writes the sweep's scene instead (and also renders "
+    "when --out or --png is given). Models and parameters are those of `raylab brdf` and docs/brdfs.md.";
 
 void addSweepOptions(CLI::App* command, SweepOptions& o) {
   addText(command, "--model", o.model, "M", "the BRDF model: " + modelNames());
@@ -150,7 +152,9 @@ void addSweepOptions(CLI::App* command, SweepOptions& o) {
   addFlag(command, "--linear", o.linear, "linear steps (default for the others)");
   addTextList(command, "--set", o.sets, "K=V",
               "another parameter of the model, RGB as r/g/b (repeatable), e.g. --set rho_d=0.2/0.1/0.05");
-  addText(command, "--out", o.pngPath, "FILE.png", "the contact sheet (default out/sweep_<model>_<param>.png)");
+  addText(command, "--out", o.exrPath, "FILE.exr",
+          "the linear contact sheet (default out/sweep_<model>_<param>.exr; a .png name here is taken as --png)");
+  addText(command, "--png", o.pngPath, "FILE.png", "the labelled, tone-mapped contact sheet (default: beside --out)");
   addText(command, "--gltf", o.gltfPath, "FILE.gltf", "write the sweep's scene as glTF 2.0");
   addCount(command, "--cell", o.cell, "cell size in pixels", 16, 2048);
   addCount(command, "--spp", o.spp, "samples per pixel", 1, 1u << 16);
@@ -168,21 +172,29 @@ std::string parseSweepArguments(const std::vector<std::string>& arguments, Sweep
 SweepStudy planSweep(SweepOptions o, SweepOutputs outputs) {
   const SweepSpec spec = validatedSpec(o);
   SweepStudy study;
-  study.render = o.gltfPath.empty() || !o.pngPath.empty();
-  if (o.pngPath.empty()) o.pngPath = "out/sweep_" + spec.model + "_" + spec.param + ".png";
-  if (std::filesystem::path(o.pngPath).extension() != ".png") {
-    usage("--out: '" + o.pngPath + "' must end in .png (the EXR is written beside it)");
+  // `--out FILE.png` was the sheet's PNG before --out became the EXR everywhere: still accepted as --png.
+  if (std::filesystem::path(o.exrPath).extension() == ".png") {
+    if (!o.pngPath.empty()) usage("--out '" + o.exrPath + "' and --png: --out is the EXR (FILE.exr)");
+    o.pngPath = std::exchange(o.exrPath, "");
   }
+  study.render = o.gltfPath.empty() || !o.pngPath.empty() || !o.exrPath.empty();
+  const std::string stem = "out/sweep_" + spec.model + "_" + spec.param;
+  if (o.exrPath.empty()) {
+    o.exrPath = o.pngPath.empty() ? stem + ".exr" : std::filesystem::path(o.pngPath).replace_extension(".exr").string();
+  }
+  if (o.pngPath.empty()) o.pngPath = std::filesystem::path(o.exrPath).replace_extension(".png").string();
+  if (std::filesystem::path(o.exrPath).extension() != ".exr") usage("--out: '" + o.exrPath + "' must end in .exr");
+  if (std::filesystem::path(o.pngPath).extension() != ".png") usage("--png: '" + o.pngPath + "' must end in .png");
   if (!o.gltfPath.empty() && std::filesystem::path(o.gltfPath).extension() != ".gltf") {
     usage("--gltf: '" + o.gltfPath + "' must end in .gltf");
   }
   study.pngPath = o.pngPath;
-  study.exrPath = std::filesystem::path(o.pngPath).replace_extension(".exr").string();
+  study.exrPath = o.exrPath;
   const bool writes = outputs == SweepOutputs::CheckAndWrite;
   if (writes && !o.gltfPath.empty()) checkOutputPath(o.gltfPath, "--gltf");
   if (writes && study.render) {
-    checkOutputPath(study.pngPath, "--out");
-    checkOutputPath(study.exrPath, "--out (the EXR beside it)");
+    checkOutputPath(study.exrPath, "--out");
+    checkOutputPath(study.pngPath, "--png");
   }
   study.sweep = makeSweepScene(spec);
   study.options = o;

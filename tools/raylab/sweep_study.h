@@ -32,7 +32,8 @@ struct SweepOptions {
   bool log = false;
   bool linear = false;
   std::vector<std::string> sets;
-  std::string pngPath;
+  std::string exrPath;  // --out: the linear sheet, as `raylab render --out`
+  std::string pngPath;  // --png: the labelled, tone-mapped sheet
   std::string gltfPath;
   std::uint32_t cell = 192;  // labels as long as "alpha_x = 0.00139" fit at twice the font's size
   std::uint32_t spp = 64;

@@ -360,7 +360,7 @@ def sweep_scene(raylab, name, arguments, statistic, trend, why):
 def gallery_figure(raylab, name, arguments, directory):
     """docs/gallery.md's contact sheet of a sweep (the PNG only: the page shows no EXR)."""
     png = os.path.join(directory, name[len("sweep_"):] + ".png")
-    subprocess.run([raylab, "sweep"] + arguments + ["--out", png], check=True, stdout=subprocess.DEVNULL)
+    subprocess.run([raylab, "sweep"] + arguments + ["--png", png], check=True, stdout=subprocess.DEVNULL)
     os.remove(png[:-len(".png")] + ".exr")
     return png
 

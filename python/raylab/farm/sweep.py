@@ -10,7 +10,7 @@ from .. import _raylab
 from .jobs import FarmReport, Job, Stopwatch, farm
 
 # Options that name the sheet's files: the client writes those; workers, maybe on other machines, never see them.
-_OUTPUT_OPTIONS = ("--out", "--gltf")
+_OUTPUT_OPTIONS = ("--out", "--png", "--gltf")
 
 # Per worker process: the studies it has rendered cells of, each holding the process's device and the cell scene
 # (made at its first cell). One job at a time uses them.
@@ -19,7 +19,7 @@ _device_lock = threading.Lock()
 
 
 def worker_arguments(arguments: list[str]) -> tuple[str, ...]:
-    """The sweep's options without the output files (--out FILE, --out=FILE, --gltf ...)."""
+    """The sweep's options without the output files (--out FILE, --out=FILE, --png, --gltf ...)."""
     kept, skip = [], False
     for argument in arguments:
         if skip:
