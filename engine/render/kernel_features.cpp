@@ -20,6 +20,7 @@ KernelFeatures featuresOf(const Scene& scene) {
       case gpu::kLightPoint: f.features |= gpu::kFeaturePointLights; break;
       case gpu::kLightSpot: f.features |= gpu::kFeatureSpotLights; break;
       case gpu::kLightDirectional: f.features |= gpu::kFeatureDirectionalLights; break;
+      case gpu::kLightHeadlight: f.features |= gpu::kFeatureHeadlight; break;
       default: break;
     }
   }
@@ -53,7 +54,8 @@ std::string describe(const KernelFeatures& features) {
                               {gpu::kFeatureSpotLights, "spot lights"},
                               {gpu::kFeatureDirectionalLights, "directional lights"},
                               {gpu::kFeatureTextures, "base-colour textures"},
-                              {gpu::kFeatureEnvironment, "environment image"}};
+                              {gpu::kFeatureEnvironment, "environment image"},
+                              {gpu::kFeatureHeadlight, "headlight"}};
   std::string list;
   for (const Named& named : kNames) {
     if (features.features & named.bit) list += (list.empty() ? "" : ", ") + std::string(named.name);

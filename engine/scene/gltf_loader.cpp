@@ -477,8 +477,9 @@ class SceneBuilder {
     document_.warnOnce("no camera", "has no perspective camera; framing the scene's bounds from +Z (docs/scenes.md)");
   }
 
-  // A white point light above and to the left of the camera, bright enough that white Lambert at the
-  // scene's centre facing it has radiance 0.8.
+  // A white headlight above and to the left of the camera, carried with it (kLightHeadlight), so that whatever
+  // the camera is turned to is lit; bright enough that white Lambert at the scene's centre facing it has radiance
+  // 0.8 from the loaded camera.
   void addDefaultLight() {
     const Bounds bounds = sceneBounds();
     const glm::vec3 center = 0.5f * (bounds.low + bounds.high);
@@ -487,12 +488,14 @@ class SceneBuilder {
     const glm::vec3 u = glm::normalize(glm::cross(w, camera.up));
     const glm::vec3 v = glm::cross(u, w);
     const float distance = std::max(glm::length(center - camera.position), 1e-3f);
-    const glm::vec3 position = camera.position + 0.3f * distance * (v - u);
-    const float toCenter = glm::length(center - position);
+    const glm::vec3 offset(-0.3f * distance, 0.3f * distance, 0.0f);  // along right, up, forward
+    const float toCenter = glm::length(center - (camera.position + offset.x * u + offset.y * v));
     const float intensity = kDefaultLightRadiance * kPi * toCenter * toCenter;
-    scene_.lights.push_back({"default", pointLight(position, glm::vec3(intensity))});
-    document_.warnOnce("no lights", "has no KHR_lights_punctual lights; added a default point light near the camera "
-                                    "(docs/scenes.md)");
+    gpu::LightRecord record = pointLight(offset, glm::vec3(intensity));
+    record.type = gpu::kLightHeadlight;
+    scene_.lights.push_back({"default", record});
+    document_.warnOnce("no lights", "has no KHR_lights_punctual lights; added a default headlight, carried with the "
+                                    "camera (docs/scenes.md)");
   }
 
   Document& document_;

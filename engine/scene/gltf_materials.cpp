@@ -287,6 +287,15 @@ void convertMaterials(Document& document, Scene& scene) {
     }
     record.emission = emittedRadiance(material, materialJson, document.label + ": " +
                                                                   describe("material", int(i), material.name));
+    // The factor multiplies the texture (glTF 2.0, 3.9.3): without the texture's texels, applying the factor
+    // alone would make the whole surface glow (labels as bright as their background), and such an "emitter"
+    // would also suppress the default light. Until emissive textures are read, such a material emits nothing.
+    if (material.emissiveTexture.index >= 0 && glm::any(glm::greaterThan(record.emission, glm::vec3(0.0f)))) {
+      record.emission = glm::vec3(0.0f);
+      document.warnOnce("emissive texture", describe("material", int(i), material.name) +
+                                                " has an emissive texture, which raylab does not read yet: it "
+                                                "emits nothing (docs/scenes.md)");
+    }
     if (!material.alphaMode.empty() && material.alphaMode != "OPAQUE") {
       document.ignore("alpha modes MASK and BLEND (surfaces are opaque)");
     }

@@ -44,4 +44,13 @@ bool hasEmissiveGeometry(const Scene& scene) {
   return false;
 }
 
+const char* lightTypeName(std::uint32_t type) {
+  switch (type) {
+    case gpu::kLightSpot: return "spot";
+    case gpu::kLightDirectional: return "directional";
+    case gpu::kLightHeadlight: return "headlight";
+    default: return "point";
+  }
+}
+
 }  // namespace raylab

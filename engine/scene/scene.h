@@ -88,6 +88,8 @@ bool emits(const Scene& scene, std::uint32_t material);
 bool hasEmissiveGeometry(const Scene& scene);
 
 gpu::LightRecord pointLight(glm::vec3 position, glm::vec3 intensity);
+// "point", "spot", "directional" or "headlight": the names `raylab info`, Python and the docs use.
+const char* lightTypeName(std::uint32_t type);
 
 std::uint64_t triangleCount(const Scene& scene);
 

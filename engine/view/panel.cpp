@@ -60,7 +60,9 @@ bool drawLight(Light& light, float dragSpeed) {
       changed = true;
     }
   } else {
-    changed |= ImGui::DragFloat3("position", &record.position.x, dragSpeed);
+    // A headlight's position is its offset along the camera's right, up and forward axes.
+    changed |= ImGui::DragFloat3(record.type == gpu::kLightHeadlight ? "offset" : "position", &record.position.x,
+                                 dragSpeed);
   }
   const float brightest = std::max({record.intensity.x, record.intensity.y, record.intensity.z});
   const float intensitySpeed = 0.01f * std::max(1.0f, brightest);

@@ -67,10 +67,6 @@ py::tuple tupleOf(glm::vec3 v) { return py::make_tuple(v.x, v.y, v.z); }
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-const char* lightTypeName(std::uint32_t type) {
-  return type == gpu::kLightSpot ? "spot" : type == gpu::kLightDirectional ? "directional" : "point";
-}
-
 py::dict lightDict(const Light& light) {
   const gpu::LightRecord& r = light.record;
   py::dict d;
@@ -78,7 +74,7 @@ py::dict lightDict(const Light& light) {
   d["type"] = lightTypeName(r.type);
   d["intensity"] = tupleOf(r.intensity);
   if (r.type != gpu::kLightDirectional) d["position"] = tupleOf(r.position);
-  if (r.type != gpu::kLightPoint) d["direction"] = tupleOf(r.direction);
+  if (r.type == gpu::kLightSpot || r.type == gpu::kLightDirectional) d["direction"] = tupleOf(r.direction);
   if (r.type == gpu::kLightSpot) {
     d["cone_deg"] = py::make_tuple(std::acos(double(r.cosInner)) / kDegree, std::acos(double(r.cosOuter)) / kDegree);
   }
@@ -113,7 +109,9 @@ void setLight(Scene& scene, const std::string& name, const std::optional<Vec3>& 
     record.position = *position;
   }
   if (direction) {
-    if (record.type == gpu::kLightPoint) usage(where + " is a point light, which has no direction");
+    if (record.type != gpu::kLightSpot && record.type != gpu::kLightDirectional) {
+      usage(where + " is a " + lightTypeName(record.type) + " light, which has no direction");
+    }
     if (!finite(*direction) || !(glm::length(*direction) > 0.0f)) {
       usage(where + ": the direction must be a finite, non-zero vector");
     }

@@ -14,13 +14,22 @@
 #include "kernel/surface.glsl"
 #include "kernel/textures.glsl"
 
+// A light as it is in the world this frame: a headlight's offset in the camera's frame made a position.
+LightRecord placedLight(LightRecord light) {
+  if (featureEnabled(kFeatureHeadlight) && light.type == kLightHeadlight) {
+    light.position = params.cameraOrigin + light.position.x * normalize(params.cameraRight) +
+                     light.position.y * normalize(params.cameraUp) + light.position.z * params.cameraForward;
+  }
+  return light;
+}
+
 // sum_k f_r(w_k, w_o) E_k over every light, with a shadow ray each. ng faces the viewer's side.
 vec3 directLighting(vec3 position, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material,
                     inout Payload p) {
   vec3 sum = vec3(0.0);
   const vec3 shadowOrigin = offsetRayOrigin(position, ng);
   for (uint k = 0u; k < params.lightCount; ++k) {
-    const LightSample light = sampleLight(lights[k], position);
+    const LightSample light = sampleLight(placedLight(lights[k]), position);
     // Light below the geometric surface cannot reach this side, whatever the shading normal says.
     if (dot(light.wi, ng) <= 0.0) continue;
     const vec3 wiLocal = toLocal(frame, light.wi);

@@ -22,6 +22,7 @@ RL_CONST uint kFeatureSpotLights = 8;
 RL_CONST uint kFeatureDirectionalLights = 16;
 RL_CONST uint kFeatureTextures = 32;         // base-colour textures
 RL_CONST uint kFeatureEnvironment = 64;      // an environment image (else the background is uniform)
+RL_CONST uint kFeatureHeadlight = 128;       // a point light that moves with the camera (the default light)
 
 // kSpecGlassFresnel values. Exact is the contract's; Schlick trades accuracy for speed (docs/performance.md).
 RL_CONST uint kFresnelExact = 0;

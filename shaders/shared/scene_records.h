@@ -118,6 +118,9 @@ RL_CHECK_SIZE(TextureRecord, 16);
 RL_CONST uint kLightPoint = 0;
 RL_CONST uint kLightSpot = 1;
 RL_CONST uint kLightDirectional = 2;
+// A point light carried with the camera: `position` is its offset along the camera's right, up and forward axes
+// (world units), so it lights whatever the camera sees. Files without lights get one (docs/scenes.md).
+RL_CONST uint kLightHeadlight = 3;
 
 struct LightRecord {
   vec3 position;

@@ -31,14 +31,6 @@ std::string describeMaterial(const gpu::MaterialRecord& record) {
   return text;
 }
 
-const char* lightType(std::uint32_t type) {
-  switch (type) {
-    case gpu::kLightSpot: return "spot";
-    case gpu::kLightDirectional: return "directional";
-    default: return "point";
-  }
-}
-
 int info(const SceneRequest& request) {
   const Scene scene = loadScene(request);
   std::printf("scene: %s\n", scene.name.c_str());
@@ -57,9 +49,15 @@ int info(const SceneRequest& request) {
   std::printf("lights (%zu):\n", scene.lights.size());
   for (const Light& light : scene.lights) {
     const gpu::LightRecord& r = light.record;
-    std::printf("  '%s': %s", light.name.c_str(), lightType(r.type));
-    if (r.type != gpu::kLightDirectional) std::printf(" at %s", formatVector(r.position).c_str());
-    if (r.type != gpu::kLightPoint) std::printf(" towards %s", formatVector(r.direction).c_str());
+    std::printf("  '%s': %s", light.name.c_str(), lightTypeName(r.type));
+    if (r.type == gpu::kLightHeadlight) {
+      std::printf(" carried with the camera, offset %s (right, up, forward)", formatVector(r.position).c_str());
+    } else if (r.type != gpu::kLightDirectional) {
+      std::printf(" at %s", formatVector(r.position).c_str());
+    }
+    if (r.type == gpu::kLightSpot || r.type == gpu::kLightDirectional) {
+      std::printf(" towards %s", formatVector(r.direction).c_str());
+    }
     std::printf(", intensity %s", formatVector(r.intensity).c_str());
     if (r.type == gpu::kLightSpot) {
       std::printf(", cone %.1f to %.1f degrees", std::acos(double(r.cosInner)) * 180.0 / 3.14159265358979,

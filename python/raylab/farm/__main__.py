@@ -78,7 +78,9 @@ def _turntable_parser():
     parser.add_argument("--target", type=_point, metavar="X,Y,Z",
                         help="a point of the vertical axis the camera turns about (default: the centre of the scene's "
                              "bounds)")
-    parser.add_argument("--png", action="store_true", help="also FILE_NNN.png, tone-mapped")
+    parser.add_argument("--png", nargs="?", const=True, default=False, metavar="FILE.png",
+                        help="also tone-mapped frames FILE_000.png, ... as `raylab render --png FILE.png` (alone: "
+                             "beside the EXRs)")
     parser.add_argument("--width", type=int, default=640)
     parser.add_argument("--height", type=int, default=360)
     parser.add_argument("--spp", type=int, default=16, help="samples per pixel (default 16)")

@@ -34,7 +34,9 @@ class RenderJob:
     env: str = ""
     camera: dict = field(default_factory=dict)
     materials: dict = field(default_factory=dict)
-    png: bool = False  # also a tone-mapped PNG beside the EXR (clamp, exposure 0, as `raylab render`)
+    # Also a tone-mapped PNG (clamp, exposure 0, as `raylab render --png`): at this path, or True for one beside
+    # the EXR.
+    png: bool | str = False
 
     def __post_init__(self):
         # `raylab render`'s ranges, checked where the job is made rather than on a worker after a cluster started.
@@ -90,8 +92,15 @@ def render_job(job: RenderJob):
         return image, clock.info()
 
 
-def _write_png(image, exr: Path):
-    _raylab.write_png(str(exr.with_suffix(".png")), image)
+def png_path(job: RenderJob) -> Path | None:
+    """Where the job's PNG goes: its own path, beside the EXR (png=True), or nowhere."""
+    if not job.png:
+        return None
+    return Path(job.out).with_suffix(".png") if job.png is True else Path(job.png)
+
+
+def _png_writer(path: Path):
+    return lambda image, exr: _raylab.write_png(str(path), image)
 
 
 def renders(render_jobs: list[RenderJob], *, workers=None, scheduler=None, client=None, progress=True,
@@ -107,7 +116,8 @@ def renders(render_jobs: list[RenderJob], *, workers=None, scheduler=None, clien
         out = Path(job.out)
         identity = hashlib.sha1(f"{out.resolve()}|{job.description()}".encode()).hexdigest()[:16]
         jobs.append(Job(key=f"raylab-render-{identity}", name=out.name, path=out, function=render_job, args=(job,),
-                        samples=job.spp, description=job.description(), png=_write_png if job.png else None))
+                        samples=job.spp, description=job.description(),
+                        png=_png_writer(png_path(job)) if job.png else None))
     if len({job.path.resolve() for job in jobs}) != len(jobs):
         raise ValueError("raylab.farm: two jobs write the same file")
     return farm(jobs, jobs[0].path.parent / "jobs.log", label, client=client, workers=workers, scheduler=scheduler,
@@ -171,11 +181,16 @@ def turntable(scene: str, frames: int, out: str, *, target=None, **options) -> l
         offset = tuple(p - t for p, t in zip(point, target))
         return tuple(t + o for t, o in zip(target, _rotate(offset, vertical, angle)))
 
+    png = options.pop("png", False)
+    if isinstance(png, str) and png and Path(png).suffix != ".png":
+        raise ValueError(f"raylab.farm turntable: --png '{png}' must end in .png")
     jobs = []
     for frame in range(frames):
         angle = 2 * math.pi * frame / frames
         turned = {"position": turned_point(camera["position"], angle), "target": turned_point(camera["target"], angle),
                   "up": _rotate(camera["up"], vertical, angle)}
+        frame_png = str(Path(png).with_name(f"{Path(png).stem}_{frame:03d}.png")) if isinstance(png, str) and png \
+            else bool(png)
         jobs.append(RenderJob(out=str(base.with_name(f"{base.stem}_{frame:03d}.exr")), scene=scene,
-                              camera={} if frame == 0 else turned, **options))
+                              camera={} if frame == 0 else turned, png=frame_png, **options))
     return jobs
