@@ -24,10 +24,14 @@ layout(set = 0, binding = kBindingHeatmap, scalar) buffer Heatmap { float clockT
 #include "kernel/raygen.glsl"
 #include "kernel/lane_utilisation.glsl"
 
-// Ticks from `start` to `end` of the 64-bit clock, read as two 32-bit halves (no 64-bit integers needed).
+// Ticks from `start` to `end` of the 64-bit clock, read as two 32-bit halves (no 64-bit integers needed). A
+// thread moved to another core may read a clock behind the first: such a negative span is no measurement, 0,
+// not the 1.8e19 its unsigned difference would wrap to.
 float ticksBetween(uvec2 start, uvec2 end) {
+  const uint borrow = end.x < start.x ? 1u : 0u;
+  if (end.y < start.y || end.y - start.y < borrow) return 0.0;
   const uint low = end.x - start.x;
-  const uint high = end.y - start.y - (end.x < start.x ? 1u : 0u);
+  const uint high = end.y - start.y - borrow;
   return float(high) * 4294967296.0 + float(low);
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
+#include <vector>
 
 #include "image/image.h"
 
@@ -12,8 +14,11 @@ namespace raylab {
 
 namespace {
 
-// A perceptually ordered ramp: black-blue, blue, green, yellow, white (piecewise linear in sRGB).
-std::array<std::uint8_t, 3> ramp(double t) {
+}  // namespace
+
+// A perceptually ordered ramp: black-blue, blue, green, yellow, white (piecewise linear in sRGB); display.comp's
+// falseColour holds the same stops.
+std::array<std::uint8_t, 3> falseColour(double t) {
   static constexpr std::array<std::array<double, 3>, 5> kStops = {
       {{0.05, 0.03, 0.20}, {0.10, 0.30, 0.85}, {0.10, 0.75, 0.35}, {0.95, 0.85, 0.10}, {1.00, 1.00, 1.00}}};
   t = std::clamp(t, 0.0, 1.0) * double(kStops.size() - 1);
@@ -25,6 +30,8 @@ std::array<std::uint8_t, 3> ramp(double t) {
   }
   return rgb;
 }
+
+namespace {
 
 constexpr int kTextScale = 2;
 constexpr int kBarHeight = 14;
@@ -49,7 +56,16 @@ CostScale costScale(const CostMap& map) {
     return double(sorted[rank]);
   };
   scale.median = std::max(quantile(0.5), 1e-30);
-  scale.top = std::max(quantile(0.99), scale.median);
+  const double q25 = std::max(quantile(0.25), 1e-30), q75 = std::max(quantile(0.75), scale.median);
+  const double fence = q75 * std::pow(q75 / q25, 1.5);
+  std::vector<float> kept;
+  kept.reserve(sorted.size());
+  for (const float ticks : map.ticks) {
+    if (double(ticks) <= fence) kept.push_back(ticks);
+  }
+  scale.beyondFence = map.ticks.size() - kept.size();
+  sorted = std::move(kept);
+  scale.top = sorted.empty() ? scale.median : std::max(quantile(0.99), scale.median);
   return scale;
 }
 
@@ -63,7 +79,7 @@ Rgb8Image costMapImage(const CostMap& map, const std::string& title) {
   image.rgb.assign(std::size_t(image.width) * image.height * 3, 24);
   for (std::uint32_t y = 0; y < map.height; ++y) {
     for (std::uint32_t x = 0; x < map.width; ++x) {
-      const auto rgb = ramp(map.ticks[std::size_t(y) * map.width + x] / scale.top);
+      const auto rgb = falseColour(map.ticks[std::size_t(y) * map.width + x] / scale.top);
       std::copy(rgb.begin(), rgb.end(), image.rgb.begin() + std::ptrdiff_t((std::size_t(y) * image.width + x) * 3));
     }
   }
@@ -72,25 +88,35 @@ Rgb8Image costMapImage(const CostMap& map, const std::string& title) {
   const int barTop = int(map.height) + 4;
   for (int y = barTop; y < barTop + kBarHeight; ++y) {
     for (int x = barLeft; x < barRight; ++x) {
-      const auto rgb = ramp(double(x - barLeft) / double(barRight - barLeft - 1));
+      const auto rgb = falseColour(double(x - barLeft) / double(barRight - barLeft - 1));
       std::copy(rgb.begin(), rgb.end(), image.rgb.begin() + std::ptrdiff_t((std::size_t(y) * image.width + x) * 3));
     }
   }
   const int labelTop = barTop + kBarHeight + 4;
   const std::array<std::uint8_t, 3> white{230, 230, 230};
+  // Each label centred under its value, kept inside the image; a label that would overlap one already drawn
+  // (the median close to 0 or to the top) is left out rather than printed over it.
+  std::vector<std::pair<int, int>> taken;
   const auto label = [&](double ticks, const std::string& text) {
     const int centre = barLeft + int(std::lround(std::clamp(ticks / scale.top, 0.0, 1.0) * (barRight - barLeft - 1)));
-    const int x = std::clamp(centre - textWidth(text, kTextScale) / 2, 0,
-                             std::max(0, int(image.width) - textWidth(text, kTextScale)));
+    const int width = textWidth(text, kTextScale);
+    const int x = std::clamp(centre - width / 2, 0, std::max(0, int(image.width) - width));
+    for (const auto& [left, right] : taken) {
+      if (x < right + 6 && x + width + 6 > left) return;
+    }
+    taken.emplace_back(x, x + width);
     drawText(image, x, labelTop, text, kTextScale, white, 0, int(image.width));
   };
-  label(0.0, "0");
-  label(scale.median, "median");
   char top[48];
   std::snprintf(top, sizeof top, "%.1fx", scale.top / scale.median);
+  label(0.0, "0");
   label(scale.top, top);
-  const std::string caption = title + ": median " + formatTicks(scale.median) + " ticks/sample";
-  drawText(image, 8, labelTop + line + 4, caption, kTextScale, white, 0, int(image.width));
+  label(scale.median, "median");
+  std::string caption = title + ": median " + formatTicks(scale.median) + " ticks/sample";
+  if (scale.beyondFence > 0) caption += ", " + std::to_string(scale.beyondFence) + " px preempted";
+  // The caption at the labels' size when it fits, else at half that: never cut off at the image's edge.
+  const int captionScale = textWidth(caption, kTextScale) <= int(image.width) - 16 ? kTextScale : 1;
+  drawText(image, 8, labelTop + line + 4, caption, captionScale, white, 0, int(image.width));
   return image;
 }
 

@@ -2,6 +2,7 @@
 // bar and its scale, and the raw values as an OpenEXR image beside it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -10,18 +11,25 @@
 
 namespace raylab {
 
+// The false-colour ramp of cost maps and of the viewer's difference view: dark blue (0) through blue, green and
+// yellow to white (1 and above), 8-bit sRGB.
+std::array<std::uint8_t, 3> falseColour(double t);
+
 struct CostMap {
   std::uint32_t width = 0;
   std::uint32_t height = 0;
   std::vector<float> ticks;  // device clock ticks per sample, per pixel, top row first
 };
 
-// Statistics the legend prints: the median cost and the scale's top (the 99th percentile). Both are ranks, not
-// means: a lavapipe thread the OS preempts mid-dispatch leaves a few pixels with huge clock readings, which would
-// dominate a mean and wash out the map.
+// Statistics the legend prints: the median cost and the scale's top. Both are ranks, not means: a lavapipe thread
+// the OS preempts mid-dispatch leaves pixels with huge clock readings (on a busy machine, more than 1% of them),
+// which would dominate a mean and wash out the map. The top is the 99th percentile of the pixels inside a Tukey
+// fence on the logarithm of the cost (above q75 x (q75/q25)^1.5 is preempted, not expensive); those beyond are
+// counted and drawn as the top colour.
 struct CostScale {
   double median = 0.0;
   double top = 0.0;
+  std::size_t beyondFence = 0;  // pixels above the fence
 };
 CostScale costScale(const CostMap& map);
 

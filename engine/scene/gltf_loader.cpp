@@ -379,7 +379,11 @@ class SceneBuilder {
       for (const CameraUse& use : cameras_) {
         const std::string& ownName = model_.cameras[std::size_t(use.camera)].name;
         const std::string& nodeName = model_.nodes[std::size_t(use.node)].name;
-        if (chosen == nullptr && (ownName == options_.camera || nodeName == options_.camera)) chosen = &use;
+        // By the camera's name, its node's, or the name raylab lists it under ("camera 1" for an unnamed one).
+        if (chosen == nullptr &&
+            (ownName == options_.camera || nodeName == options_.camera || cameraName(use) == options_.camera)) {
+          chosen = &use;
+        }
         known += (known.empty() ? "'" : ", '") + cameraName(use) + "'";
       }
       if (chosen == nullptr) {
@@ -525,6 +529,12 @@ Scene loadGltfFile(const std::string& path, const GltfOptions& options) {
   std::string extension = file.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".gltf" && extension != ".glb") {
+    throw Error(path + ": raylab reads glTF 2.0 scenes (.gltf or .glb), not '" +
+                    (extension.empty() ? std::string("a file without an extension") : extension) +
+                    "' (convert it, e.g. with Blender or assimp export)",
+                kExitUsage);
+  }
   const std::string bytes = gltf::readSceneFile(path, gltf::kMaxSceneFileBytes);
   const std::string directory = file.parent_path().empty() ? "." : file.parent_path().string();
   Document document = gltf::parseDocument(bytes, directory, path, extension == ".glb", options.allowOutsideUris);

@@ -1,8 +1,10 @@
 #include "view/display.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "image/heatmap.h"
 #include "shared/display.h"
 #include "util/error.h"
 #include "vk/commands.h"
@@ -237,6 +239,37 @@ void recordToSwapchain(VkCommandBuffer cmd, const Display& display, const Displa
   } else {
     blit(cmd, display, source.image, size, target, targetSize, glm::ivec2(area.offset.x, area.offset.y));
   }
+}
+
+Rgb8Image displayedImage(const Image& a, const Image* b, const DisplaySettings& settings) {
+  Rgb8Image shown;
+  shown.width = a.width;
+  shown.height = a.height;
+  shown.rgb.resize(std::size_t(a.width) * a.height * 3);
+  const DisplayMode mode = b == nullptr ? DisplayMode::kImage : settings.mode;
+  const std::uint32_t splitColumn = static_cast<std::uint32_t>(std::lround(settings.divider * float(a.width)));
+  const float scale = settings.differenceScale > 0.0f ? settings.differenceScale : 1.0f;
+  for (std::uint32_t y = 0; y < a.height; ++y) {
+    for (std::uint32_t x = 0; x < a.width; ++x) {
+      std::uint8_t* out = &shown.rgb[(std::size_t(y) * a.width + x) * 3];
+      if (mode == DisplayMode::kDifference || mode == DisplayMode::kRelativeDifference) {
+        const glm::vec3 left(a.at(x, y)), right(b->at(x, y));
+        const glm::vec3 difference = glm::abs(left - right);
+        float value = std::max({difference.r, difference.g, difference.b});
+        if (mode == DisplayMode::kRelativeDifference) {
+          const float level = std::max({left.r, left.g, left.b, right.r, right.g, right.b});
+          value = level > 0.0f ? value / level : 0.0f;
+        }
+        const auto rgb = falseColour(double(value / scale));
+        std::copy(rgb.begin(), rgb.end(), out);
+      } else {
+        const bool compared = mode == DisplayMode::kSplit && x >= splitColumn;
+        const glm::vec4 radiance = compared ? b->at(x, y) : a.at(x, y);
+        for (int c = 0; c < 3; ++c) out[c] = toDisplay(radiance[c], settings.exposure, settings.toneMap);
+      }
+    }
+  }
+  return shown;
 }
 
 }  // namespace raylab

@@ -53,6 +53,10 @@ struct DisplaySettings {
   bool operator==(const DisplaySettings&) const = default;
 };
 
+// What the display pass shows for accumulated images `a` and (comparing) `b` under `settings`, computed on the
+// host as display.comp computes it: the screenshot's PNG "as displayed" (split, difference or the image).
+Rgb8Image displayedImage(const Image& a, const Image* b, const DisplaySettings& settings);
+
 // Images in `format` (the swapchain's: B8G8R8A8 or R8G8B8A8, UNORM or SRGB). Throws Error when the device
 // cannot copy and blit it.
 Display createDisplay(const Device& device, VkFormat format, glm::uvec2 extent);

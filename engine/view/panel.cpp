@@ -73,9 +73,10 @@ bool drawLight(Light& light, float dragSpeed) {
 
 }  // namespace
 
+// Two lines: one line held everything and the panel's width clipped its end (the rays per second).
 std::string statusLine(const PanelStatus& status) {
   char text[160];
-  std::snprintf(text, sizeof text, "%u spp  %ux%u%s  %.1f ms/frame  %s", status.spp, status.traceExtent.x,
+  std::snprintf(text, sizeof text, "%u spp  %ux%u%s\n%.1f ms/frame  %s", status.spp, status.traceExtent.x,
                 status.traceExtent.y, status.preview ? " (preview)" : "", status.frameMs,
                 formatCount(status.raysPerSecond, "rays/s").c_str());
   return text;

@@ -157,7 +157,9 @@ void run(Viewer& v) {
   }
   if (!v.options.quiet) {
     updateStatus(v);
-    std::printf("raylab view: %u frames, %s\n", v.frameIndex, statusLine(v.status).c_str());
+    std::string line = statusLine(v.status);
+    std::replace(line.begin(), line.end(), '\n', ' ');  // the panel's two lines, on one
+    std::printf("raylab view: %u frames, %s\n", v.frameIndex, line.c_str());
   }
 }
 

@@ -26,7 +26,16 @@ void saveScreenshot(Viewer& v, const std::string& exrPath, const std::string& pn
   waitForFrames(v);
   const Image image = readImage(v.device, v.renderer);
   writeExr(exrPath, image);
-  writePng(pngPath, image, v.settings.exposure, v.settings.toneMap);
+  if (v.comparison.active) {
+    // The PNG as displayed: the split or the difference view, as display.comp draws it (the EXR is side A; the
+    // comparison's own files follow).
+    checkFinite(image, pngPath);
+    const Image compared = readImage(v.device, v.comparison.renderer);
+    const Rgb8Image shown = displayedImage(image, &compared, displaySettings(v));
+    writePngRgb8(pngPath, shown.width, shown.height, shown.rgb.data());
+  } else {
+    writePng(pngPath, image, v.settings.exposure, v.settings.toneMap);
+  }
   v.status.message = "saved " + exrPath + " (" + std::to_string(v.scheduler.sampleIndex) + " spp)";
   if (!v.options.quiet) std::printf("wrote %s\nwrote %s\n", exrPath.c_str(), pngPath.c_str());
   saveComparison(v, exrPath);
@@ -98,7 +107,15 @@ void applyScriptEvents(Viewer& v) {
       case ScriptAction::kSetEnvironmentRotation:
         applyToScene(event, v.scene);
         break;
-      case ScriptAction::kResize:
+      case ScriptAction::kResize: {
+        // Checked before the window grows: a window the device cannot render would still allocate its
+        // swapchain and display images (gigabytes at 16384 x 16384) before the renderer refused it.
+        const std::uint64_t pixels = std::uint64_t(event.value.x) * std::uint64_t(event.value.y);
+        if (pixels > maxImagePixels(v.device)) {
+          throw Error(event.where + ": resize to " + std::to_string(std::uint32_t(event.value.x)) + "x" +
+                      std::to_string(std::uint32_t(event.value.y)) + " is more than the device renders (" +
+                      std::to_string(maxImagePixels(v.device)) + " pixels, its maxStorageBufferRange)");
+        }
         // The size of the image, as --width/--height: the panel's strip comes on top.
         if (!requestWindowSize(v.window, std::uint32_t(event.value.x) + (v.panelShown ? kPanelWidth : 0u),
                                std::uint32_t(event.value.y), kResizeTimeout)) {
@@ -106,6 +123,7 @@ void applyScriptEvents(Viewer& v) {
                       std::to_string(int(kResizeTimeout)) + " s");
         }
         break;
+      }
       case ScriptAction::kScreenshot: {
         const ScreenshotPaths paths = screenshotPaths(event.name, "");
         saveScreenshot(v, paths.exr, paths.png);

@@ -39,7 +39,8 @@ void completeFrame(Viewer& v, FrameSlot& slot) {
   const auto* stats = static_cast<const gpu::RayStats*>(slot.rayStats.mapped);
   const std::uint64_t rays = std::uint64_t(stats->primaryRays) + stats->shadowRays + stats->secondaryRays;
   v.recentRays.emplace_back(now, rays);
-  while (!v.recentRays.empty() && v.recentRays.front().first < now - kRaysWindow) v.recentRays.pop_front();
+  // Two entries at least, however old: frames slower than the window still give a rate (not "0 rays/s").
+  while (v.recentRays.size() > 2 && v.recentRays.front().first < now - kRaysWindow) v.recentRays.pop_front();
 
   FrameRecord record;
   record.submitSeconds = slot.submitSeconds;

@@ -24,12 +24,13 @@ void installKernel(Viewer& v) {
     return;
   }
   waitForFrames(v);  // the old pipeline may still be running
-  char message[160];
-  std::snprintf(message, sizeof message, "kernel rebuilt in %.2f s%s: %s", v.build->seconds,
-                v.build->warmedUp ? " (compiled off-queue)" : "", describe(v.build->kernel).c_str());
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.2f s", v.build->seconds);
+  const std::string message = std::string("kernel rebuilt in ") + seconds +
+                              (v.build->warmedUp ? " (compiled off-queue)" : "") + ": " + describe(v.build->kernel);
   swapRenderPipelines(v.device, v.renderer, pipelines, v.build->kernel);
   v.status.message = message;
-  if (!v.options.quiet) std::printf("raylab view: %s\n", message);
+  if (!v.options.quiet) std::printf("raylab view: %s\n", message.c_str());
   v.build.reset();
   v.kernelState = KernelState::kFirstDispatch;
   v.pending.accumulation = true;

@@ -91,6 +91,12 @@ void setUp(Viewer& v) {
   renderSettings.kernel = v.needed;
   renderSettings.backend = chooseBackend(v.device, v.options.backend);
   v.renderer = createRenderer(v.device, v.gpuScene, v.scene, renderSettings);
+  // The driver compiles the kernel at its first dispatch: seconds on a CPU device, with the window still blank.
+  if (!v.options.quiet) {
+    std::printf("raylab view: compiling the render kernel (%s); the first frame waits for it\n",
+                describe(v.renderer.kernel).c_str());
+    std::fflush(stdout);
+  }
   v.status.device = std::string(renderSettings.backend == Backend::kPipeline ? "ray-tracing pipeline" : "ray queries") +
                     " on " + v.device.report.name;
 

@@ -321,7 +321,8 @@ TEST(CompareWindowTest, BadCompareTextListsWhatExistsAndExitsTwoBeforeAnyWindow)
       {"red plastic=wardish", "lambert, phong, blinnphong"},
       {"red plastic=ward:alpha_x=-1", "alpha_x"},
       {"red plastic=ward:beta=1", "alpha_x"},
-      {"red plastic=ward:alpha_x=nan", "not a number"},
+      {"red plastic=ward:alpha_x=nan", "expected a number"},
+      {"", "empty"},
       {"red plastic", "MATERIAL=MODEL"},
   };
   for (const auto& c : cases) {

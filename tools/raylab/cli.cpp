@@ -105,6 +105,16 @@ CLI::Validator finiteRange(float min, float max) {
 }
 
 // A whole number in [min, max], refusing signs and fractions (CLI::Range alone accepts what strtoul wraps).
+// A text option given as '' (an empty --env, --compare, --out): refused, since it would otherwise silently mean
+// the option's default.
+CLI::Validator nonEmpty() {
+  return CLI::Validator(
+      [](std::string& input) -> std::string {
+        return input.empty() ? "is empty (leave the option out for its default)" : std::string();
+      },
+      "");
+}
+
 CLI::Validator countRange(std::uint32_t min, std::uint32_t max) {
   const std::string range = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
   return CLI::Validator(
@@ -164,6 +174,43 @@ std::unique_ptr<CLI::App> makeRoot() {
   return app;
 }
 
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// " (did you mean --spp?)" for the first word of `words` that looks like an option `command` does not have and is
+// close to one it has (two edits, or a third of its letters when longer); empty otherwise.
+std::string didYouMean(const CLI::App& command, const std::vector<std::string>& words) {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : command.get_options()) {
+    for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+  }
+  for (std::string word : words) {
+    if (word.rfind("--", 0) != 0) continue;
+    word = word.substr(0, word.find('='));
+    if (std::find(names.begin(), names.end(), word) != names.end()) continue;
+    std::string best;
+    std::size_t bestDistance = std::max<std::size_t>(2, (word.size() - 2) / 3) + 1;  // up to 2 edits, more if long
+    for (const std::string& name : names) {
+      const std::size_t distance = editDistance(word, name);
+      if (distance < bestDistance) best = name, bestDistance = distance;
+    }
+    return best.empty() ? "" : " (did you mean " + best + "?)";
+  }
+  return "";
+}
+
 // One prefix per message: "raylab render: ...". Messages that already name their command keep their own.
 void printError(const std::string& command, const std::string& message) {
   if (message.rfind("raylab ", 0) == 0) {
@@ -204,6 +251,7 @@ int parseAndRun(CLI::App& app, int argc, char** argv) {
         return kExitUsage;
       }
     }
+    message += didYouMean(*command, std::vector<std::string>(argv + 1, argv + argc));
     std::fprintf(stderr, "%s: %s (see `%s --help`)\n", path.c_str(), message.c_str(), path.c_str());
     return kExitUsage;
   }
@@ -227,7 +275,7 @@ std::string parseCommandOptions(const std::string& path, const std::string& desc
   } catch (const CLI::CallForHelp&) {
     return app.help();
   } catch (const CLI::ParseError& error) {
-    throw Error(path + ": " + error.what() + " (see `" + path + " --help`)", kExitUsage);
+    throw Error(path + ": " + error.what() + didYouMean(app, arguments) + " (see `" + path + " --help`)", kExitUsage);
   }
   return "";
 }
@@ -293,13 +341,13 @@ void addFlag(CLI::App* command, const std::string& name, bool& value, const std:
 
 void addText(CLI::App* command, const std::string& name, std::string& value, const std::string& metavar,
              const std::string& help, bool showDefault) {
-  CLI::Option* option = command->add_option(name, value, help)->type_name(metavar);
+  CLI::Option* option = command->add_option(name, value, help)->type_name(metavar)->check(nonEmpty());
   if (showDefault) option->capture_default_str();
 }
 
 void addTextList(CLI::App* command, const std::string& name, std::vector<std::string>& values,
                  const std::string& metavar, const std::string& help) {
-  command->add_option(name, values, help)->type_name(metavar);
+  command->add_option(name, values, help)->type_name(metavar)->check(nonEmpty());
 }
 
 void addCount(CLI::App* command, const std::string& name, std::uint32_t& value, const std::string& help,
@@ -337,7 +385,7 @@ void addChoice(CLI::App* command, const std::string& name, std::string& value, c
 }
 
 void addPositional(CLI::App* command, const std::string& name, std::string& value, const std::string& help) {
-  command->add_option(name, value, help)->type_name("FILE");
+  command->add_option(name, value, help)->type_name("FILE")->check(nonEmpty());
 }
 
 void addDeviceOption(CLI::App* command, std::optional<std::uint32_t>& device) {
