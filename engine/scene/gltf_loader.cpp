@@ -521,10 +521,10 @@ Scene loadDocument(Document& document, const std::string& name, const GltfOption
 }  // namespace
 
 Scene loadGltfFile(const std::string& path, const GltfOptions& options) {
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(path, error);
-  if (!std::filesystem::exists(status)) throw Error(path + ": no such file");
-  if (std::filesystem::is_directory(status)) throw Error(path + ": is a directory, not a glTF file");
+  // What the file is comes first (a FIFO or /dev/zero is refused as such), then what its name says it holds.
+  FileProblem problem{};
+  const std::string refused = inputFileProblem(path, gltf::kMaxSceneFileBytes, &problem);
+  if (!refused.empty()) throw FileError(path + ": " + refused, problem);
   const std::filesystem::path file(path);
   std::string extension = file.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),

@@ -110,7 +110,15 @@ TEST(AtomicOutput, ARewrittenFileIsReplacedWholeAndKeepsOrdinaryPermissions) {
 
 TEST(AtomicOutput, CheckOutputPathRefusesDevicesDirectoriesAndUnwritableFolders) {
   const fs::path dir = freshDir("check");
+  // Missing directories are created below the working directory only (a typo must not create /nonexistent_dir).
+  const fs::path here = fs::current_path();
+  fs::current_path(dir);
   EXPECT_NO_THROW(checkOutputPath((dir / "new" / "deeper" / "x.exr").string(), "--out"));
+  EXPECT_NO_THROW(checkOutputPath("relative/x.exr", "--out"));
+  fs::current_path(here);
+  EXPECT_TRUE(fs::is_directory(dir / "new" / "deeper") && fs::is_directory(dir / "relative"));
+  EXPECT_THROW(checkOutputPath((dir / "elsewhere" / "x.exr").string(), "--out"), Error);
+  EXPECT_FALSE(fs::exists(dir / "elsewhere"));
   for (const std::string& bad : {std::string("/dev/full"), dir.string(), std::string("/proc/raylab/x.exr")}) {
     try {
       checkOutputPath(bad, "--png");

@@ -159,11 +159,20 @@ TEST(GltfScene, WithoutLightsADefaultLightIsAddedWithOneWarning) {
   WarningCapture warnings;
   const Scene scene = b.load();
   ASSERT_EQ(scene.lights.size(), 1u);
-  EXPECT_EQ(warnings.count("has no KHR_lights_punctual lights; added a default point light"), 1);
+  EXPECT_EQ(warnings.count("has no KHR_lights_punctual lights; added a default headlight"), 1);
   const gpu::LightRecord& light = scene.lights[0].record;
-  EXPECT_EQ(light.type, gpu::kLightPoint);
+  // A headlight: its position is an offset along the camera's right, up and forward axes (above and left).
+  EXPECT_EQ(light.type, gpu::kLightHeadlight);
+  EXPECT_LT(light.position.x, 0.0f);
+  EXPECT_GT(light.position.y, 0.0f);
+  EXPECT_EQ(light.position.z, 0.0f);
+  const Camera& camera = scene.camera;
+  const glm::vec3 w = glm::normalize(camera.target - camera.position);
+  const glm::vec3 u = glm::normalize(glm::cross(w, camera.up));
+  const glm::vec3 v = glm::cross(u, w);
+  const glm::vec3 world = camera.position + light.position.x * u + light.position.y * v;
   // Documented: white Lambert at the bounds' centre, facing the light, has radiance 0.8.
-  const float distance = glm::length(light.position - glm::vec3(0.5f, 0.5f, 0.0f));
+  const float distance = glm::length(world - glm::vec3(0.5f, 0.5f, 0.0f));
   EXPECT_NEAR(light.intensity.r / (distance * distance) / 3.14159265f, 0.8f, 1e-4f);
 }
 

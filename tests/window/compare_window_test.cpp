@@ -120,6 +120,11 @@ TEST(CompareWindowTest, SplitViewSidesEqualTheRendersOfTheSceneAndOfTheSwitchedM
       << "right of the divider shows the scene, not the switched material";
   EXPECT_GT(meanDifference(scenePng, switchedPng, divider + 3, int(kWidth), 0), 3.0)
       << "the two models look alike: the test would not see a wrong side";
+
+  // The screenshot's PNG is as displayed: the split view, each side its render's PNG (it used to be side A only).
+  const Rgb8 screenshot = readPng(shot + ".png");
+  EXPECT_LT(meanDifference(screenshot, scenePng, 0, divider, 0), 0.01) << "the screenshot's left side";
+  EXPECT_LT(meanDifference(screenshot, switchedPng, divider, int(kWidth), 0), 0.01) << "the screenshot's right side";
 }
 
 TEST(CompareWindowTest, DifferenceOfIdenticalSidesIsExactlyZeroInTheImageAndTheWindow) {
@@ -137,6 +142,9 @@ TEST(CompareWindowTest, DifferenceOfIdenticalSidesIsExactlyZeroInTheImageAndTheW
   EXPECT_EQ(readExr(shot + ".exr").rgba, readExr(shot + "_compare.exr").rgba);
   const Rgb8 window = readPng(shot + "_window.png");
   const std::array<int, 3> zero = falseColour(0.0f);
+  // The screenshot's PNG is the difference view as displayed: the ramp's 0 everywhere.
+  const Rgb8 screenshot = readPng(shot + ".png");
+  for (std::size_t i = 0; i < screenshot.pixels.size(); ++i) ASSERT_EQ(int(screenshot.pixels[i]), zero[i % 3]) << "byte " << i;
   for (int y = int(kFirstUnlabelledRow); y < window.height - 40; ++y) {  // above the colour bar
     for (int x = 0; x < window.width; ++x) ASSERT_EQ(window.at(x, y), zero) << "pixel " << x << ", " << y;
   }

@@ -300,6 +300,39 @@ TEST(ScriptTest, CheckFollowsModelSwitchesAndNamesTheLine) {
   expectError("at 1\nat 2 set material plate rho_d 0.5\n", "b:1");
 }
 
+// One bound on what emits light, checked before the window opens: a strength that would make strength x the
+// brightest texel overflow (3e38 used to be accepted and render NaN), a light's intensity likewise; and an
+// environment edit without an environment.
+TEST(ScriptTest, EditsThatWouldOverflowTheImageAreRefusedNamingTheLine) {
+  Scene scene;
+  scene.materials = {{"ball", lambertMaterial(glm::vec3(0.5f))}};
+  scene.lights = {{"key", pointLight(glm::vec3(0.0f, 3.0f, 0.0f), glm::vec3(10.0f))}};
+  const auto errorOf = [&](const Scene& s, const std::string& text) -> std::string {
+    try {
+      checkScript(parseScript(text, "s"), s);
+    } catch (const Error& error) {
+      return error.what();
+    }
+    return "";
+  };
+  EXPECT_NE(errorOf(scene, "at 1 set environment strength 2\n").find("s:1: the scene has no environment image"),
+            std::string::npos);
+  scene.environment.width = 2;
+  scene.environment.height = 1;
+  scene.environment.texels = {glm::vec3(1000.0f), glm::vec3(1.0f)};
+  scene.environment.brightest = 1000.0f;
+  EXPECT_EQ(errorOf(scene, "at 1 set environment strength 1e17\n"), "");
+  EXPECT_NE(errorOf(scene, "at 1 set environment strength 1e18\n").find("s:1: environment strength 1e+18 x"),
+            std::string::npos);
+  EXPECT_NE(errorOf(scene, "at 1 set environment strength 3e38\n").find("over raylab's limit"), std::string::npos);
+  try {
+    parseScript("at 1 set light key intensity 3e38 0 0\n", "s");
+    ADD_FAILURE() << "an intensity of 3e38 was accepted";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("s:1"), std::string::npos) << error.what();
+  }
+}
+
 TEST(CameraTest, OrbitKeepsTheTargetAndDistanceAndNeverReachesThePoles) {
   Camera camera;
   camera.position = {0.0f, 1.0f, 5.0f};
