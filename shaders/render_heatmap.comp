@@ -42,7 +42,11 @@ void main() {
   if (pixel.x < params.width && pixel.y < params.height) {
     const uvec2 start = clockRealtime2x32EXT();
     renderPixel(pixel, rays, dropped);
-    clockTicks[pixel.y * params.width + pixel.x] += ticksBetween(start, clockRealtime2x32EXT());
+    // The cheapest dispatch's cost per sample, not the mean: a thread the OS preempts inflates one dispatch's
+    // clock, and the minimum over a render's dispatches (as benchmarks take the fastest run) leaves it out.
+    const float perSample = ticksBetween(start, clockRealtime2x32EXT()) / float(max(params.sampleCount, 1u));
+    const uint index = pixel.y * params.width + pixel.x;
+    clockTicks[index] = params.sampleIndex == 0u ? perSample : min(clockTicks[index], perSample);
   }
   addRayStats(rays, dropped, laneSegments, groupSegments);
 }

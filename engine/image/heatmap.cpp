@@ -56,25 +56,20 @@ CostScale costScale(const CostMap& map) {
     return double(sorted[rank]);
   };
   scale.median = std::max(quantile(0.5), 1e-30);
-  const double q25 = std::max(quantile(0.25), 1e-30), q75 = std::max(quantile(0.75), scale.median);
-  const double fence = q75 * std::pow(q75 / q25, 1.5);
-  std::vector<float> kept;
-  kept.reserve(sorted.size());
-  for (const float ticks : map.ticks) {
-    if (double(ticks) <= fence) kept.push_back(ticks);
-  }
-  scale.beyondFence = map.ticks.size() - kept.size();
-  sorted = std::move(kept);
-  scale.top = sorted.empty() ? scale.median : std::max(quantile(0.99), scale.median);
+  scale.top = std::max(quantile(0.99), scale.median);
   return scale;
 }
 
 Rgb8Image costMapImage(const CostMap& map, const std::string& title) {
   const CostScale scale = costScale(map);
   const int line = textLineHeight(kTextScale);
+  const std::uint32_t width = std::max<std::uint32_t>(map.width, 320);
+  // The caption at the labels' size when it fits, else at half that: never cut off at the image's edge.
+  const std::string caption = title + ": median " + formatTicks(scale.median) + " ticks/sample";
+  const int captionScale = textWidth(caption, kTextScale) <= int(width) - 16 ? kTextScale : 1;
   const int legendHeight = 4 + kBarHeight + 4 + line + 4 + line + 4;
   Rgb8Image image;
-  image.width = std::max<std::uint32_t>(map.width, 320);
+  image.width = width;
   image.height = map.height + std::uint32_t(legendHeight);
   image.rgb.assign(std::size_t(image.width) * image.height * 3, 24);
   for (std::uint32_t y = 0; y < map.height; ++y) {
@@ -94,16 +89,26 @@ Rgb8Image costMapImage(const CostMap& map, const std::string& title) {
   }
   const int labelTop = barTop + kBarHeight + 4;
   const std::array<std::uint8_t, 3> white{230, 230, 230};
-  // Each label centred under its value, kept inside the image; a label that would overlap one already drawn
-  // (the median close to 0 or to the top) is left out rather than printed over it.
+  // Each label centred under its value, kept inside the image; one that would overlap a label already drawn (the
+  // median close to 0 or to the top) moves just clear of it, and is left out only when there is no room.
   std::vector<std::pair<int, int>> taken;
   const auto label = [&](double ticks, const std::string& text) {
     const int centre = barLeft + int(std::lround(std::clamp(ticks / scale.top, 0.0, 1.0) * (barRight - barLeft - 1)));
     const int width = textWidth(text, kTextScale);
-    const int x = std::clamp(centre - width / 2, 0, std::max(0, int(image.width) - width));
+    const auto inside = [&](int x) { return std::clamp(x, 0, std::max(0, int(image.width) - width)); };
+    const auto clear = [&](int x) {
+      for (const auto& [left, right] : taken) {
+        if (x < right + 6 && x + width + 6 > left) return false;
+      }
+      return true;
+    };
+    int x = inside(centre - width / 2);
     for (const auto& [left, right] : taken) {
-      if (x < right + 6 && x + width + 6 > left) return;
+      if (clear(x)) break;
+      const int after = inside(right + 6), before = inside(left - 6 - width);
+      x = clear(after) ? after : before;
     }
+    if (!clear(x)) return;
     taken.emplace_back(x, x + width);
     drawText(image, x, labelTop, text, kTextScale, white, 0, int(image.width));
   };
@@ -112,10 +117,6 @@ Rgb8Image costMapImage(const CostMap& map, const std::string& title) {
   label(0.0, "0");
   label(scale.top, top);
   label(scale.median, "median");
-  std::string caption = title + ": median " + formatTicks(scale.median) + " ticks/sample";
-  if (scale.beyondFence > 0) caption += ", " + std::to_string(scale.beyondFence) + " px preempted";
-  // The caption at the labels' size when it fits, else at half that: never cut off at the image's edge.
-  const int captionScale = textWidth(caption, kTextScale) <= int(image.width) - 16 ? kTextScale : 1;
   drawText(image, 8, labelTop + line + 4, caption, captionScale, white, 0, int(image.width));
   return image;
 }

@@ -22,14 +22,12 @@ struct CostMap {
 };
 
 // Statistics the legend prints: the median cost and the scale's top. Both are ranks, not means: a lavapipe thread
-// the OS preempts mid-dispatch leaves pixels with huge clock readings (on a busy machine, more than 1% of them),
-// which would dominate a mean and wash out the map. The top is the 99th percentile of the pixels inside a Tukey
-// fence on the logarithm of the cost (above q75 x (q75/q25)^1.5 is preempted, not expensive); those beyond are
-// counted and drawn as the top colour.
+// the OS preempts mid-dispatch leaves pixels with huge clock readings, which would dominate a mean and wash out the
+// map. The kernel keeps each pixel's cheapest dispatch, which removes them when a render has several dispatches;
+// the top is the 99th percentile.
 struct CostScale {
   double median = 0.0;
   double top = 0.0;
-  std::size_t beyondFence = 0;  // pixels above the fence
 };
 CostScale costScale(const CostMap& map);
 

@@ -354,9 +354,8 @@ CostMap readCostMap(const Device& device, const Renderer& renderer) {
   map.width = renderer.params.width;
   map.height = renderer.params.height;
   map.ticks.resize(std::size_t(map.width) * map.height);
+  // Already per sample: the least over the render's dispatches (render_heatmap.comp).
   downloadBuffer(device, renderer.heatmap, map.ticks.data(), map.ticks.size() * sizeof(float));
-  const float perSample = 1.0f / float(std::max<std::uint32_t>(1, renderer.samplesDone));
-  for (float& ticks : map.ticks) ticks *= perSample;
   return map;
 }
 

@@ -2,6 +2,8 @@
 // that writes readable files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -184,6 +186,10 @@ TEST(CliTest, HeatmapWritesTheCostOfEveryPixel) {
   std::size_t positive = 0;
   for (std::size_t i = 0; i < ticks.rgba.size(); i += 4) positive += ticks.rgba[i] > 0.0f;
   EXPECT_EQ(positive, std::size_t(40 * 24)) << "every pixel took some time";
+  // Per sample and plausible: a clock read behind its start used to wrap to about 1e19 ticks.
+  float most = 0.0f;
+  for (std::size_t i = 0; i < ticks.rgba.size(); i += 4) most = std::max(most, ticks.rgba[i]);
+  EXPECT_LT(most, 1e10f) << "a pixel's cost per sample is beyond ten seconds of clock";
   std::vector<std::string> plain = common;
   plain.insert(plain.end(), {"--out", dir + "/plain.exr"});
   ASSERT_EQ(runRaylab(plain).exitCode, 0);
