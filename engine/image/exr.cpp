@@ -98,7 +98,8 @@ void writeExr(const std::string& path, const Image& image) {
 
 Image readExr(const std::string& path) { return decodeExr(readInputFile(path, kMaxImageFileBytes), path); }
 
-Image decodeExr(const std::string& bytes, const std::string& label, std::uint64_t maxPixels) {
+Image decodeExr(const std::string& bytes, const std::string& label, std::uint64_t maxPixels,
+                const std::function<void(std::uint32_t, std::uint32_t)>& checkSize) {
   try {
     Imf::StdISStream input;
     input.str(bytes);
@@ -137,6 +138,7 @@ Image decodeExr(const std::string& bytes, const std::string& label, std::uint64_
                     std::to_string(kMaxImageSide) + " a side)");
       }
     }
+    if (checkSize) checkSize(std::uint32_t(width), std::uint32_t(height));
     const std::array<std::string, 4> channels = chooseChannels(file.header().channels(), label);
     std::uint64_t pixelBytes = 0;
     for (auto c = file.header().channels().begin(); c != file.header().channels().end(); ++c) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,8 +51,10 @@ void writeExr(const std::string& path, const Image& image);
 Image readExr(const std::string& path);
 // An OpenEXR file held in memory; `label` (its path) starts every error. An image of more than `maxPixels`
 // pixels is refused from its header, before anything is allocated.
-Image decodeExr(const std::string& bytes, const std::string& label,
-                std::uint64_t maxPixels = std::uint64_t(1) << 31);
+// `checkSize(width, height)`, when given, is called with the display window's size before anything is decoded
+// (it throws to refuse).
+Image decodeExr(const std::string& bytes, const std::string& label, std::uint64_t maxPixels = std::uint64_t(1) << 31,
+                const std::function<void(std::uint32_t, std::uint32_t)>& checkSize = {});
 // `exposure` in stops: values are scaled by 2^exposure before the tone curve and the sRGB transfer function.
 void writePng(const std::string& path, const Image& image, float exposure, ToneMap toneMap);
 

@@ -171,7 +171,7 @@ void checkDeviceLimits(const Device& device, const Scene& scene) {
   const std::uint64_t environmentTexels = std::uint64_t(scene.environment.width) * scene.environment.height;
   checkBuffer("environment image (" + std::to_string(scene.environment.width) + "x" +
                   std::to_string(scene.environment.height) + ") and its sampling tables",
-              sizeof(gpu::EnvironmentHeader) + (6 * environmentTexels + scene.environment.height) * sizeof(float));
+              environmentBufferBytes(scene.environment.width, scene.environment.height));
   if (scene.spheres.size() > device.maxPrimitiveCount) {
     throw Error("the scene has " + std::to_string(scene.spheres.size()) +
                 " spheres, over this device's maxPrimitiveCount of " + std::to_string(device.maxPrimitiveCount));

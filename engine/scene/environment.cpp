@@ -6,6 +6,7 @@
 #include "image/image.h"
 #include "scene/gltf_files.h"
 #include "scene/radiance_limits.h"
+#include "shared/scene_records.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -17,23 +18,37 @@ constexpr float kPi = 3.14159265358979323846f;
 
 }  // namespace
 
+std::uint64_t environmentBufferBytes(std::uint32_t width, std::uint32_t height) {
+  const std::uint64_t texels = std::uint64_t(width) * height;
+  return sizeof(gpu::EnvironmentHeader) + (6 * texels + height) * sizeof(float);
+}
+
 Environment loadEnvironment(const std::string& path, float strength, const std::string& where,
-                            const std::string& strengthWhere) {
+                            const std::string& strengthWhere, std::uint64_t maxBufferBytes) {
   std::string bytes;
   try {
     bytes = gltf::readSceneFile(path, kMaxEnvironmentFileBytes);
   } catch (const Error& e) {
     throw Error(where + ": environment image " + e.what());
   }
-  Environment environment = decodeEnvironment(bytes, where + ": environment image " + path);
+  Environment environment = decodeEnvironment(bytes, where + ": environment image " + path, maxBufferBytes);
   environment.path = path;
   checkEnvironmentStrength(environment, strength, strengthWhere.empty() ? where : strengthWhere);
   environment.strength = strength;
   return environment;
 }
 
-Environment decodeEnvironment(const std::string& bytes, const std::string& label) {
-  const Image image = decodeExr(bytes, label, kMaxEnvironmentTexels);
+Environment decodeEnvironment(const std::string& bytes, const std::string& label, std::uint64_t maxBufferBytes) {
+  const auto fitsTheDevice = [&](std::uint32_t width, std::uint32_t height) {
+    const std::uint64_t needed = environmentBufferBytes(width, height);
+    if (needed > maxBufferBytes) {
+      throw Error(label + ": " + std::to_string(width) + "x" + std::to_string(height) + " needs " +
+                  std::to_string(needed >> 20) + " MiB with its sampling tables, over this device's " +
+                  "maxStorageBufferRange of " + std::to_string(maxBufferBytes >> 20) +
+                  " MiB (docs/scenes.md, Limits): use a smaller image");
+    }
+  };
+  const Image image = decodeExr(bytes, label, kMaxEnvironmentTexels, fitsTheDevice);
   Environment environment;
   environment.width = image.width;
   environment.height = image.height;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -31,15 +32,23 @@ inline constexpr float kMaxEnvironmentRotationDegrees = 360.0f;
 inline constexpr std::uint64_t kMaxEnvironmentTexels = std::uint64_t(1) << 26;
 inline constexpr std::uint64_t kMaxEnvironmentFileBytes = std::uint64_t(1) << 30;
 
+// The bytes the device's environment buffer needs for a width x height image: its header, the texels and the
+// sampling tables (render/gpu_scene.cpp lays them out). Known from an EXR header, before decoding.
+std::uint64_t environmentBufferBytes(std::uint32_t width, std::uint32_t height);
+
 // Reads the image at `path` (a regular OpenEXR file). Errors start with `where` and name the file: missing,
 // not an EXR, too large, or a texel that is NaN or Inf (with its position). Negative values (lossy
 // compression leaves a few) read as 0, with a warning. `strength` is checked against the image
 // (scene/radiance_limits.h); that error starts with `strengthWhere` when given (the option that set it).
+// An image whose environmentBufferBytes exceed `maxBufferBytes` (the device's maxStorageBufferRange, when known)
+// is refused from its header, before gigabytes are decoded for a device that cannot hold them.
 Environment loadEnvironment(const std::string& path, float strength, const std::string& where,
-                            const std::string& strengthWhere = "");
+                            const std::string& strengthWhere = "",
+                            std::uint64_t maxBufferBytes = std::numeric_limits<std::uint64_t>::max());
 
 // The image of an OpenEXR file held in memory, checked as loadEnvironment checks it; `label` starts errors.
-Environment decodeEnvironment(const std::string& bytes, const std::string& label);
+Environment decodeEnvironment(const std::string& bytes, const std::string& label,
+                              std::uint64_t maxBufferBytes = std::numeric_limits<std::uint64_t>::max());
 
 // The direction of (u, v) in the image's own frame, and back (before the rotation about +Y).
 glm::vec3 environmentDirection(glm::vec2 uv);

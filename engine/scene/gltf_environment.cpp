@@ -94,7 +94,8 @@ Environment readEnvironment(Document& document, const GltfOptions& options) {
   }
   if (entry.path.empty()) return {};
   Environment environment = loadEnvironment(entry.path, float(entry.strength), where,
-                                            options.environmentStrength ? "--env-strength" : where + ".strength");
+                                            options.environmentStrength ? "--env-strength" : where + ".strength",
+                                            options.maxBufferBytes);
   environment.rotation = glm::radians(float(entry.rotation));
   return environment;
 }

@@ -4,6 +4,8 @@
 // mesh, accessor or material at fault; repairs and ignored features are reported once each through warn().
 #pragma once
 
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -17,6 +19,8 @@ struct GltfOptions {
   std::string environment;  // --env FILE.exr: replaces the file's extras.raylab.environment
   std::optional<float> environmentStrength;  // --env-strength S: replaces its strength
   std::optional<float> environmentRotation;  // --env-rotation DEGREES about +Y: replaces its rotation
+  // The device's maxStorageBufferRange when known: an environment image too large for it is refused from its header.
+  std::uint64_t maxBufferBytes = std::numeric_limits<std::uint64_t>::max();
 };
 
 // Loads the default scene of a .gltf or .glb file (told apart by content). Scene.name is the file's stem.

@@ -10,8 +10,8 @@
 namespace raylab {
 
 Scene loadScene(const SceneRequest& request) {
-  const GltfOptions options{request.camera, request.allowOutsideUris, request.environment,
-                            request.environmentStrength, request.environmentRotation};
+  const GltfOptions options{request.camera,          request.allowOutsideUris,   request.environment,
+                            request.environmentStrength, request.environmentRotation, request.maxBufferBytes};
   if (request.path.empty()) return makeDefaultScene(options);
   try {
     return loadGltfFile(request.path, options);

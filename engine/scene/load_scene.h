@@ -1,6 +1,8 @@
 // The scene a command was asked for: a glTF file, or the built-in default scene when no path is given.
 #pragma once
 
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -15,6 +17,7 @@ struct SceneRequest {
   std::string environment;        // --env FILE.exr: replaces the scene's environment image
   std::optional<float> environmentStrength;  // --env-strength S
   std::optional<float> environmentRotation;  // --env-rotation DEGREES
+  std::uint64_t maxBufferBytes = std::numeric_limits<std::uint64_t>::max();  // the device's, when known (GltfOptions)
 };
 
 Scene loadScene(const SceneRequest& request);

@@ -169,6 +169,7 @@ DeviceReport surveyOne(VkPhysicalDevice physical, std::uint32_t index, VkSurface
   report.name = properties.properties.deviceName;
   report.type = properties.properties.deviceType;
   report.apiVersion = properties.properties.apiVersion;
+  report.maxStorageBufferRange = properties.properties.limits.maxStorageBufferRange;
   report.driver = std::string(driver.driverName) + ", " + driver.driverInfo;
 
   if (report.apiVersion < VK_API_VERSION_1_2) {

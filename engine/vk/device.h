@@ -37,6 +37,7 @@ struct DeviceReport {
   bool rayQueriesHidden = false;     // it has them, but RAYLAB_HIDE_RAY_QUERIES=1 makes raylab ignore them
   bool rayTracingPipelines = false;  // VK_KHR_ray_tracing_pipeline with its rayTracingPipeline feature
   std::uint32_t maxRayRecursionDepth = 0;
+  std::uint64_t maxStorageBufferRange = 0;  // what one buffer a kernel binds may hold: scene limits before loading
   bool subgroupOperations = false;   // arithmetic and ballot in compute shaders: the ray-query kernels sum their
                                      // ray counts and compact the wavefront's queues with them
   std::vector<std::string> missing;  // what stops raylab from using it; empty when capable

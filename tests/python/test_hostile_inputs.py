@@ -226,3 +226,20 @@ def test_farm_manifests_of_any_content_never_crash_and_vouch_only_for_matching_f
     assert Manifests().is_done(job) is True
     cell.write_bytes(cell.read_bytes()[:-1])
     assert Manifests().is_done(job) is False
+
+
+# An environment the device cannot hold is refused from its header, before it is decoded (an 8192 x 4096 image
+# used to take 1.8 GiB before the device's limit refused it).
+def test_an_environment_too_large_for_the_device_is_refused_before_decoding(work, minimal, raylab_binary):
+    big = work / "big.exr"
+    OpenEXR.File({"compression": OpenEXR.ZIP_COMPRESSION},
+                 {"RGB": np.full((4096, 8192, 3), 0.5, np.float16)}).write(str(big))
+    import resource
+    command = [str(raylab_binary), "render", str(minimal), "--env", str(big), "--width", "16", "--height", "8",
+               "--spp", "1", "--out", str(work / "never.exr"), "--no-png"]
+    done = subprocess.run(command, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 1, done.stderr
+    assert "8192x4096 needs 768 MiB" in done.stderr and "maxStorageBufferRange" in done.stderr
+    # The largest child so far (this one, or a smaller earlier one): decoding would have taken over 1.5 GiB.
+    peak_kib = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    assert peak_kib < 512 * 1024, f"{peak_kib} KiB at the peak: the image was decoded"

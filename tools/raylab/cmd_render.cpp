@@ -163,6 +163,7 @@ void render(RenderOptions o) {
     checkOutputPath(heatmapExr, "--heatmap");
   }
 
+  o.request.maxBufferBytes = deviceBufferLimit(o.device);  // an environment too large is refused from its header
   Scene scene = loadScene(request);
   for (const std::string& text : o.materials) {
     const CompareSpec spec = parseCompareSpec(text, scene, "raylab render: --material");

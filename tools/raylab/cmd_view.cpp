@@ -7,6 +7,7 @@
 
 #include "cli.h"
 #include "commands.h"
+#include "gpu_session.h"
 #include "scene/load_scene.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -93,7 +94,9 @@ void view(ViewCommandOptions command) {
     checkOutputPath(paths.png, event.where);
   }
 
-  const Scene scene = loadScene(command.request);
+  SceneRequest request = command.request;
+  request.maxBufferBytes = deviceBufferLimit(o.device);  // an environment image the device cannot hold is not decoded
+  const Scene scene = loadScene(request);
   if (!command.compare.empty()) o.compare = parseCompareSpec(command.compare, scene, "raylab view: --compare");
   runViewer(scene, o);
 }

@@ -17,6 +17,19 @@ GpuSession::GpuSession(std::optional<std::uint32_t> deviceIndex, bool quiet) {
   }
 }
 
+std::uint64_t deviceBufferLimit(std::optional<std::uint32_t> deviceIndex) {
+  Instance probe = createInstance({});
+  try {
+    const std::vector<DeviceReport> reports = surveyDevices(probe);
+    const std::uint64_t limit = reports[chooseDevice(reports, deviceIndex)].maxStorageBufferRange;
+    destroyInstance(probe);
+    return limit;
+  } catch (...) {
+    destroyInstance(probe);
+    throw;
+  }
+}
+
 std::vector<Backend> backendsToCompare(const Device& device, const std::string& choice) {
   if (choice != "all") return {chooseBackend(device, parseBackendChoice(choice))};
   std::vector<Backend> backends;

@@ -21,6 +21,11 @@ struct GpuSession {
   GpuSession& operator=(const GpuSession&) = delete;
 };
 
+// The maxStorageBufferRange of the device a session would pick (--device N or the best capable), from a survey
+// alone: scenes are loaded before the device is made, and their environment images are checked against it.
+// Throws Error(kExitNoDevice) when no device can run raylab.
+std::uint64_t deviceBufferLimit(std::optional<std::uint32_t> deviceIndex);
+
 // The benchmarks' --backend (cli.h): `all` is every backend the device offers, to compare them in one run.
 std::vector<Backend> backendsToCompare(const Device& device, const std::string& choice);
 
