@@ -12,10 +12,6 @@
 
 namespace raylab {
 
-namespace {
-
-}  // namespace
-
 // A perceptually ordered ramp: black-blue, blue, green, yellow, white (piecewise linear in sRGB); display.comp's
 // falseColour holds the same stops.
 std::array<std::uint8_t, 3> falseColour(double t) {

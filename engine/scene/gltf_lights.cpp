@@ -45,7 +45,6 @@ Light convertLight(const Document& document, int lightIndex, const glm::mat4& wo
     document.fail(where + ": color x intensity = " + formatNumber(brightest) + " is over raylab's limit of " +
                   formatNumber(kMaxRadiance) + " (docs/scenes.md, Limits)");
   }
-  checkLightIntensity(record.intensity, where);
   record.cosInner = -1.0f;
   record.cosOuter = -1.0f;
   const glm::vec3 minusZ = glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));

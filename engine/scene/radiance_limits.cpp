@@ -17,7 +17,7 @@ std::string shown(double value) {
   return text;
 }
 
-void checkRadiance(glm::vec3 value, const std::string& where, const char* what) {
+void checkRadiance(glm::vec3 value, const std::string& where, const char* what) {  // light intensity and the like
   for (int c = 0; c < 3; ++c) {
     if (!(value[c] >= 0.0f) || !std::isfinite(value[c])) {
       throw Error(where + ": " + what + " must be finite and >= 0, found " + shown(value[c]));
@@ -35,8 +35,6 @@ void checkRadiance(glm::vec3 value, const std::string& where, const char* what) 
 void checkLightIntensity(glm::vec3 intensity, const std::string& where) {
   checkRadiance(intensity, where, "the light's intensity");
 }
-
-void checkEmission(glm::vec3 radiance, const std::string& where) { checkRadiance(radiance, where, "the emission"); }
 
 void checkEnvironmentStrength(const Environment& environment, float strength, const std::string& where) {
   if (!(strength >= 0.0f) || !std::isfinite(strength)) {

@@ -16,7 +16,6 @@ inline constexpr float kMaxRadiance = 1e20f;
 
 // Each throws Error(where: ...) naming the value and the limit.
 void checkLightIntensity(glm::vec3 intensity, const std::string& where);
-void checkEmission(glm::vec3 radiance, const std::string& where);
 // strength finite and >= 0, and strength x the image's brightest texel at most kMaxRadiance.
 void checkEnvironmentStrength(const Environment& environment, float strength, const std::string& where);
 

@@ -1,7 +1,5 @@
 #include "view/panel.h"
 
-#include "scene/radiance_limits.h"
-
 #include <imgui.h>
 
 #include <algorithm>
