@@ -233,5 +233,32 @@ TEST(CliTest, ASceneThatIsNotARegularFileIsRefused) {
   }
 }
 
+// Messages a user trips over (issue 21): each names what was wrong, with a usage exit where the command line was.
+TEST(CliTest, MessagesSayWhatWasWrong) {
+  const std::string cameras = "/usr/share/assimp/models/glTF2/cameras/Cameras.gltf";
+  const std::string dir = scratchDir();
+  if (std::filesystem::exists(cameras)) {
+    // The orthographic camera by the name `raylab info` lists it under: "is orthographic", not "no camera".
+    const CommandResult orthographic = runRaylab({"render", cameras, "--camera", "camera 1", "--no-png", "--out",
+                                                 dir + "/never.exr"});
+    EXPECT_EQ(orthographic.exitCode, 1) << orthographic.output;
+    EXPECT_NE(orthographic.output.find("camera 'camera 1' is orthographic"), std::string::npos) << orthographic.output;
+    std::filesystem::copy_file(cameras, dir + "/scene.obj", std::filesystem::copy_options::overwrite_existing);
+    const CommandResult obj = runRaylab({"render", dir + "/scene.obj", "--no-png", "--out", dir + "/never.exr"});
+    EXPECT_EQ(obj.exitCode, 2) << obj.output;
+    EXPECT_NE(obj.output.find("raylab reads glTF 2.0 scenes (.gltf or .glb), not '.obj'"), std::string::npos)
+        << obj.output;
+  }
+  const CommandResult typo = runRaylab({"render", "--sppp", "3"});
+  EXPECT_EQ(typo.exitCode, 2) << typo.output;
+  EXPECT_NE(typo.output.find("(did you mean --spp?)"), std::string::npos) << typo.output;
+  for (const char* option : {"--env", "--camera", "--out"}) {
+    const CommandResult empty = runRaylab({"render", option, ""});
+    EXPECT_EQ(empty.exitCode, 2) << option << ": " << empty.output;
+    EXPECT_NE(empty.output.find(std::string(option) + ": is empty"), std::string::npos) << empty.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir + "/never.exr"));
+}
+
 }  // namespace
 }  // namespace raylab::test

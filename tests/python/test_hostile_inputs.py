@@ -243,3 +243,22 @@ def test_an_environment_too_large_for_the_device_is_refused_before_decoding(work
     # The largest child so far (this one, or a smaller earlier one): decoding would have taken over 1.5 GiB.
     peak_kib = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
     assert peak_kib < 512 * 1024, f"{peak_kib} KiB at the peak: the image was decoded"
+
+
+# A file without lights gets a headlight carried with the camera: turned to the box's far side, the face it sees
+# is lit as the first view's was (a light fixed in the world left it black).
+def test_a_file_without_lights_is_lit_wherever_the_camera_turns():
+    box = Path("/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured.gltf")
+    if not box.exists():
+        pytest.skip("assimp-testmodels is not installed (tools/setup.sh installs it)")
+    scene = raylab.Scene.load(box)
+    assert scene.light("default")["type"] == "headlight"
+    front = raylab.Renderer(scene, width=32, height=32).render(spp=1)
+    camera = scene.camera
+    target = np.array(camera["target"])
+    behind = 2 * target - np.array(camera["position"])  # the camera turned 180 degrees about the target
+    behind[1] = camera["position"][1]
+    scene.set_camera(position=tuple(behind))
+    back = raylab.Renderer(scene, width=32, height=32).render(spp=1)
+    centre = (slice(12, 20), slice(12, 20))
+    assert back[centre][..., :3].mean() > 0.5 * front[centre][..., :3].mean() > 0.05

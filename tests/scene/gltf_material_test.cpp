@@ -276,5 +276,18 @@ TEST(GltfMaterial, EmissionIsTheFactorTimesTheStrength) {
   }
 }
 
+// An emissive texture is not read yet: its material emits nothing rather than its factor over the whole surface
+// (ClearCoatTest's labels, factor [1, 1, 1], glowed white and removed the default light), with one warning.
+TEST(GltfMaterial, AnEmissiveTextureTurnsItsMaterialsEmissionOffWithAWarning) {
+  GltfBuilder b = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+  b.doc()["materials"][0]["emissiveTexture"] = {{"index", 0}};
+  b.doc()["materials"][0]["emissiveFactor"] = {1.0, 1.0, 1.0};
+  WarningCapture warnings;
+  const Scene scene = b.load();
+  EXPECT_EQ(scene.materials[0].record.emission, glm::vec3(0.0f));
+  EXPECT_EQ(warnings.count("has an emissive texture, which raylab does not read yet: it emits nothing"), 1);
+  EXPECT_EQ(scene.lights.size(), 1u) << "with no emitter left, the default light is added";
+}
+
 }  // namespace
 }  // namespace raylab::test
