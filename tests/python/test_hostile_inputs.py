@@ -220,6 +220,14 @@ def test_farm_manifests_of_any_content_never_crash_and_vouch_only_for_matching_f
     for content in contents:
         (work / MANIFEST).write_bytes(content)
         assert Manifests().is_done(job) is False, content[:80]
+    # A manifest that is a FIFO or a device is reported, never read (it would hang or grow without bound).
+    (work / MANIFEST).unlink()
+    os.mkfifo(work / MANIFEST)
+    assert Manifests().is_done(job) is False
+    (work / MANIFEST).unlink()
+    (work / MANIFEST).symlink_to("/dev/zero")
+    assert Manifests().is_done(job) is False
+    (work / MANIFEST).unlink()
     # Only the entry that names the description and this file's digest vouches for it.
     good = {"cell_000.exr": {"description": "study 0", "sha256": file_digest(cell)}}
     (work / MANIFEST).write_text(json.dumps(good))

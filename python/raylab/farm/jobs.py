@@ -48,6 +48,23 @@ def file_digest(path: Path) -> str | None:
         return None
 
 
+# A manifest holds a line per result: megabytes for the largest studies. Beyond this it is not the farm's.
+MAX_MANIFEST_BYTES = 64 << 20
+
+
+def _read_manifest(path: Path) -> str:
+    """The manifest's text, read as every raylab reader reads: a regular file only (a FIFO would hang, /dev/zero
+    grow without bound), of at most MAX_MANIFEST_BYTES; OSError otherwise."""
+    if not path.exists():
+        raise FileNotFoundError(path)
+    if not path.is_file():
+        raise OSError(f"{path} is not a regular file")
+    if path.stat().st_size > MAX_MANIFEST_BYTES:
+        raise OSError(f"{path} has {path.stat().st_size} bytes, over {MAX_MANIFEST_BYTES}")
+    with open(path, "rb") as file:
+        return file.read(MAX_MANIFEST_BYTES + 1).decode()
+
+
 class Manifests:
     """The manifests of the jobs' directories, each read once and kept in memory; a finished job is added and its
     directory's manifest rewritten atomically (a temporary file renamed over it). Each entry records what decided
@@ -61,7 +78,7 @@ class Manifests:
         if directory not in self._by_directory:
             path = directory / MANIFEST
             try:
-                manifest = json.loads(path.read_text())
+                manifest = json.loads(_read_manifest(path))
             except FileNotFoundError:
                 manifest = {}
             except (OSError, UnicodeDecodeError, RecursionError, json.JSONDecodeError) as error:
