@@ -3,13 +3,15 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
-#include <ImfMultiPartInputFile.h>
 #include <ImfPartType.h>
 #include <ImfOutputFile.h>
 #include <ImfStdIO.h>
+#include <openexr.h>
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -30,6 +32,10 @@ constexpr const char* kChannels[4] = {"R", "G", "B", "A"};
 // The largest ratio of decoded pixel bytes to file bytes raylab believes: zlib's limit is about 1032:1, and a
 // file claiming more pixels than that could hold asks for memory its content cannot fill.
 constexpr std::uint64_t kMaxCompressionRatio = 4096;
+// The same bound on what raylab allocates (float RGBA, 16 bytes a pixel, for the data window and the display
+// window alike): four times the ratio, for half-float channels widened to float and absent ones filled. A
+// display window far larger than the data window costs memory too, though the file holds nothing of it.
+constexpr std::uint64_t kMaxExpansion = 4 * kMaxCompressionRatio;
 
 std::string channelList(const Imf::ChannelList& channels) {
   std::string names;
@@ -64,6 +70,96 @@ std::array<std::string, 4> chooseChannels(const Imf::ChannelList& channels, cons
   if (has("Y")) return {"Y", "Y", "Y", has("A") ? "A" : ""};
   throw Error(label + ": OpenEXR file without colour channels: it has " + channelList(channels) +
               "; raylab reads R, G, B (or r, g, b, one layer's NAME.R, NAME.G, NAME.B, or luminance Y)");
+}
+
+// OpenEXR's C++ classes allocate what a header states before reading it (an attribute of 1.9 GB in a file of
+// 900 bytes, or 2^28 one-pixel tiles' offsets). Its core library (OpenEXRCore) parses headers strictly and takes
+// an allocator: the header is parsed there first, from memory, with every allocation bounded by the file's size,
+// and only a file that passes reaches the C++ classes.
+thread_local std::size_t coreAllocationLimit = 0;
+thread_local std::string coreError;
+
+void* boundedAllocation(std::size_t bytes) { return bytes > coreAllocationLimit ? nullptr : std::malloc(bytes); }
+
+std::int64_t readFromMemory(exr_const_context_t, void* user, void* buffer, std::uint64_t size, std::uint64_t offset,
+                            exr_stream_error_func_ptr_t) {
+  const std::string& bytes = *static_cast<const std::string*>(user);
+  if (offset >= bytes.size()) return 0;
+  const std::size_t count = std::size_t(std::min<std::uint64_t>(size, bytes.size() - offset));
+  std::memcpy(buffer, bytes.data() + offset, count);
+  return std::int64_t(count);
+}
+
+std::int64_t sizeInMemory(exr_const_context_t, void* user) {
+  return std::int64_t(static_cast<const std::string*>(user)->size());
+}
+
+void keepError(exr_const_context_t, exr_result_t, const char* message) {
+  if (coreError.empty() && message != nullptr) coreError = message;
+}
+
+// Refuses, before OpenEXR's C++ classes see the file: a header the core library does not accept, several parts
+// (which would be read as the first, silently), deep data, and more chunks than the file has room for offsets of
+// (each chunk needs 8 bytes in the file's offset table).
+void checkHeaderAgainstContent(const std::string& bytes, const std::string& label) {
+  exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+  init.error_handler_fn = &keepError;
+  init.alloc_fn = &boundedAllocation;
+  init.free_fn = &std::free;
+  init.user_data = const_cast<std::string*>(&bytes);
+  init.read_fn = &readFromMemory;
+  init.size_fn = &sizeInMemory;
+  init.flags = EXR_CONTEXT_FLAG_STRICT_HEADER;
+  coreAllocationLimit = (std::size_t(16) << 20) + bytes.size();  // the context and tables, and a header's copy
+  coreError.clear();
+  exr_context_t context = nullptr;
+  if (exr_start_read(&context, label.c_str(), &init) != EXR_ERR_SUCCESS) {
+    if (context != nullptr) exr_finish(&context);
+    throw Error(label + ": not a readable OpenEXR file (" + (coreError.empty() ? "damaged header" : coreError) + ")");
+  }
+  std::string problem;
+  int parts = 0;
+  exr_get_count(context, &parts);
+  exr_storage_t storage = EXR_STORAGE_SCANLINE;
+  std::int32_t chunks = 0;
+  if (parts != 1) {
+    std::string names;
+    for (int i = 0; i < parts; ++i) {
+      const char* name = nullptr;
+      const bool named = exr_get_name(context, i, &name) == EXR_ERR_SUCCESS && name != nullptr;
+      names += (i ? ", " : "") + (named ? "'" + std::string(name) + "'" : "#" + std::to_string(i));
+    }
+    problem = "OpenEXR file of " + std::to_string(parts) + " parts (" + names + "); raylab reads single-part files";
+  } else if (exr_get_storage(context, 0, &storage) != EXR_ERR_SUCCESS || storage == EXR_STORAGE_DEEP_SCANLINE ||
+             storage == EXR_STORAGE_DEEP_TILED) {
+    problem = "a deep OpenEXR file; raylab reads flat images";
+  } else if (exr_get_chunk_count(context, 0, &chunks) != EXR_ERR_SUCCESS || chunks < 0 ||
+             std::uint64_t(chunks) * 8 > bytes.size()) {
+    problem = "OpenEXR header promises " + std::to_string(chunks) + " chunks of pixels in a file of " +
+              std::to_string(bytes.size()) + " bytes, which cannot even hold their offsets: the file is damaged";
+  }
+  // The pixels the header claims, in the file's own channel types, and the buffer of one chunk (up to 256 scan
+  // lines) that the C++ classes allocate at once: both within what the file's content can fill.
+  exr_attr_box2i_t window{};
+  const exr_attr_chlist_t* channels = nullptr;
+  if (problem.empty() && exr_get_data_window(context, 0, &window) == EXR_ERR_SUCCESS &&
+      exr_get_channels(context, 0, &channels) == EXR_ERR_SUCCESS && channels != nullptr) {
+    std::uint64_t pixelBytes = 0;
+    for (int c = 0; c < channels->num_channels; ++c) pixelBytes += channels->entries[c].pixel_type == EXR_PIXEL_HALF ? 2 : 4;
+    const std::uint64_t width = std::uint64_t(std::max<std::int64_t>(0, std::int64_t(window.max.x) - window.min.x + 1));
+    const std::uint64_t height = std::uint64_t(std::max<std::int64_t>(0, std::int64_t(window.max.y) - window.min.y + 1));
+    const std::uint64_t bound = kMaxCompressionRatio * std::max<std::uint64_t>(bytes.size(), 1);
+    if (width > kMaxImageSide || height > kMaxImageSide) {
+      problem = "OpenEXR data window of " + std::to_string(width) + "x" + std::to_string(height) +
+                " pixels; raylab reads at most " + std::to_string(kMaxImageSide) + " a side";
+    } else if (width * height * pixelBytes > bound || width * std::min<std::uint64_t>(height, 256) * pixelBytes > bound) {
+      problem = "OpenEXR header claims " + std::to_string(width) + "x" + std::to_string(height) + " pixels of " +
+                std::to_string(channels->num_channels) + " channels in a file of " + std::to_string(bytes.size()) +
+                " bytes, more than any compression holds: the file is damaged";
+    }
+  }
+  exr_finish(&context);
+  if (!problem.empty()) throw Error(label + ": " + problem);
 }
 
 }  // namespace
@@ -101,23 +197,11 @@ Image readExr(const std::string& path) { return decodeExr(readInputFile(path, kM
 Image decodeExr(const std::string& bytes, const std::string& label, std::uint64_t maxPixels,
                 const std::function<void(std::uint32_t, std::uint32_t)>& checkSize) {
   try {
+    // Multi-part files (which would be read as their first part, silently), deep files and headers that promise
+    // more than the file holds are refused before OpenEXR's file classes allocate anything.
+    checkHeaderAgainstContent(bytes, label);
     Imf::StdISStream input;
     input.str(bytes);
-    {
-      // A multi-part file would otherwise be read as its first part, silently.
-      Imf::MultiPartInputFile parts(input);
-      if (parts.parts() != 1) {
-        std::string names;
-        for (int i = 0; i < parts.parts(); ++i) {
-          const Imf::Header& header = parts.header(i);
-          names += (i ? ", " : "") + (header.hasName() ? "'" + header.name() + "'" : "#" + std::to_string(i));
-        }
-        throw Error(label + ": OpenEXR file of " + std::to_string(parts.parts()) + " parts (" + names +
-                    "); raylab reads single-part files");
-      }
-    }
-    input.clear();
-    input.seekg(0);
     Imf::InputFile file(input);
     if (file.header().hasType() && file.header().type() != Imf::SCANLINEIMAGE &&
         file.header().type() != Imf::TILEDIMAGE) {
@@ -150,19 +234,25 @@ Image decodeExr(const std::string& bytes, const std::string& label, std::uint64_
                   " pixels (" + std::to_string(claimed) + " bytes) in a file of " + std::to_string(bytes.size()) +
                   " bytes, more than any compression holds: the file is damaged");
     }
+    for (const auto& [w, h, what] : {std::tuple{width, height, "display window"}, std::tuple{dataWidth, dataHeight, "data window"}}) {
+      if (std::uint64_t(w) * std::uint64_t(h) * 16 > kMaxExpansion * std::max<std::uint64_t>(bytes.size(), 1)) {
+        throw Error(label + ": OpenEXR " + what + " of " + std::to_string(w) + "x" + std::to_string(h) +
+                    " pixels in a file of " + std::to_string(bytes.size()) + " bytes: more than its content can " +
+                    "fill (the file is damaged)");
+      }
+    }
     if (!file.isComplete()) {
       throw Error(label + ": OpenEXR file does not hold every pixel its header declares (truncated or damaged)");
     }
     // Read the data window, then place it in the display window; pixels outside the data window are 0.
     Image window(static_cast<std::uint32_t>(dataWidth), static_cast<std::uint32_t>(dataHeight));
     Imf::FrameBuffer frameBuffer;
-    char* base = reinterpret_cast<char*>(window.rgba.data()) -
-                 (std::ptrdiff_t(data.min.x) + std::ptrdiff_t(data.min.y) * window.width) * 4 * sizeof(float);
     for (int c = 0; c < 4; ++c) {
-      // Absent alpha is 1 (below); a channel read twice (Y as grey) is copied after the read.
+      // Absent alpha is 1 (below); a channel read twice (Y as grey) is copied after the read. Slice::Make offsets
+      // the base by the data window's origin without forming an out-of-range pointer.
       if (channels[c].empty() || frameBuffer.findSlice(channels[c]) != nullptr) continue;
-      frameBuffer.insert(channels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), 4 * sizeof(float),
-                                                 4 * sizeof(float) * window.width, 1, 1, 0.0));
+      frameBuffer.insert(channels[c], Imf::Slice::Make(Imf::FLOAT, window.rgba.data() + c, data, 4 * sizeof(float),
+                                                       4 * sizeof(float) * window.width));
     }
     if (channels[3].empty()) {
       for (std::size_t i = 3; i < window.rgba.size(); i += 4) window.rgba[i] = 1.0f;
