@@ -83,7 +83,7 @@ TEST(GltfEnvironment, BadEnvironmentsAreRefusedNamingTheFieldOrFile) {
   };
   const Case cases[] = {
       {{{"environment", {{"uri", "missing.exr"}}}}, "missing.exr: no such file"},
-      {{{"environment", {{"uri", "text.exr"}}}}, "text.exr: cannot read OpenEXR file"},
+      {{{"environment", {{"uri", "text.exr"}}}}, "text.exr: not a readable OpenEXR file"},
       {{{"environment", {{"uri", "nan.exr"}}}}, "texel (5, 2) is (nan"},
       {{{"environment", {{"uri", "inf.exr"}}}}, "texel (1, 0)"},
       {{{"environment", {{"uri", "huge.exr"}}}}, "at most 1e20"},
