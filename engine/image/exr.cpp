@@ -6,12 +6,14 @@
 #include <ImfPartType.h>
 #include <ImfOutputFile.h>
 #include <ImfStdIO.h>
+#include <ImfVersion.h>
 #include <openexr.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -98,6 +100,74 @@ void keepError(exr_const_context_t, exr_result_t, const char* message) {
   if (coreError.empty() && message != nullptr) coreError = message;
 }
 
+// Walks the headers as OpenEXR 3.1's C++ Header::readFrom reads them, which is not always as OpenEXRCore does:
+// the C++ reader takes a known type's value by its layout and ignores the stated size (a channel list runs to its
+// empty name), takes names of up to 33 bytes without a terminator, and allocates an unknown type's stated size, or
+// a preview's width x height x 4, before reading. Throws when such an allocation would exceed what is left of the
+// file. (Fuzzing found files that OpenEXRCore accepts and the C++ reader misreads into a 1.8 GB attribute.)
+void checkCxxHeaderWalk(const std::string& bytes, const std::string& label) {
+  std::int32_t version = 0;
+  std::memcpy(&version, bytes.data() + 4, 4);
+  const std::size_t n = (version & Imf::LONG_NAMES_FLAG) ? 255 : 31;
+  std::size_t at = 8;
+  const auto damaged = [&]() { return Error(label + ": damaged OpenEXR header (raylab's walk of it)"); };
+  const auto need = [&](std::uint64_t count) {
+    if (count > bytes.size() - std::min(at, bytes.size())) throw damaged();
+  };
+  const auto name = [&]() {  // Xdr::read(is, n + 1, c): up to n + 2 bytes, stopping after a NUL
+    std::string text;
+    for (std::size_t read = 0; read <= n + 1; ++read) {
+      need(1);
+      const char c = bytes[at++];
+      if (c == '\0') break;
+      text += c;
+    }
+    return text;
+  };
+  const auto int32 = [&]() {
+    need(4);
+    std::int32_t value = 0;
+    std::memcpy(&value, bytes.data() + at, 4);
+    at += 4;
+    return value;
+  };
+  // Fixed layouts of the C++ library's attribute types; the others are read by their stated size or specially.
+  static const std::map<std::string, std::size_t> kFixed = {
+      {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"double", 8}, {"envmap", 1},
+      {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1}, {"m33f", 36}, {"m33d", 72}, {"m44f", 64},
+      {"m44d", 128}, {"rational", 8}, {"tiledesc", 9}, {"timecode", 8}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16},
+      {"v3i", 12}, {"v3f", 12}, {"v3d", 24}, {"deepImageState", 1}};
+  for (int part = 0; part < 64; ++part) {
+    for (int attributes = 0;; ++attributes) {
+      if (attributes > 10000) throw damaged();
+      const std::string attribute = name();
+      if (attribute.empty()) break;
+      const std::string type = name();
+      const std::int32_t size = int32();
+      if (size < 0) throw damaged();
+      if (const auto fixed = kFixed.find(type); fixed != kFixed.end()) {
+        need(fixed->second);
+        at += fixed->second;
+      } else if (type == "chlist") {
+        for (int channels = 0;; ++channels) {
+          if (channels > 100000) throw damaged();
+          if (name().empty()) break;
+          need(16);  // pixel type, pLinear and reserved, x and y sampling
+          at += 16;
+        }
+      } else if (type == "preview") {
+        const std::uint64_t width = std::uint32_t(int32()), height = std::uint32_t(int32());
+        need(width * height * 4);
+        at += std::size_t(width * height * 4);
+      } else {
+        need(std::uint64_t(size));  // string, stringvector, floatvector, opaque types: allocated, then read
+        at += std::size_t(size);
+      }
+    }
+    if (!(version & Imf::MULTI_PART_FILE_FLAG) || at >= bytes.size() || bytes[at] == '\0') return;
+  }
+}
+
 // Refuses, before OpenEXR's C++ classes see the file: a header the core library does not accept, several parts
 // (which would be read as the first, silently), deep data, and more chunks than the file has room for offsets of
 // (each chunk needs 8 bytes in the file's offset table).
@@ -138,8 +208,9 @@ void checkHeaderAgainstContent(const std::string& bytes, const std::string& labe
     problem = "OpenEXR header promises " + std::to_string(chunks) + " chunks of pixels in a file of " +
               std::to_string(bytes.size()) + " bytes, which cannot even hold their offsets: the file is damaged";
   }
-  // The pixels the header claims, in the file's own channel types, and the buffer of one chunk (up to 256 scan
-  // lines) that the C++ classes allocate at once: both within what the file's content can fill.
+  // The pixels the header claims, in the file's own channel types, within what the file's content can fill; and
+  // the buffer of one chunk, which the C++ classes allocate at once whatever the image's height (a 1-pixel-tall
+  // image of 256-line chunks), within that and a fixed 256 MiB of slack.
   exr_attr_box2i_t window{};
   const exr_attr_chlist_t* channels = nullptr;
   if (problem.empty() && exr_get_data_window(context, 0, &window) == EXR_ERR_SUCCESS &&
@@ -152,7 +223,10 @@ void checkHeaderAgainstContent(const std::string& bytes, const std::string& labe
     if (width > kMaxImageSide || height > kMaxImageSide) {
       problem = "OpenEXR data window of " + std::to_string(width) + "x" + std::to_string(height) +
                 " pixels; raylab reads at most " + std::to_string(kMaxImageSide) + " a side";
-    } else if (width * height * pixelBytes > bound || width * std::min<std::uint64_t>(height, 256) * pixelBytes > bound) {
+    } else if (std::uint64_t chunkBytes = 0;
+               width * height * pixelBytes > bound ||
+               exr_get_chunk_unpacked_size(context, 0, &chunkBytes) != EXR_ERR_SUCCESS ||
+               chunkBytes > bound + (std::uint64_t(256) << 20)) {
       problem = "OpenEXR header claims " + std::to_string(width) + "x" + std::to_string(height) + " pixels of " +
                 std::to_string(channels->num_channels) + " channels in a file of " + std::to_string(bytes.size()) +
                 " bytes, more than any compression holds: the file is damaged";
@@ -160,6 +234,7 @@ void checkHeaderAgainstContent(const std::string& bytes, const std::string& labe
   }
   exr_finish(&context);
   if (!problem.empty()) throw Error(label + ": " + problem);
+  checkCxxHeaderWalk(bytes, label);
 }
 
 }  // namespace
