@@ -38,8 +38,8 @@ void main() {
   value.fresnelSchlickNaive = 0.0;
   value.tir = 0u;
   value.pdf = 0.0;
-  if (c.material.model == kModelGlass) {
-    const GlassEvent event = glassEvent(c.material.eta, wi, n);
+  if (isSpecularOnly(bsdfFlags(c.material))) {
+    const DeltaEvent event = modelDeltaEvent(c.material, wi, n);
     value.fresnelExact = event.fresnelExact;
     value.fresnelSchlick = event.fresnelSchlick;
     value.fresnelSchlickNaive = event.fresnelSchlickNaive;

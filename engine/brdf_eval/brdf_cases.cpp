@@ -82,7 +82,8 @@ BrdfCase parseRow(std::string_view line, int lineNumber, const std::string& sour
   if (id.empty()) throw Error(fieldWhere(where, "id") + ": empty");
 
   row.input.material = parseMaterial(model, params, where);
-  const bool glass = row.input.material.model == gpu::kModelGlass;
+  // A delta BSDF (glass) is evaluated for the light direction alone: its two delta directions and Fresnel.
+  const bool glass = isDeltaOnly(row.input.material.model);
   row.input.wi = parseDirection(wi, fieldWhere(where, "wi"));
   row.input.n = parseDirection(n, fieldWhere(where, "n"));
   for (const auto& [field, text] : {std::pair{"wo", &wo}, std::pair{"t", &t}}) {
@@ -129,9 +130,8 @@ glm::vec3 parseVector(std::string_view text, const std::string& where) {
 gpu::MaterialRecord parseMaterial(std::string_view model, std::string_view params, const std::string& where) {
   const ModelInfo* info = findModel(trim(model));
   if (info == nullptr) {
-    std::string known;
-    for (const ModelInfo& m : allModels()) known += (known.empty() ? "" : ", ") + std::string(m.name);
-    throw Error(fieldWhere(where, "model") + ": unknown model '" + std::string(model) + "' (known: " + known + ")");
+    throw Error(fieldWhere(where, "model") + ": unknown model '" + std::string(model) + "' (known: " + modelNames() +
+                ")");
   }
   gpu::MaterialRecord record = defaultRecord(info->id);
   applyParamList(record, params, fieldWhere(where, "params"));
@@ -186,7 +186,7 @@ std::string formatBrdfValues(std::span<const BrdfCase> cases, std::span<const Br
     std::string prefix;
     for (const std::string& field : cases[i].fields) prefix += field + ",";
     const BrdfResult& r = results[i];
-    if (cases[i].input.material.model != gpu::kModelGlass) {
+    if (!isDeltaOnly(cases[i].input.material.model)) {
       out += prefix + "f," + formatRgb(r.f) + "\n";
       continue;
     }

@@ -1,6 +1,7 @@
 #include "brdf_eval/cpu_evaluator.h"
 
 #include "reference/brdf_reference.h"
+#include "reference/models.h"
 
 namespace raylab {
 
@@ -10,14 +11,13 @@ BrdfResult evaluateBrdfCaseOnCpu(const gpu::BrdfEvalCase& input) {
   const dvec3 wi = glm::normalize(dvec3(input.wi));
   const dvec3 n = glm::normalize(dvec3(input.n));
   BrdfResult result;
-  if (input.material.model == gpu::kModelGlass) {
-    const reference::GlassResult glass = reference::glass(material.eta, wi, n);
-    result.fresnelExact = glass.fresnelExact;
-    result.fresnelSchlick = glass.fresnelSchlick;
-    result.fresnelSchlickNaive = glass.fresnelSchlickNaive;
-    result.tir = glass.tir;
-    result.reflected = glass.reflected;
-    result.refracted = glass.refracted;
+  if (const std::optional<reference::DielectricEvent> event = reference::deltaEvent(material, wi, n)) {
+    result.fresnelExact = event->fresnelExact;
+    result.fresnelSchlick = event->fresnelSchlick;
+    result.fresnelSchlickNaive = event->fresnelSchlickNaive;
+    result.tir = event->tir;
+    result.reflected = event->reflected;
+    result.refracted = event->refracted;
     return result;
   }
   const reference::Frame frame = reference::makeFrame(n, dvec3(input.t));

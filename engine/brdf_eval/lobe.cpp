@@ -26,7 +26,7 @@ std::string vectorText(glm::vec3 v) {
   return text;
 }
 
-bool isGlass(const gpu::MaterialRecord& material) { return material.model == gpu::kModelGlass; }
+bool isGlass(const gpu::MaterialRecord& material) { return isDeltaOnly(material.model); }
 
 }  // namespace
 

@@ -8,59 +8,26 @@
 #include <functional>
 #include <set>
 
+#include "shared/brdf_lobes.h"
 #include "util/error.h"
 
 namespace raylab {
 
 namespace {
 
-constexpr ParamInfo kRhoD{"rho_d", true, 0.0f, 1.0f, 0.5f, false, "diffuse reflectance"};
-constexpr ParamInfo kRhoS{"rho_s", true, 0.0f, 1.0f, 0.5f, false, "specular reflectance"};
-constexpr ParamInfo kS{"s", false, 1.0f, 10000.0f, 50.0f, true, "specular exponent"};
-constexpr ParamInfo kM{"m", false, 0.001f, 1.0f, 0.2f, true, "Beckmann roughness (RMS slope)"};
-constexpr ParamInfo kEta{"eta", false, 1.0f, 10.0f, 1.5f, false, "index of refraction, inside over outside"};
-constexpr ParamInfo kAlphaX{"alpha_x", false, 0.001f, 1.0f, 0.2f, true, "roughness along the tangent"};
-constexpr ParamInfo kAlphaY{"alpha_y", false, 0.001f, 1.0f, 0.2f, true, "roughness along the bitangent"};
-constexpr ParamInfo kRd{"Rd", true, 0.0f, 1.0f, 0.5f, false, "diffuse reflectance"};
-constexpr ParamInfo kRs{"Rs", true, 0.0f, 1.0f, 0.5f, false, "specular reflectance at normal incidence"};
-constexpr ParamInfo kNu{"nu", false, 1.0f, 10000.0f, 100.0f, true, "exponent along the tangent"};
-constexpr ParamInfo kNv{"nv", false, 1.0f, 10000.0f, 100.0f, true, "exponent along the bitangent"};
-constexpr ParamInfo kTint{"tint", true, 0.0f, 1.0f, 1.0f, false, "transmittance colour"};
-constexpr ParamInfo kDelta{"delta", false, 0.0f, 1.0f, 0.0f, false, "mirror-reflection weight"};
+constexpr ParamInfo kDelta{"delta", false, 0.0f, 1.0f, 0.0f, false, "mirror-reflection weight", "", gpu::kNoParam};
 
-const std::vector<ModelInfo>& models() {
-  static const std::vector<ModelInfo> table = {
-      {"lambert", gpu::kModelLambert, {kRhoD}},
-      {"phong", gpu::kModelPhong, {kRhoD, kRhoS, kS}},
-      {"blinnphong", gpu::kModelBlinnPhong, {kRhoD, kRhoS, kS}},
-      {"cooktorrance", gpu::kModelCookTorrance, {kRhoD, kRhoS, kM, kEta}},
-      {"ward", gpu::kModelWard, {kRhoD, kRhoS, kAlphaX, kAlphaY}},
-      {"ward_duer", gpu::kModelWardDuer, {kRhoD, kRhoS, kAlphaX, kAlphaY}},
-      {"ward_gmd", gpu::kModelWardGmd, {kRhoD, kRhoS, kAlphaX, kAlphaY}},
-      {"ashikhmin_shirley", gpu::kModelAshikhminShirley, {kRd, kRs, kNu, kNv}},
-      {"glass", gpu::kModelGlass, {kEta, kTint}},
-  };
-  return table;
+glm::vec3 readSlot(const gpu::MaterialRecord& r, const ParamInfo& p) {
+  if (p.rgb) return {r.params[p.slot], r.params[p.slot + 1], r.params[p.slot + 2]};
+  return glm::vec3(r.params[p.slot]);
 }
 
-// Where each named parameter lives in the record. Rd and Rs share rhoD and rhoS (docs/brdfs.md).
-glm::vec3* rgbSlot(gpu::MaterialRecord& r, std::string_view name) {
-  if (name == "rho_d" || name == "Rd") return &r.rhoD;
-  if (name == "rho_s" || name == "Rs") return &r.rhoS;
-  if (name == "tint") return &r.tint;
-  return nullptr;
-}
-
-float* scalarSlot(gpu::MaterialRecord& r, std::string_view name) {
-  if (name == "s") return &r.s;
-  if (name == "m") return &r.m;
-  if (name == "eta") return &r.eta;
-  if (name == "alpha_x") return &r.alphaX;
-  if (name == "alpha_y") return &r.alphaY;
-  if (name == "nu") return &r.nu;
-  if (name == "nv") return &r.nv;
-  if (name == "delta") return &r.delta;
-  return nullptr;
+void writeSlot(gpu::MaterialRecord& r, const ParamInfo& p, glm::vec3 value) {
+  r.params[p.slot] = value.x;
+  if (p.rgb) {
+    r.params[p.slot + 1] = value.y;
+    r.params[p.slot + 2] = value.z;
+  }
 }
 
 std::string formatRange(const ParamInfo& p) {
@@ -71,19 +38,42 @@ std::string formatRange(const ParamInfo& p) {
 
 }  // namespace
 
-std::span<const ModelInfo> allModels() { return models(); }
+std::span<const ModelInfo> allModels() { return registeredModels(); }
+
+std::string modelNames() {
+  std::string names;
+  for (const ModelInfo& model : allModels()) names += (names.empty() ? "" : ", ") + std::string(model.name);
+  return names;
+}
+
+bool isDeltaOnly(const ModelInfo& model) {
+  return (model.lobes & gpu::kLobeSpecular) != 0 && (model.lobes & (gpu::kLobeDiffuse | gpu::kLobeGlossy)) == 0;
+}
+
+bool isDeltaOnly(std::uint32_t model) { return isDeltaOnly(modelInfo(model)); }
+
+const ParamInfo* findRole(const ModelInfo& model, std::string_view role) {
+  for (const ParamInfo& param : model.params) {
+    if (param.role == role) return &param;
+  }
+  return nullptr;
+}
 
 const ModelInfo* findModel(std::string_view name) {
-  for (const ModelInfo& model : models()) {
+  for (const ModelInfo& model : allModels()) {
     if (model.name == name) return &model;
   }
   return nullptr;
 }
 
+std::uint32_t modelId(std::string_view name) {
+  const ModelInfo* model = findModel(name);
+  if (model == nullptr) throw Error("model '" + std::string(name) + "' is not registered (the models are " + modelNames() + ")");
+  return model->id;
+}
+
 const ModelInfo& modelInfo(std::uint32_t id) {
-  for (const ModelInfo& model : models()) {
-    if (model.id == id) return model;
-  }
+  if (id < allModels().size()) return allModels()[id];
   throw Error("unknown model id " + std::to_string(id));
 }
 
@@ -115,27 +105,34 @@ void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 valu
       throw Error(where + ": " + std::string(name) + " = " + shown + " is outside " + formatRange(*param));
     }
   }
-  if (param->rgb) *rgbSlot(record, name) = value;
-  else *scalarSlot(record, name) = value.x;
+  if (param == &kDelta) record.delta = value.x;
+  else writeSlot(record, *param, value);
 }
 
 glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name) {
-  gpu::MaterialRecord copy = record;
-  if (glm::vec3* rgb = rgbSlot(copy, name)) return *rgb;
-  if (float* scalar = scalarSlot(copy, name)) return glm::vec3(*scalar);
-  throw Error("unknown parameter '" + std::string(name) + "'");
+  const ParamInfo* param = findParam(modelInfo(record.model), name);
+  if (param == nullptr) {
+    throw Error("'" + std::string(name) + "' is not a parameter of " + std::string(modelInfo(record.model).name));
+  }
+  return param == &kDelta ? glm::vec3(record.delta) : readSlot(record, *param);
+}
+
+glm::vec3 previewColour(const gpu::MaterialRecord& record) {
+  const ModelInfo& model = modelInfo(record.model);
+  if (const ParamInfo* diffuse = findRole(model, "diffuse")) return getParam(record, diffuse->name);
+  for (const ParamInfo& param : model.params) {
+    if (param.rgb) return getParam(record, param.name);
+  }
+  return glm::vec3(0.5f);
 }
 
 gpu::MaterialRecord defaultRecord(std::uint32_t model) {
+  const ModelInfo& info = modelInfo(model);
   gpu::MaterialRecord record{};
   record.model = model;
-  // Every slot gets a sane value, so that switching models in the viewer never reads garbage.
-  for (const ModelInfo& m : models()) {
-    for (const ParamInfo& p : m.params) {
-      if (p.rgb) *rgbSlot(record, p.name) = glm::vec3(p.defaultValue);
-      else *scalarSlot(record, p.name) = p.defaultValue;
-    }
-  }
+  for (const ParamInfo& p : info.params) writeSlot(record, p, glm::vec3(p.defaultValue));
+  const ParamInfo* diffuse = findRole(info, "diffuse");
+  record.diffuseParam = diffuse != nullptr && diffuse->rgb ? diffuse->slot : gpu::kNoParam;
   record.delta = kDelta.defaultValue;
   record.baseColorTexture = -1;
   return record;

@@ -1,5 +1,7 @@
-// The models and parameters of docs/brdf_contract.md by name: the one table that the CSV evaluator, glTF
-// materials, the viewer's sliders and `raylab sweep` all read, so that names, ranges and defaults agree.
+// The models and parameters by name: the table generated from the model registry (shaders/brdf/models.cmake)
+// and the parameter table each model's GLSL file opens with (docs/extending.md). The CSV evaluator, glTF
+// materials, the viewer's sliders, `raylab sweep`, `raylab brdf models` and Python all read it, so that names,
+// ranges and defaults agree.
 #pragma once
 
 #include <cstdint>
@@ -23,16 +25,37 @@ struct ParamInfo {
   float defaultValue;     // each channel for RGB parameters
   bool logScale;          // exponents and roughness: sliders and sweeps go geometrically
   std::string_view meaning;
+  // What the parameter means across models, for switching a material's model (the viewer carries the
+  // appearance over) and for textures (which multiply the `diffuse` one): diffuse, specular, eta, slope,
+  // slope_x, slope_y, exponent (Blinn's, of N.H), mirror_exponent (Phong's, of R.wo), exponent_x, exponent_y;
+  // empty for none.
+  std::string_view role;
+  std::uint32_t slot;     // first float in MaterialRecord::params
 };
 
 struct ModelInfo {
   std::string_view name;  // "cooktorrance"
-  std::uint32_t id;       // gpu::kModel...
+  std::uint32_t id;       // the registry's order
+  std::uint32_t lobes;    // gpu::kLobe... flags (shared/brdf_lobes.h)
   std::vector<ParamInfo> params;  // without delta, which every material has
+  std::string_view sweepBase;     // a parameter list a sweep starts from (empty: the defaults)
+  std::string_view glslFile;      // relative to the source tree
+  std::string_view referenceFile;
 };
 
+// The registry's table (generated: brdf_model_table.cpp), in id order.
+const std::vector<ModelInfo>& registeredModels();
 std::span<const ModelInfo> allModels();
+// "lambert, phong, ...": every model's name, for messages and help.
+std::string modelNames();
+// True for a model of delta lobes only (glass): no f, no density; the integrators follow its DeltaEvent.
+bool isDeltaOnly(const ModelInfo& model);
+bool isDeltaOnly(std::uint32_t model);
+// The parameter of `model` with `role`, or null.
+const ParamInfo* findRole(const ModelInfo& model, std::string_view role);
 const ModelInfo* findModel(std::string_view name);
+// The id of a model the code itself names (a built-in scene's, an importer's); throws Error when absent.
+std::uint32_t modelId(std::string_view name);
 const ModelInfo& modelInfo(std::uint32_t id);
 // delta: the mirror-reflection weight every material carries.
 const ParamInfo& deltaParam();
@@ -50,6 +73,10 @@ glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name);
 // ignored, RGB values as r/g/b (one number: grey). Sets each on `record` (whose model is set) with setParam's
 // checks; a name given twice or a malformed value throws Error starting with `where`.
 void applyParamList(gpu::MaterialRecord& record, std::string_view text, const std::string& where);
+
+// The colour a material shows at a glance (glTF viewers, a Lambert stand-in): its model's diffuse colour, else
+// its first colour (glass's tint), else grey.
+glm::vec3 previewColour(const gpu::MaterialRecord& record);
 
 // A record of `model` with every parameter at its default.
 gpu::MaterialRecord defaultRecord(std::uint32_t model);

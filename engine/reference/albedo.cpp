@@ -6,6 +6,7 @@
 #include "reference/cubature.h"
 #include "reference/models.h"
 #include "reference/terms.h"
+#include "shared/brdf_lobes.h"
 
 namespace raylab::reference {
 
@@ -13,25 +14,9 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// The widths of the specular lobe along the two axes of its gnomonic coordinates, in units of the slope
-// (tan of the angle from the lobe's centre), chosen so that the lobe is about exp(-radius^2) in them.
-dvec2 lobeWidths(const Material& material) {
-  switch (material.model) {
-    case gpu::kModelPhong:  // c^s ~ exp(-s beta^2 / 2) around R, in wi space
-    case gpu::kModelBlinnPhong: return dvec2(std::sqrt(2.0 / material.s));  // (N.H)^s, likewise in H
-    case gpu::kModelCookTorrance: return dvec2(material.m);                  // exp(-tan^2 / m^2)
-    case gpu::kModelWard:
-    case gpu::kModelWardDuer:
-    case gpu::kModelWardGmd: return {material.alphaX, material.alphaY};     // exp(-(p/ax)^2 - (q/ay)^2)
-    case gpu::kModelAshikhminShirley:  // (N.H)^k ~ exp(-(nu p^2 + nv q^2) / 2)
-      return {std::sqrt(2.0 / material.nu), std::sqrt(2.0 / material.nv)};
-    default: return dvec2(1.0);
-  }
-}
-
 // The largest radius rho >= 0 along the ray (p, q) = rho (a, b) of the gnomonic coordinates for which wi
 // stays above the horizon; infinity when it never meets it.
-double phongHorizonRadius(const Frame& around, double a, double b) {
+double mirrorHorizonRadius(const Frame& around, double a, double b) {
   // wi ~ R + p t + q b: wi.z = R.z + rho (a t.z + b b.z), linear in rho.
   const double slope = a * around.t.z + b * around.b.z;
   return slope >= 0.0 ? kInfinity : around.n.z / -slope;
@@ -48,12 +33,13 @@ double halfVectorHorizonRadius(const dvec3& wo, double a, double b) {
 
 // The integrand of the specular term in (v, psi): the radius is rho = tan(v tau*(psi)), with tau* = atan of
 // the horizon radius, so that v in [0, 1] spans exactly the directions above the horizon.
-dvec3 specularIntegrand(const Material& material, const dvec3& wo, const Frame& phongFrame, const dvec2& width,
+dvec3 specularIntegrand(const Material& material, const SpecularLobe& lobe, const dvec3& wo, const Frame& mirrorFrame,
                         double v, double psi) {
+  const dvec2 width = lobe.widths;
   const double a = width.x * std::cos(psi);
   const double b = width.y * std::sin(psi);
-  const bool phong = material.model == gpu::kModelPhong;
-  const double horizon = phong ? phongHorizonRadius(phongFrame, a, b) : halfVectorHorizonRadius(wo, a, b);
+  const bool aroundMirror = lobe.aroundMirror;
+  const double horizon = aroundMirror ? mirrorHorizonRadius(mirrorFrame, a, b) : halfVectorHorizonRadius(wo, a, b);
   const double tauMax = std::atan(horizon);  // pi/2 for an infinite radius
   const double rho = std::tan(v * tauMax);
   const double p = rho * a;
@@ -63,8 +49,8 @@ dvec3 specularIntegrand(const Material& material, const dvec3& wo, const Frame& 
   const double jacobian = width.x * width.y * rho * (1.0 + rho * rho) * tauMax / (secant2 * std::sqrt(secant2));
   dvec3 wi;
   double extra = 1.0;
-  if (phong) {
-    wi = glm::normalize(phongFrame.n + p * phongFrame.t + q * phongFrame.b);
+  if (aroundMirror) {
+    wi = glm::normalize(mirrorFrame.n + p * mirrorFrame.t + q * mirrorFrame.b);
   } else {
     const dvec3 H = dvec3(p, q, 1.0) / std::sqrt(secant2);
     const double VoH = glm::dot(wo, H);
@@ -83,7 +69,7 @@ dvec3 directionFromAngles(double theta, double phi) {
 
 Albedo directionalAlbedo(const Material& material, const dvec3& wo, const AlbedoOptions& options) {
   Albedo albedo;
-  if (!aboveHorizon(wo, wo) || material.model == gpu::kModelGlass) return albedo;
+  if (!aboveHorizon(wo, wo) || (lobeFlags(material) & (gpu::kLobeDiffuse | gpu::kLobeGlossy)) == 0) return albedo;
   CubatureOptions cubature;
   cubature.relTolerance = options.relTolerance;
   cubature.maxRegions = options.maxRegions;
@@ -101,11 +87,10 @@ Albedo directionalAlbedo(const Material& material, const dvec3& wo, const Albedo
 
   CubatureResult specular;
   specular.converged = true;
-  if (material.model != gpu::kModelLambert) {
-    const Frame phongFrame = makeFrame(dvec3(-wo.x, -wo.y, wo.z), dvec3(0.0));
-    const dvec2 width = lobeWidths(material);
+  if (const std::optional<SpecularLobe> lobe = specularLobe(material)) {
+    const Frame mirrorFrame = makeFrame(dvec3(-wo.x, -wo.y, wo.z), dvec3(0.0));
     specular = integrate2d(
-        [&](double v, double psi) { return specularIntegrand(material, wo, phongFrame, width, v, psi); },
+        [&](double v, double psi) { return specularIntegrand(material, *lobe, wo, mirrorFrame, v, psi); },
         dvec2(0.0, 0.0), dvec2(1.0, 2.0 * kPi), cubature);
   }
   albedo.diffuse = diffuse.value;

@@ -6,8 +6,8 @@
 // (slope) coordinates around the lobe's centre, stretched by the lobe's widths so that the lobe becomes a
 // round bump of unit size, in polar form (radius, angle); the radius runs up to where wi meets the horizon
 // along each angle, so that the horizon is an edge of the domain instead of a cut through it:
-//   - phong: around the mirror direction of wo, in wi space;
-//   - every other model: around n in half-vector space, wi = reflect(wo, H), dwi = 4 (wo.H) dH.
+//   - a lobe around the mirror direction of wo (SpecularLobe::aroundMirror): in wi space;
+//   - any other lobe: around n in half-vector space, wi = reflect(wo, H), dwi = 4 (wo.H) dH.
 #pragma once
 
 #include "reference/brdf_reference.h"

@@ -9,6 +9,8 @@
 // the GPU's own rounding and not a difference of inputs.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -20,21 +22,16 @@ namespace raylab::reference {
 using glm::dvec2;
 using glm::dvec3;
 
-// A material in double precision: the exact values of a gpu::MaterialRecord (Rd, Rs live in rhoD, rhoS).
+// A material in double precision: the exact values of a gpu::MaterialRecord. Each model reads its parameters
+// through the struct the registry generates for it (generated/reference_params.h: <prefix>Params).
 struct Material {
-  std::uint32_t model = gpu::kModelLambert;
-  dvec3 rhoD{0.0};
-  dvec3 rhoS{0.0};
-  dvec3 tint{1.0};
+  std::uint32_t model = 0;
   double delta = 0.0;
-  double eta = 1.5;
-  double s = 1.0;
-  double m = 0.1;
-  double alphaX = 0.1;
-  double alphaY = 0.1;
-  double nu = 1.0;
-  double nv = 1.0;
+  std::array<double, gpu::kMaxMaterialParams> params{};
 };
+inline dvec3 paramRgb(const Material& material, std::size_t slot) {
+  return {material.params[slot], material.params[slot + 1], material.params[slot + 2]};
+}
 
 Material fromRecord(const gpu::MaterialRecord& record);
 
@@ -48,7 +45,7 @@ struct Frame {
 Frame makeFrame(dvec3 n, dvec3 t);
 dvec3 toLocal(const Frame& frame, const dvec3& w);
 
-// f(wi, wo) of any non-glass model, in the local frame, RGB. Exactly 0 when wi.z <= 0 or wo.z <= 0 (and when
+// f(wi, wo) of any model that is not a delta BSDF, in the local frame, RGB. Exactly 0 when wi.z <= 0 or wo.z <= 0 (and when
 // a component is NaN or infinite); 0 for glass. Guards beyond the contract's: the specular term is 0 when
 // V.H = (wo.h)/|h| <= 0, which cannot happen for unit wi, wo above the horizon (wo.h = 1 + wi.wo > 0) but can
 // through the rounding of non-unit inputs at the grazing mirror configuration; h itself is never zero there
@@ -68,21 +65,21 @@ struct Sample {
 };
 Sample sample(const Material& material, const dvec3& wo, const dvec3& u);
 double pdf(const Material& material, const dvec3& wi, const dvec3& wo);
-// Probability that sample() picks the specular lobe: sum(rho_s)/(sum(rho_d) + sum(rho_s)), 0.5 when both are
-// 0, 0 for lambert and glass.
+// Probability that sample() picks the specular lobe (the model's SpecularLobe; 0 without a glossy lobe).
 double specularProbability(const Material& material);
 
-// Smooth dielectric (model glass). eta = n_inside / n_outside, n the outward normal; wi in the same space as
+// A smooth dielectric interface (the physics of the delta BSDF glass). eta = n_inside / n_outside, n the outward normal; wi in the same space as
 // n (not necessarily local). See docs/brdf_contract.md for which side is which. eta = 1 is no interface at all:
 // F_exact = 0, no TIR and refracted = -wi, even at cos_i = 0 where Snell's sin^2 reaches 1.
-struct GlassResult {
+struct DielectricEvent {
   double fresnelExact = 0.0;        // F_exact
   double fresnelSchlick = 0.0;      // F_schlick: cosine on the optically thinner side, 1 under TIR
   double fresnelSchlickNaive = 0.0; // F_schlick_naive: always cos_i
   bool tir = false;
   dvec3 reflected{0.0};
   dvec3 refracted{0.0};  // zero under total internal reflection
+  dvec3 transmittance{1.0};  // the model's colour on the refracted branch as it enters
 };
-GlassResult glass(double eta, const dvec3& wi, const dvec3& n);
+DielectricEvent dielectricEvent(double eta, const dvec3& wi, const dvec3& n);
 
 }  // namespace raylab::reference

@@ -1,10 +1,16 @@
-// The per-model functions of the reference, named as in the GLSL (<model>Eval, ...). Each model's f is a
-// diffuse term plus a specular term; the reference keeps the two apart (Lobes) so that the albedo quadrature
-// can integrate each in coordinates that suit it. eval() of brdf_reference.h is their sum.
+// What the reference's models share, and its dispatch over them. Each model is one file (models/<name>.cpp,
+// or a file the registry names) defining the functions generated/reference_params.h declares for it:
+// <prefix>Eval, and for a glossy lobe <prefix>SampleSpecular, <prefix>PdfSpecular and <prefix>SpecularLobe, or
+// for a delta BSDF <prefix>DeltaEvent. Each model's f is a diffuse term plus a specular term; the reference
+// keeps the two apart (Lobes) so that the albedo quadrature can integrate each in coordinates that suit it.
+// eval() of brdf_reference.h is their sum.
 //
-// Every function here works in the local shading frame (z = n) on unit wi, wo; the <model>Eval functions
+// Every function here works in the local shading frame (z = n) on unit wi, wo; the <prefix>Eval functions
 // return exactly zero unless wi.z > 0 and wo.z > 0 (and both are finite).
 #pragma once
+
+#include <cstdint>
+#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -18,36 +24,31 @@ struct Lobes {
   dvec3 sum() const { return diffuse + specular; }
 };
 
+// A model's glossy lobe, for the sampler's mixture and the albedo quadrature.
+struct SpecularLobe {
+  double probability = 0.0;  // that sample() picks this lobe rather than the cosine-weighted diffuse one
+  // Widths along the two axes of the lobe's gnomonic coordinates, in units of the slope (tan of the angle from
+  // its centre), chosen so that the lobe is about exp(-radius^2) in them.
+  dvec2 widths{1.0};
+  bool aroundMirror = false;  // centred on the mirror direction of wo (Phong), else on the normal in H space
+};
+
 // The one-sidedness guard of the contract: both directions strictly above the horizon. NaN fails it.
 bool aboveHorizon(const dvec3& wi, const dvec3& wo);
 
-Lobes lambertEval(const Material& material, const dvec3& wi, const dvec3& wo);
-Lobes phongEval(const Material& material, const dvec3& wi, const dvec3& wo);
-Lobes blinnPhongEval(const Material& material, const dvec3& wi, const dvec3& wo);
-Lobes cookTorranceEval(const Material& material, const dvec3& wi, const dvec3& wo);
-Lobes wardEval(const Material& material, const dvec3& wi, const dvec3& wo);
-Lobes wardDuerEval(const Material& material, const dvec3& wi, const dvec3& wo);
-Lobes wardGmdEval(const Material& material, const dvec3& wi, const dvec3& wo);
-Lobes ashikhminShirleyEval(const Material& material, const dvec3& wi, const dvec3& wo);
-// Dispatch on material.model; zero for glass (a delta BSDF).
-Lobes evalLobes(const Material& material, const dvec3& wi, const dvec3& wo);
+// The mixture of the shared brief (docs/brdfs.md, "Sampling"): sum(rho_s) / (sum(rho_d) + sum(rho_s)), 0.5
+// when both are 0.
+double mixtureProbability(const dvec3& diffuse, const dvec3& specular);
 
-// The specular lobe's sampler (u = (u.y, u.z) of the sample triple; the returned direction may lie below the
-// horizon, which makes the sample fail) and its density per unit solid angle of wi, for wi and wo above the
-// horizon. The strategies are those of the shared brief (docs/brdfs.md, "Sampling"). The ward sampler is
-// shared by ward, ward_duer and ward_gmd.
-dvec3 phongSampleSpecular(const Material& material, const dvec3& wo, const dvec2& u);
-double phongPdfSpecular(const Material& material, const dvec3& wi, const dvec3& wo);
-dvec3 blinnPhongSampleSpecular(const Material& material, const dvec3& wo, const dvec2& u);
-double blinnPhongPdfSpecular(const Material& material, const dvec3& wi, const dvec3& wo);
-dvec3 cookTorranceSampleSpecular(const Material& material, const dvec3& wo, const dvec2& u);
-double cookTorrancePdfSpecular(const Material& material, const dvec3& wi, const dvec3& wo);
-dvec3 wardSampleSpecular(const Material& material, const dvec3& wo, const dvec2& u);
-double wardPdfSpecular(const Material& material, const dvec3& wi, const dvec3& wo);
-dvec3 ashikhminShirleySampleSpecular(const Material& material, const dvec3& wo, const dvec2& u);
-double ashikhminShirleyPdfSpecular(const Material& material, const dvec3& wi, const dvec3& wo);
-// Dispatch; lambert and glass have no specular lobe (direction 0, density 0).
+// The dispatch on material.model (generated: reference_dispatch.cpp). evalLobes is zero for a delta BSDF;
+// sampleSpecular, pdfSpecular and specularLobe are zero or empty without a glossy lobe; deltaEvent is empty
+// unless the model is a delta BSDF. The sampled direction may lie below the horizon, which makes the sample
+// fail; the density is per unit solid angle of wi, for wi and wo above the horizon.
+Lobes evalLobes(const Material& material, const dvec3& wi, const dvec3& wo);
 dvec3 sampleSpecular(const Material& material, const dvec3& wo, const dvec2& u);
 double pdfSpecular(const Material& material, const dvec3& wi, const dvec3& wo);
+std::optional<SpecularLobe> specularLobe(const Material& material);
+std::optional<DielectricEvent> deltaEvent(const Material& material, const dvec3& wi, const dvec3& n);
+std::uint32_t lobeFlags(const Material& material);
 
 }  // namespace raylab::reference

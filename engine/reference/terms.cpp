@@ -45,26 +45,4 @@ double G_TorranceSparrow(double NoH, double NoV, double NoL, double VoH) {
   return std::min({1.0, 2.0 * NoH * NoV / VoH, 2.0 * NoH * NoL / VoH});
 }
 
-double wardExponent(const dvec3& h, double alphaX, double alphaY) {
-  const double x = h.x / alphaX;
-  const double y = h.y / alphaY;
-  return (x * x + y * y) / (h.z * h.z);
-}
-
-double AS_exponent(const dvec3& h, double nu, double nv) {
-  // hypot and the ratios keep k a weighted mean of nu and nv even when h_x^2 + h_y^2 would underflow.
-  const double r = std::hypot(h.x, h.y);
-  if (r == 0.0) return nu;
-  const double c = h.x / r;
-  const double s = h.y / r;
-  return nu * c * c + nv * s * s;
-}
-
-double AS_lobe(const dvec3& h, double nu, double nv) { return powCosThetaH(tan2ThetaH(h), AS_exponent(h, nu, nv)); }
-
-double AS_diffuseFalloff(double cosTheta) {
-  const double x = 0.5 * cosTheta;
-  return x * (5.0 + x * (-10.0 + x * (10.0 + x * (-5.0 + x))));
-}
-
 }  // namespace raylab::reference

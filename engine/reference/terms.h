@@ -42,20 +42,4 @@ double F_DielectricExact(double etaI, double etaT, double cosI, double cosT);
 // Blinn 1977 and Cook & Torrance 1982): min(1, 2 NoH NoV / VoH, 2 NoH NoL / VoH). Needs VoH > 0.
 double G_TorranceSparrow(double NoH, double NoV, double NoL, double VoH);
 
-// Ward's exponent (Ward, "Measuring and Modeling Anisotropic Reflection", SIGGRAPH 1992, eq. 5b with the
-// contract's h): e = ((h_x / ax)^2 + (h_y / ay)^2) / h_z^2.
-double wardExponent(const dvec3& h, double alphaX, double alphaY);
-
-// Ashikhmin & Shirley, "An Anisotropic Phong BRDF Model", JGT 5(2), 2000, eq. 4: the exponent of N.H,
-// k = (nu h_x^2 + nv h_y^2) / (h_x^2 + h_y^2) = nu cos^2 phi_h + nv sin^2 phi_h; nu when h_x = h_y = 0
-// (there N.H = 1 and the lobe factor is 1 whatever k is).
-double AS_exponent(const dvec3& h, double nu, double nv);
-
-// Ashikhmin & Shirley 2000, eq. 4: the lobe (N.H)^k with k = AS_exponent(h), as powCosThetaH(tan^2, k).
-double AS_lobe(const dvec3& h, double nu, double nv);
-
-// Ashikhmin & Shirley 2000, eq. 5: 1 - (1 - cos/2)^5 as x (5 - 10x + 10x^2 - 5x^3 + x^4) with x = cos/2.
-// The naive form cancels at grazing (cos = 1e-7 loses half the digits even in double).
-double AS_diffuseFalloff(double cosTheta);
-
 }  // namespace raylab::reference

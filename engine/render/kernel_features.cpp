@@ -10,7 +10,7 @@ KernelFeatures featuresOf(const Scene& scene) {
   KernelFeatures f;
   for (const Material& material : scene.materials) {
     f.models |= 1u << material.record.model;
-    if (material.record.model == gpu::kModelGlass) f.features |= gpu::kFeatureGlass;
+    if (isDeltaOnly(material.record.model)) f.features |= gpu::kFeatureDeltaBsdf;
     if (material.record.delta > 0.0f) f.features |= gpu::kFeatureMirror;
     if (material.record.baseColorTexture >= 0) f.features |= gpu::kFeatureTextures;
   }
@@ -48,7 +48,7 @@ std::string describe(const KernelFeatures& features) {
     std::uint32_t bit;
     const char* name;
   };
-  constexpr Named kNames[] = {{gpu::kFeatureGlass, "glass"},
+  constexpr Named kNames[] = {{gpu::kFeatureDeltaBsdf, "glass"},
                               {gpu::kFeatureMirror, "mirror reflection"},
                               {gpu::kFeaturePointLights, "point lights"},
                               {gpu::kFeatureSpotLights, "spot lights"},
@@ -62,7 +62,7 @@ std::string describe(const KernelFeatures& features) {
   }
   return std::string("integrator: ") + integratorName(features.integrator) + "; models: " + (models.empty() ? std::string("none") : models) +
          "; features: " + (list.empty() ? std::string("none") : list) +
-         ((features.features & gpu::kFeatureGlass) && features.schlickFresnel ? "; glass Fresnel: Schlick" : "");
+         ((features.features & gpu::kFeatureDeltaBsdf) && features.schlickFresnel ? "; glass Fresnel: Schlick" : "");
 }
 
 KernelFeatures kernelFor(const Scene& scene, const KernelOptions& options) {

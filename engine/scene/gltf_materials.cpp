@@ -171,23 +171,19 @@ class TextureConverter {
   std::uint64_t decodedTexels_ = 0;
 };
 
-bool hasRhoD(std::uint32_t model) {
-  for (const ParamInfo& param : modelInfo(model).params) {
-    if (param.name == "rho_d" || param.name == "Rd") return true;
-  }
-  return false;
-}
+// A base-colour texture multiplies the model's diffuse colour (MaterialRecord::diffuseParam).
+bool hasDiffuseColour(std::uint32_t model) { return findRole(modelInfo(model), "diffuse") != nullptr; }
 
 }  // namespace
 
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where) {
   if (input.transmission >= 1.0f) {
-    gpu::MaterialRecord record = defaultRecord(gpu::kModelGlass);
+    gpu::MaterialRecord record = defaultRecord(modelId("glass"));
     setParam(record, "eta", glm::vec3(input.ior), where + " (KHR_materials_ior)");
     setParam(record, "tint", input.baseColor, where + " (base colour as glass tint)");
     return record;
   }
-  gpu::MaterialRecord record = defaultRecord(gpu::kModelCookTorrance);
+  gpu::MaterialRecord record = defaultRecord(modelId("cooktorrance"));
   // glTF's specular reflectance at normal incidence: F0 of the ior for dielectrics, the base colour for metals.
   const glm::vec3 f0 = glm::mix(glm::vec3(schlickF0(input.ior)), input.baseColor, input.metallic);
   const float f0Max = std::max({f0.r, f0.g, f0.b});
@@ -211,9 +207,7 @@ void applyRaylabMaterial(gpu::MaterialRecord& record, const json& raylab, const 
   if (const auto model = raylab.find("model"); model != raylab.end()) {
     const ModelInfo* info = model->is_string() ? findModel(model->get<std::string>()) : nullptr;
     if (info == nullptr) {
-      std::string known;
-      for (const ModelInfo& m : allModels()) known += (known.empty() ? "" : ", ") + std::string(m.name);
-      throw Error(extras + ".model: " + quote(*model) + " is not a model (the models are " + known + ")");
+      throw Error(extras + ".model: " + quote(*model) + " is not a model (the models are " + modelNames() + ")");
     }
     record = defaultRecord(info->id);
   }
@@ -276,7 +270,7 @@ void convertMaterials(Document& document, Scene& scene) {
     if (pbr.baseColorTexture.index >= 0) {
       if (pbr.baseColorTexture.texCoord != 0) {
         document.ignore("base-colour textures on TEXCOORD_1 and above");
-      } else if (hasRhoD(record.model)) {
+      } else if (hasDiffuseColour(record.model)) {
         record.baseColorTexture =
             textures.convert(pbr.baseColorTexture.index, describe("material", int(i), material.name));
       }

@@ -5,9 +5,8 @@
 namespace raylab {
 
 gpu::MaterialRecord lambertMaterial(glm::vec3 rhoD, float delta) {
-  gpu::MaterialRecord record = defaultRecord(gpu::kModelLambert);
-  record.rhoD = rhoD;
-  record.rhoS = glm::vec3(0.0f);
+  gpu::MaterialRecord record = defaultRecord(modelId("lambert"));
+  setParam(record, "rho_d", rhoD, "built-in lambert material");
   record.delta = delta;
   return record;
 }

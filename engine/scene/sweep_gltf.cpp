@@ -135,16 +135,10 @@ Value raylabMaterial(const gpu::MaterialRecord& record) {
   return Value(Value::Object{{"raylab", Value(std::move(raylab))}});
 }
 
-// The colour other glTF viewers show: the diffuse colour, or glass's tint.
-glm::vec3 previewColour(const gpu::MaterialRecord& record) {
-  if (record.model == gpu::kModelGlass) return record.tint;
-  return record.rhoD;
-}
-
 tinygltf::Material material(const Material& source) {
   tinygltf::Material material;
   material.name = source.name;
-  const glm::vec3 preview = previewColour(source.record);
+  const glm::vec3 preview = previewColour(source.record);  // the colour other glTF viewers show
   material.pbrMetallicRoughness.baseColorFactor = {tidy(preview.r), tidy(preview.g), tidy(preview.b), 1.0};
   material.pbrMetallicRoughness.metallicFactor = 0.0;
   material.pbrMetallicRoughness.roughnessFactor = 0.5;

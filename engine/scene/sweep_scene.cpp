@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "brdf_params/material_params.h"
+#include "shared/brdf_lobes.h"
 #include "util/error.h"
 
 namespace raylab {
@@ -157,24 +158,10 @@ std::vector<float> sweepValues(float from, float to, std::uint32_t steps, bool l
 
 gpu::MaterialRecord sweepBaseMaterial(std::uint32_t model) {
   gpu::MaterialRecord record = defaultRecord(model);
-  switch (model) {
-    case gpu::kModelPhong:
-    case gpu::kModelBlinnPhong:
-    case gpu::kModelCookTorrance:
-    case gpu::kModelWard:
-    case gpu::kModelWardDuer:
-    case gpu::kModelWardGmd:
-      record.rhoD = glm::vec3(0.1f);
-      record.rhoS = glm::vec3(0.9f);
-      break;
-    case gpu::kModelAshikhminShirley:
-      // The model scales its diffuse term by (1 - Rs): a dielectric's small Rs keeps the body in view.
-      record.rhoD = glm::vec3(0.2f);
-      record.rhoS = glm::vec3(0.1f);
-      break;
-    default:
-      break;
-  }
+  // The model's own starting point (the `sweep:` line of its GLSL table), e.g. a small diffuse term so that a
+  // sweep of the specular lobe shows the lobe.
+  const ModelInfo& info = modelInfo(model);
+  applyParamList(record, info.sweepBase, "the sweep base of " + std::string(info.name));
   return record;
 }
 
@@ -205,7 +192,7 @@ SweepScene makeSweepScene(const SweepSpec& spec) {
     const float x = (float(i) - 0.5f * float(spec.steps - 1)) * kSpacing;
     scene.spheres.push_back({{x, 0.0f, 0.0f}, kRadius, static_cast<std::uint32_t>(scene.materials.size() - 1)});
   }
-  sweep.stage = model->id == gpu::kModelGlass ? SweepStage::kCheckerWall
+  sweep.stage = (model->lobes & gpu::kLobeTransmission) != 0 ? SweepStage::kCheckerWall
                 : mirrors                     ? SweepStage::kCheckerFloor
                                               : SweepStage::kPlain;
   addStage(scene, sweep.stage, spec.steps);

@@ -144,8 +144,9 @@ void updateLobePlot(const Device& device, LobePlot& plot, const gpu::MaterialRec
 bool drawLobePlot(LobePlot& plot) {
   const bool changed =
       ImGui::SliderFloat("theta_i", &plot.thetaIDegrees, 0.0f, 89.0f, "%.0f deg", ImGuiSliderFlags_AlwaysClamp);
-  if (plot.left && plot.left->material.model == gpu::kModelGlass) {
-    ImGui::TextWrapped("glass is a delta BSDF (a mirror and a refraction direction): it has no lobe to plot");
+  if (plot.left && isDeltaOnly(plot.left->material.model)) {
+    ImGui::TextWrapped("%s is a delta BSDF (a mirror and a refraction direction): it has no lobe to plot",
+                       std::string(modelInfo(plot.left->material.model).name).c_str());
     return changed;
   }
   const float width = ImGui::GetContentRegionAvail().x;

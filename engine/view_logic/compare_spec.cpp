@@ -16,12 +16,6 @@ std::string materialNames(const Scene& scene) {
   return names;
 }
 
-std::string modelNames() {
-  std::string names;
-  for (const ModelInfo& model : allModels()) names += (names.empty() ? "" : ", ") + std::string(model.name);
-  return names;
-}
-
 }  // namespace
 
 CompareSpec parseCompareSpec(const std::string& text, const Scene& scene, const std::string& where) {

@@ -269,9 +269,7 @@ SceneEffect applyToScene(const ScriptEvent& event, Scene& scene) {
       if (event.action == ScriptAction::kModel) {
         const ModelInfo* model = findModel(event.param);
         if (model == nullptr) {
-          std::string known;
-          for (const ModelInfo& m : allModels()) known += (known.empty() ? "" : ", ") + std::string(m.name);
-          throw Error(event.where + ": unknown model '" + event.param + "' (models: " + known + ")");
+          throw Error(event.where + ": unknown model '" + event.param + "' (models: " + modelNames() + ")");
         }
         switchModel(material->record, model->id);
       } else {

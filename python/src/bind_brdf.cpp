@@ -257,8 +257,9 @@ void bindBrdf(py::module_& parent) {
          std::optional<std::uint32_t> device) {
         checkBackend(backend);
         const gpu::MaterialRecord record = material(model, params);
-        if (record.model == gpu::kModelGlass) {
-          usage("raylab.brdf.albedo: glass is a delta BSDF and has no albedo integral");
+        if (isDeltaOnly(record.model)) {
+          usage("raylab.brdf.albedo: " + std::string(modelInfo(record.model).name) +
+                " is a delta BSDF and has no albedo integral");
         }
         if (!(tolerance >= 1e-12 && tolerance <= 1e-2)) usage("raylab.brdf.albedo: tolerance must be within [1e-12, 0.01]");
         if (samples < 1 || samples > (1u << 22)) usage("raylab.brdf.albedo: samples must be within 1..4194304");

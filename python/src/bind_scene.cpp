@@ -207,9 +207,7 @@ void applyParams(gpu::MaterialRecord& record, const py::dict& params, const std:
 gpu::MaterialRecord recordOf(const std::string& modelName, const py::dict& params, const std::string& where) {
   const ModelInfo* model = findModel(modelName);
   if (model == nullptr) {
-    std::string names;
-    for (const ModelInfo& m : allModels()) names += (names.empty() ? "" : ", ") + std::string(m.name);
-    usage(where + ": '" + modelName + "' is not a BRDF model (models: " + names + ")");
+    usage(where + ": '" + modelName + "' is not a BRDF model (models: " + modelNames() + ")");
   }
   gpu::MaterialRecord record = defaultRecord(model->id);
   applyParams(record, params, where);

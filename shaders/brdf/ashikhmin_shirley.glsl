@@ -1,11 +1,15 @@
 // Ashikhmin-Shirley: an anisotropic Phong lobe of the half vector with Schlick's Fresnel, and a diffuse
 // term that gives way to it at grazing angles.
-// | parameter | range      | default | meaning                                  |
-// |-----------|------------|---------|------------------------------------------|
-// | Rd        | [0, 1]     | 0.5     | diffuse reflectance, RGB                 |
-// | Rs        | [0, 1]     | 0.5     | specular reflectance at normal incidence |
-// | nu        | [1, 10000] | 100     | exponent along the tangent               |
-// | nv        | [1, 10000] | 100     | exponent along the bitangent             |
+// lobes: reflection diffuse glossy
+// sweep: Rd=0.2, Rs=0.1
+// (The model scales its diffuse term by (1 - Rs): in a sweep, a dielectric's small Rs keeps the body in view.
+// Rs is a Fresnel reflectance, not a lobe's weight: it has no role, so switching models does not carry it.)
+// | parameter | range      | default | kind           | meaning                                  |
+// |-----------|------------|---------|----------------|------------------------------------------|
+// | Rd        | [0, 1]     | 0.5     | rgb diffuse    | diffuse reflectance                      |
+// | Rs        | [0, 1]     | 0.5     | rgb            | specular reflectance at normal incidence |
+// | nu        | [1, 10000] | 100     | log exponent_x | exponent along the tangent               |
+// | nv        | [1, 10000] | 100     | log exponent_y | exponent along the bitangent             |
 // Ashikhmin & Shirley, "An Anisotropic Phong BRDF Model", JGT 5(2), 2000: eqs. 4 (specular), 5 (diffuse)
 // and 9 (sampling).
 //   spec = sqrt((nu+1)(nv+1)) / (8 pi) (N.H)^k / ((H.L) max(cos_i, cos_o)) F,  k = (nu h_x^2 + nv h_y^2) / (h_x^2 + h_y^2),

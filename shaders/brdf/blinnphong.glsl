@@ -1,9 +1,11 @@
 // Blinn-Phong: a cosine-power lobe of the half vector around the normal plus a Lambertian term.
-// | parameter | range      | default | meaning                   |
-// |-----------|------------|---------|---------------------------|
-// | rho_d     | [0, 1]     | 0.5     | diffuse reflectance, RGB  |
-// | rho_s     | [0, 1]     | 0.5     | specular reflectance, RGB |
-// | s         | [1, 10000] | 50      | specular exponent         |
+// lobes: reflection diffuse glossy
+// sweep: rho_d=0.1, rho_s=0.9
+// | parameter | range      | default | kind         | meaning              |
+// |-----------|------------|---------|--------------|----------------------|
+// | rho_d     | [0, 1]     | 0.5     | rgb diffuse  | diffuse reflectance  |
+// | rho_s     | [0, 1]     | 0.5     | rgb specular | specular reflectance |
+// | s         | [1, 10000] | 50      | log exponent | specular exponent    |
 // Blinn, "Models of Light Reflection for Computer Synthesized Pictures", SIGGRAPH 1977; the approximate
 // normalisation (s+8)/(8 pi) of Akenine-Möller, Haines & Hoffman, "Real-Time Rendering", 3rd ed., 2008.
 //   f = rho_d / pi + rho_s (s+8)/(8 pi) (N.H)^s.

@@ -1,10 +1,12 @@
 // Cook-Torrance: Beckmann microfacets with Schlick's Fresnel and Torrance-Sparrow shadowing, plus Lambert.
-// | parameter | range       | default | meaning                                   |
-// |-----------|-------------|---------|-------------------------------------------|
-// | rho_d     | [0, 1]      | 0.5     | diffuse reflectance, RGB                  |
-// | rho_s     | [0, 1]      | 0.5     | specular reflectance, RGB (F included)    |
-// | m         | [0.001, 1]  | 0.2     | Beckmann roughness (RMS slope)            |
-// | eta       | [1, 10]     | 1.5     | index of refraction, inside over outside  |
+// lobes: reflection diffuse glossy
+// sweep: rho_d=0.1, rho_s=0.9
+// | parameter | range       | default | kind         | meaning                                  |
+// |-----------|-------------|---------|--------------|------------------------------------------|
+// | rho_d     | [0, 1]      | 0.5     | rgb diffuse  | diffuse reflectance                      |
+// | rho_s     | [0, 1]      | 0.5     | rgb specular | specular reflectance (F included)        |
+// | m         | [0.001, 1]  | 0.2     | log slope    | Beckmann roughness (RMS slope)           |
+// | eta       | [1, 10]     | 1.5     | eta          | index of refraction, inside over outside |
 // Cook & Torrance, "A Reflectance Model for Computer Graphics", ACM TOG 1(1), 1982, in pbrt's form (the
 // paper's own is 4x larger); sampling of Walter, Marschner, Li & Torrance, "Microfacet Models for
 // Refraction through Rough Surfaces", EGSR 2007.
@@ -29,7 +31,7 @@ vec3 cookTorranceEval(vec3 rhoD, vec3 rhoS, float m, float eta, vec3 wi, vec3 wo
 }
 
 // The half vector has density D (N.H); reflecting wo about it divides by 4 (V.H).
-float cookTorrancePdf(vec3 rhoD, vec3 rhoS, float m, vec3 wi, vec3 wo) {
+float cookTorrancePdf(vec3 rhoD, vec3 rhoS, float m, float eta, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
   const HalfVector hv = halfVector(liftOffHorizon(wi), liftOffHorizon(wo));
   const float pSpec = specularProbability(rhoD, rhoS);
@@ -48,7 +50,7 @@ BsdfSample cookTorranceSample(vec3 rhoD, vec3 rhoS, float m, float eta, vec3 wo,
     wi = sampleCosineHemisphere(u.yz);
   }
   if (!(wi.z > 0.0)) return noSample();
-  return acceptSample(wi, cookTorranceEval(rhoD, rhoS, m, eta, wi, wo), cookTorrancePdf(rhoD, rhoS, m, wi, wo));
+  return acceptSample(wi, cookTorranceEval(rhoD, rhoS, m, eta, wi, wo), cookTorrancePdf(rhoD, rhoS, m, eta, wi, wo));
 }
 
 #endif

@@ -1,28 +1,21 @@
 // Glass: a smooth dielectric interface, a delta BSDF. bsdfEval and bsdfPdf return 0 for it; the renderer
 // follows the two delta directions with the weights computed here.
-// | parameter | range   | default | meaning                                  |
-// |-----------|---------|---------|------------------------------------------|
-// | eta       | [1, 10] | 1.5     | index of refraction, inside over outside |
-// | tint      | [0, 1]  | 1       | transmittance colour, RGB                |
+// lobes: reflection transmission specular
+// | parameter | range   | default | kind | meaning                                  |
+// |-----------|---------|---------|------|------------------------------------------|
+// | eta       | [1, 10] | 1.5     | eta  | index of refraction, inside over outside |
+// | tint      | [0, 1]  | 1       | rgb  | transmittance colour                     |
 // Snell's law and the Fresnel equations (Born & Wolf, "Principles of Optics", §1.5); Schlick 1994 for the
 // approximations; conventions of docs/brdf_contract.md: if wi.n >= 0 the light comes from outside
 // (eta_i = 1, eta_t = eta, nn = n), else from inside (eta_i = eta, eta_t = 1, nn = -n).
 #ifndef RAYLAB_BRDF_GLASS_GLSL
 #define RAYLAB_BRDF_GLASS_GLSL
 
+#include "brdf/delta_event.glsl"
 #include "brdf/fresnel.glsl"
 
-struct GlassEvent {
-  float fresnelExact;         // the exact unpolarised F; 1 under total internal reflection
-  float fresnelSchlick;       // Schlick with the cosine on the optically thinner (outside) side; 1 under TIR
-  float fresnelSchlickNaive;  // Schlick with cos_i always (the common student form)
-  bool tir;
-  vec3 reflected;             // 2 cos_i nn - wi
-  vec3 refracted;             // zero under TIR
-};
-
 // wi towards the light and n the outward normal, both unit, in any common frame.
-GlassEvent glassEvent(float eta, vec3 wi, vec3 n) {
+DeltaEvent glassEvent(float eta, vec3 wi, vec3 n) {
   const float cosN = dot(wi, n);
   const bool outside = cosN >= 0.0;
   const float etaI = outside ? 1.0 : eta;
@@ -39,7 +32,8 @@ GlassEvent glassEvent(float eta, vec3 wi, vec3 n) {
   const float A2 = (etaT - etaI) * (etaT + etaI) + etaI * etaI * cosI * cosI;
   const float F0 = F0FromEta(eta);
 
-  GlassEvent event;
+  DeltaEvent event;
+  event.transmittance = vec3(1.0);
   event.reflected = 2.0 * cosI * nn - wi;
   // 1 - cos = sin^2 / (1 + cos), which does not cancel near normal incidence.
   const float oneMinusCosI = sin2I / (1.0 + cosI);
@@ -66,6 +60,13 @@ GlassEvent glassEvent(float eta, vec3 wi, vec3 n) {
     const float oneMinusCosT = ratio * ratio * sin2I / (1.0 + cosT);
     event.fresnelSchlick = F_Schlick(F0, outside ? oneMinusCosI : oneMinusCosT);
   }
+  return event;
+}
+
+// The model's delta lobes for the integrators: the interface, and the tint on the way in.
+DeltaEvent glassDeltaEvent(float eta, vec3 tint, vec3 wi, vec3 n) {
+  DeltaEvent event = glassEvent(eta, wi, n);
+  event.transmittance = tint;
   return event;
 }
 

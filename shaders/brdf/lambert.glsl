@@ -1,7 +1,8 @@
 // Lambert: the ideal diffuse reflector.
-// | parameter | range  | default | meaning                  |
-// |-----------|--------|---------|--------------------------|
-// | rho_d     | [0, 1] | 0.5     | diffuse reflectance, RGB |
+// lobes: reflection diffuse
+// | parameter | range  | default | kind        | meaning             |
+// |-----------|--------|---------|-------------|---------------------|
+// | rho_d     | [0, 1] | 0.5     | rgb diffuse | diffuse reflectance |
 // Lambert, "Photometria", 1760. f = rho_d / pi (docs/brdf_contract.md); sampled cosine-weighted.
 #ifndef RAYLAB_BRDF_LAMBERT_GLSL
 #define RAYLAB_BRDF_LAMBERT_GLSL
@@ -13,7 +14,7 @@ vec3 lambertEval(vec3 rhoD, vec3 wi, vec3 wo) {
   return rhoD * kInvPi;
 }
 
-float lambertPdf(vec3 wi, vec3 wo) {
+float lambertPdf(vec3 rhoD, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
   return cosineHemispherePdf(wi);
 }
@@ -21,7 +22,7 @@ float lambertPdf(vec3 wi, vec3 wo) {
 BsdfSample lambertSample(vec3 rhoD, vec3 wo, vec3 u) {
   if (!(wo.z > 0.0)) return noSample();
   const vec3 wi = sampleCosineHemisphere(u.yz);
-  return acceptSample(wi, lambertEval(rhoD, wi, wo), lambertPdf(wi, wo));
+  return acceptSample(wi, lambertEval(rhoD, wi, wo), lambertPdf(rhoD, wi, wo));
 }
 
 #endif

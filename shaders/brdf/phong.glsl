@@ -1,9 +1,11 @@
 // Phong, energy-normalised: a cosine-power lobe around the mirror direction plus a Lambertian term.
-// | parameter | range      | default | meaning                   |
-// |-----------|------------|---------|---------------------------|
-// | rho_d     | [0, 1]     | 0.5     | diffuse reflectance, RGB  |
-// | rho_s     | [0, 1]     | 0.5     | specular reflectance, RGB |
-// | s         | [1, 10000] | 50      | specular exponent         |
+// lobes: reflection diffuse glossy
+// sweep: rho_d=0.1, rho_s=0.9
+// | parameter | range      | default | kind                | meaning              |
+// |-----------|------------|---------|---------------------|----------------------|
+// | rho_d     | [0, 1]     | 0.5     | rgb diffuse         | diffuse reflectance  |
+// | rho_s     | [0, 1]     | 0.5     | rgb specular        | specular reflectance |
+// | s         | [1, 10000] | 50      | log mirror_exponent | specular exponent    |
 // Phong, "Illumination for Computer Generated Pictures", CACM 18(6), 1975; normalisation (s+2)/(2 pi) from
 // Lewis, "Making Shaders More Physically Plausible", CGF 13(2), 1994, and Lafortune & Willems, "Using the
 // Modified Phong Reflectance Model for Physically Based Rendering", 1994 (also the sampling).

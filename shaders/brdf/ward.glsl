@@ -1,10 +1,12 @@
 // Ward (1992): an anisotropic Gaussian-like lobe of the half vector, plus Lambert.
-// | parameter | range      | default | meaning                       |
-// |-----------|------------|---------|-------------------------------|
-// | rho_d     | [0, 1]     | 0.5     | diffuse reflectance, RGB      |
-// | rho_s     | [0, 1]     | 0.5     | specular reflectance, RGB     |
-// | alpha_x   | [0.001, 1] | 0.2     | roughness along the tangent   |
-// | alpha_y   | [0.001, 1] | 0.2     | roughness along the bitangent |
+// lobes: reflection diffuse glossy
+// sweep: rho_d=0.1, rho_s=0.9
+// | parameter | range      | default | kind         | meaning                       |
+// |-----------|------------|---------|--------------|-------------------------------|
+// | rho_d     | [0, 1]     | 0.5     | rgb diffuse  | diffuse reflectance           |
+// | rho_s     | [0, 1]     | 0.5     | rgb specular | specular reflectance          |
+// | alpha_x   | [0.001, 1] | 0.2     | log slope_x  | roughness along the tangent   |
+// | alpha_y   | [0.001, 1] | 0.2     | log slope_y  | roughness along the bitangent |
 // Ward, "Measuring and Modeling Anisotropic Reflection", SIGGRAPH 1992 (the anisotropic form); sampling of
 // Walter 2005 (ward_lobe.glsl).
 //   f = rho_d / pi + rho_s exp(-e) / (4 pi alpha_x alpha_y sqrt(cos_i cos_o)).

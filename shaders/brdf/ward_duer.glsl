@@ -1,10 +1,12 @@
 // Ward with Dür's normalisation: the Ward lobe over cos_i cos_o instead of its square root.
-// | parameter | range      | default | meaning                       |
-// |-----------|------------|---------|-------------------------------|
-// | rho_d     | [0, 1]     | 0.5     | diffuse reflectance, RGB      |
-// | rho_s     | [0, 1]     | 0.5     | specular reflectance, RGB     |
-// | alpha_x   | [0.001, 1] | 0.2     | roughness along the tangent   |
-// | alpha_y   | [0.001, 1] | 0.2     | roughness along the bitangent |
+// lobes: reflection diffuse glossy
+// sweep: rho_d=0.1, rho_s=0.9
+// | parameter | range      | default | kind         | meaning                       |
+// |-----------|------------|---------|--------------|-------------------------------|
+// | rho_d     | [0, 1]     | 0.5     | rgb diffuse  | diffuse reflectance           |
+// | rho_s     | [0, 1]     | 0.5     | rgb specular | specular reflectance          |
+// | alpha_x   | [0.001, 1] | 0.2     | log slope_x  | roughness along the tangent   |
+// | alpha_y   | [0.001, 1] | 0.2     | log slope_y  | roughness along the bitangent |
 // Dür, "An Improved Normalization for the Ward Reflectance Model", JGT 11(1), 2006; sampling of Walter 2005.
 //   f = rho_d / pi + rho_s exp(-e) / (4 pi alpha_x alpha_y cos_i cos_o).
 // It diverges at grazing (docs/brdfs.md).
@@ -23,6 +25,11 @@ vec3 wardDuerEval(vec3 rhoD, vec3 rhoS, float alphaX, float alphaY, vec3 wi, vec
   if (e > kExpUnderflow) return rhoD * kInvPi;
   // cos_i cos_o >= 1e-30 after the lift: the term stays below 1e35.
   return rhoD * kInvPi + rhoS * (exp(-e) / (4.0 * kPi * alphaX * alphaY * wi.z * wo.z));
+}
+
+// The Ward lobe's sampler and density (ward_lobe.glsl) serve all three normalisations.
+float wardDuerPdf(vec3 rhoD, vec3 rhoS, float alphaX, float alphaY, vec3 wi, vec3 wo) {
+  return wardPdf(rhoD, rhoS, alphaX, alphaY, wi, wo);
 }
 
 BsdfSample wardDuerSample(vec3 rhoD, vec3 rhoS, float alphaX, float alphaY, vec3 wo, vec3 u) {

@@ -54,7 +54,7 @@ bool continuePath(inout Payload p, vec3 origin, vec3 direction, vec3 throughput)
 // Glass: delta L_i(w_r) + (1 - delta) [F L_i(w_r) + (1 - F) tint L_i(w_t)], both continuations kept. F is
 // the exact unpolarised Fresnel term, or Schlick's in the kernel variant that trades accuracy for speed.
 void glassHit(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
-  const GlassEvent event = glassEvent(material.eta, wo, s.shadingNormal);
+  const DeltaEvent event = modelDeltaEvent(material, wo, s.shadingNormal);
   // The kernel variant picks the Fresnel term; the other one's arithmetic is dead code and compiles away.
   const float fresnel = kGlassFresnel == kFresnelSchlick ? event.fresnelSchlick : event.fresnelExact;
   const float delta = material.delta;
@@ -62,7 +62,7 @@ void glassHit(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
   const vec3 weightReflect = p.throughput * (delta + (1.0 - delta) * fresnel);
   // The tint colours light once, as it enters: a closed object then tints what is seen through it once.
   const vec3 weightRefract =
-      event.tir ? vec3(0.0) : p.throughput * (1.0 - delta) * (1.0 - fresnel) * (entering ? material.tint : vec3(1.0));
+      event.tir ? vec3(0.0) : p.throughput * (1.0 - delta) * (1.0 - fresnel) * (entering ? event.transmittance : vec3(1.0));
 
   // Each continuation leaves from the side of the geometric surface it travels into.
   const vec3 ngOutside = s.geometricNormal;
@@ -96,10 +96,14 @@ void glassHit(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
   }
 }
 
-// The base-colour texture, which multiplies rho_d.
+// The base-colour texture, which multiplies the model's diffuse colour (the parameter of its `diffuse` role).
 void applyTextures(inout MaterialRecord material, Surface s) {
-  if (featureEnabled(kFeatureTextures) && material.baseColorTexture >= 0) {
-    material.rhoD *= sampleTexture(uint(material.baseColorTexture), s.uv).rgb;
+  if (featureEnabled(kFeatureTextures) && material.baseColorTexture >= 0 && material.diffuseParam != kNoParam) {
+    const vec3 texel = sampleTexture(uint(material.baseColorTexture), s.uv).rgb;
+    const uint slot = material.diffuseParam;
+    material.params[slot] *= texel.r;
+    material.params[slot + 1u] *= texel.g;
+    material.params[slot + 2u] *= texel.b;
   }
 }
 
@@ -128,7 +132,7 @@ void closestHit(Hit hit, inout Payload p) {
   p.done = true;
   p.split = false;
 
-  if (featureEnabled(kFeatureGlass) && material.model == kModelGlass) {
+  if (featureEnabled(kFeatureDeltaBsdf) && isSpecularOnly(bsdfFlags(material))) {
     if (p.depth < params.maxDepth) {
       p.depth += 1u;
       glassHit(s, material, wo, p);

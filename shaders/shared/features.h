@@ -15,7 +15,7 @@ RL_CONST uint kSpecIntegrator = 3;     // kIntegrator...: which estimator the ra
 RL_CONST uint kSpecSampling = 4;       // kSampling...: how the path integrator estimates emitted light
 
 // kSpecFeatures bits.
-RL_CONST uint kFeatureGlass = 1;             // glass materials: reflection and refraction
+RL_CONST uint kFeatureDeltaBsdf = 1;         // delta BSDFs (glass): reflection and refraction along delta lobes
 RL_CONST uint kFeatureMirror = 2;            // some delta > 0: the mirror-reflection loop
 RL_CONST uint kFeaturePointLights = 4;
 RL_CONST uint kFeatureSpotLights = 8;

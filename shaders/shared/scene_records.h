@@ -67,36 +67,19 @@ struct SphereRecord {
 };
 RL_CHECK_SIZE(SphereRecord, 20);
 
-// MaterialRecord.model: the BRDF models of docs/brdf_contract.md.
-RL_CONST uint kModelLambert = 0;
-RL_CONST uint kModelPhong = 1;
-RL_CONST uint kModelBlinnPhong = 2;
-RL_CONST uint kModelCookTorrance = 3;
-RL_CONST uint kModelWard = 4;
-RL_CONST uint kModelWardDuer = 5;
-RL_CONST uint kModelWardGmd = 6;
-RL_CONST uint kModelAshikhminShirley = 7;
-RL_CONST uint kModelGlass = 8;
-RL_CONST uint kModelCount = 9;
+// The parameters of a material's model, in the order of its GLSL table (shaders/brdf/<model>.glsl), an RGB
+// parameter taking three floats. The model registry assigns each parameter its slot (docs/extending.md).
+RL_CONST uint kMaxMaterialParams = 16;
+RL_CONST uint kNoParam = 0xFFFFFFFFu;
 
-// Parameters of every model side by side; each model reads only its own (docs/brdfs.md).
 struct MaterialRecord {
-  vec3 rhoD;    // rho_d; Rd for ashikhmin_shirley
-  uint model;
-  vec3 rhoS;    // rho_s; Rs for ashikhmin_shirley
-  float delta;  // mirror-reflection weight of the direct integrator
-  vec3 tint;    // glass: transmittance colour
-  float eta;    // cooktorrance, glass: inside over outside
-  float s;      // phong, blinnphong exponent
-  float m;      // cooktorrance Beckmann roughness
-  float alphaX; // ward*: roughness along the tangent
-  float alphaY; // ward*: roughness along the bitangent
-  float nu;     // ashikhmin_shirley exponent along the tangent
-  float nv;     // ashikhmin_shirley exponent along the bitangent
-  int baseColorTexture;  // -1: none; else multiplies rhoD
+  uint model;             // registry id: the order of shaders/brdf/models.cmake
+  float delta;            // mirror-reflection weight of the direct integrator
+  int baseColorTexture;   // -1: none; else multiplies the parameter at diffuseParam
+  uint diffuseParam;      // slot of the model's diffuse colour (its `diffuse` role), kNoParam without one
+  vec3 emission;          // emitted radiance L_e (linear RGB) from the front face; the path integrator shows it
   uint reserved;
-  vec3 emission;  // emitted radiance L_e (linear RGB) from the front face; the path integrator shows it
-  uint reserved2;
+  float params[kMaxMaterialParams];
 };
 RL_CHECK_SIZE(MaterialRecord, 96);
 

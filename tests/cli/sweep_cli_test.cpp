@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "brdf_params/material_params.h"
 #include "image/contact_sheet.h"
 #include "image/image.h"
 #include "scene/gltf_loader.h"
@@ -124,10 +125,10 @@ TEST(SweepCliTest, GltfWritesTheRowAsALoadableScene) {
   const float expected[] = {1.0f, 10.0f, 100.0f};  // geometric, the default for an exponent
   for (std::size_t i = 0; i < 3; ++i) {
     const gpu::MaterialRecord& record = scene.materials.at(scene.spheres[i].material).record;
-    EXPECT_EQ(record.model, gpu::kModelPhong);
-    EXPECT_NEAR(record.s, expected[i], 1e-4f * expected[i]);
-    EXPECT_NEAR(record.rhoD.r, 0.2f, 1e-6f);
-    EXPECT_NEAR(record.rhoD.b, 0.05f, 1e-6f);
+    EXPECT_EQ(record.model, modelId("phong"));
+    EXPECT_NEAR(getParam(record, "s").x, expected[i], 1e-4f * expected[i]);
+    EXPECT_NEAR(getParam(record, "rho_d").r, 0.2f, 1e-6f);
+    EXPECT_NEAR(getParam(record, "rho_d").b, 0.05f, 1e-6f);
   }
 }
 

@@ -16,8 +16,8 @@ namespace raylab::test {
 namespace {
 
 using reference::dvec3;
-using reference::glass;
-using reference::GlassResult;
+using reference::dielectricEvent;
+using reference::DielectricEvent;
 using reference::kPi;
 
 const std::vector<double> kEtas = {1.0001, 1.33, 1.5, 2.4, 10.0};
@@ -61,7 +61,7 @@ TEST(Glass, SnellsLawAndTheGeometryOfBothRays) {
       const bool outside = k % 2 == 0;
       const double c = (outside ? 1.0 : -1.0) * std::max(1e-9, uniform(rng));
       const dvec3 wi = incident(s, c, 2 * kPi * uniform(rng));
-      const GlassResult g = glass(eta, wi, s.n);
+      const DielectricEvent g = dielectricEvent(eta, wi, s.n);
       const double etaI = outside ? 1.0 : eta;
       const double etaT = outside ? eta : 1.0;
       // Mirror reflection: unit, same side, same angle, in the plane of incidence.
@@ -90,9 +90,9 @@ TEST(Glass, RefractionIsReversibleAndFresnelIsTheSameBothWays) {
       const WorldFrame s = worldFrame(rng);
       const double c = (k % 2 == 0 ? 1.0 : -1.0) * std::max(1e-6, uniform(rng));
       const dvec3 wi = incident(s, c, 2 * kPi * uniform(rng));
-      const GlassResult there = glass(eta, wi, s.n);
+      const DielectricEvent there = dielectricEvent(eta, wi, s.n);
       if (there.tir) continue;
-      const GlassResult back = glass(eta, there.refracted, s.n);
+      const DielectricEvent back = dielectricEvent(eta, there.refracted, s.n);
       ASSERT_FALSE(back.tir);
       EXPECT_NEAR(glm::length(back.refracted - wi), 0.0, 1e-9) << "eta " << eta << " cos " << c;
       EXPECT_NEAR(back.fresnelExact, there.fresnelExact, 1e-9);
@@ -105,7 +105,7 @@ TEST(Glass, ReflectancePlusTransmittanceIsOne) {
     for (bool outside : {true, false}) {
       for (double c = 1.0; c > 1e-7; c *= 0.8) {
         const dvec3 wi(std::sqrt((1 - c) * (1 + c)), 0.0, outside ? c : -c);
-        const GlassResult g = glass(eta, wi, dvec3(0, 0, 1));
+        const DielectricEvent g = dielectricEvent(eta, wi, dvec3(0, 0, 1));
         if (g.tir) continue;
         const double etaI = outside ? 1.0 : eta;
         const double etaT = outside ? eta : 1.0;
@@ -117,7 +117,7 @@ TEST(Glass, ReflectancePlusTransmittanceIsOne) {
     }
   }
   // At normal incidence the exact and Schlick reflectances are both F0.
-  EXPECT_NEAR(glass(1.5, dvec3(0, 0, 1), dvec3(0, 0, 1)).fresnelExact, 0.04, 1e-15);
+  EXPECT_NEAR(dielectricEvent(1.5, dvec3(0, 0, 1), dvec3(0, 0, 1)).fresnelExact, 0.04, 1e-15);
 }
 
 TEST(Glass, TotalInternalReflectionGivesFOfOne) {
@@ -126,7 +126,7 @@ TEST(Glass, TotalInternalReflectionGivesFOfOne) {
     // From inside, above the critical angle; not exactly on the horizon, where wi.n = -0 counts as outside.
     for (double sinI : {sinCritical + 1e-9, 0.5 * (1.0 + sinCritical), 1.0 - 1e-12}) {
       const dvec3 wi(sinI, 0.0, -std::sqrt((1.0 - sinI) * (1.0 + sinI)));
-      const GlassResult g = glass(eta, wi, dvec3(0, 0, 1));
+      const DielectricEvent g = dielectricEvent(eta, wi, dvec3(0, 0, 1));
       EXPECT_TRUE(g.tir) << eta << " " << sinI;
       EXPECT_EQ(g.fresnelExact, 1.0);
       EXPECT_EQ(g.fresnelSchlick, 1.0);
@@ -141,13 +141,13 @@ TEST(Glass, NoInterfaceAtEtaOne) {
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   for (int k = 0; k < 1000; ++k) {
     const dvec3 wi = glm::normalize(dvec3(uniform(rng), uniform(rng), uniform(rng)));
-    const GlassResult g = glass(1.0, wi, dvec3(0, 0, 1));
+    const DielectricEvent g = dielectricEvent(1.0, wi, dvec3(0, 0, 1));
     EXPECT_EQ(g.fresnelExact, 0.0);
     EXPECT_FALSE(g.tir);
     EXPECT_EQ(g.refracted, -wi);  // the ray goes straight on
   }
   // Even exactly on the horizon, where Snell's sin^2 reaches 1 (docs/brdfs.md, "Glass").
-  const GlassResult grazing = glass(1.0, dvec3(1, 0, 0), dvec3(0, 0, 1));
+  const DielectricEvent grazing = dielectricEvent(1.0, dvec3(1, 0, 0), dvec3(0, 0, 1));
   EXPECT_EQ(grazing.fresnelExact, 0.0);
   EXPECT_FALSE(grazing.tir);
 }
@@ -155,9 +155,9 @@ TEST(Glass, NoInterfaceAtEtaOne) {
 TEST(Glass, CriticalAngleJustBelowAndAbove) {
   for (double eta : kEtas) {
     const double thetaC = std::asin(1.0 / eta);
-    auto at = [eta](double theta) { return glass(eta, dvec3(std::sin(theta), 0.0, -std::cos(theta)), dvec3(0, 0, 1)); };
-    const GlassResult below = at(thetaC - 1e-8);
-    const GlassResult above = at(thetaC + 1e-8);
+    auto at = [eta](double theta) { return dielectricEvent(eta, dvec3(std::sin(theta), 0.0, -std::cos(theta)), dvec3(0, 0, 1)); };
+    const DielectricEvent below = at(thetaC - 1e-8);
+    const DielectricEvent above = at(thetaC + 1e-8);
     EXPECT_FALSE(below.tir) << eta;
     EXPECT_TRUE(above.tir) << eta;
     // Just below, the refracted ray leaves almost along the surface and F has almost reached 1 (it rises
@@ -179,11 +179,11 @@ TEST(Glass, SchlickVariantsBehaveAsDocumented) {
     for (double c : {1.0, 0.9, 0.5, 0.2, 0.01}) {
       const double s = std::sqrt((1 - c) * (1 + c));
       // From outside both Schlick forms use cos_i: they agree.
-      const GlassResult outside = glass(eta, dvec3(s, 0, c), dvec3(0, 0, 1));
+      const DielectricEvent outside = dielectricEvent(eta, dvec3(s, 0, c), dvec3(0, 0, 1));
       EXPECT_EQ(outside.fresnelSchlick, outside.fresnelSchlickNaive);
       EXPECT_NEAR(outside.fresnelSchlick, f0 + (1 - f0) * std::pow(1 - c, 5.0), 1e-15);
       // From inside: F_schlick uses cos_t (1 under TIR), F_schlick_naive the inside cos_i.
-      const GlassResult inside = glass(eta, dvec3(s, 0, -c), dvec3(0, 0, 1));
+      const DielectricEvent inside = dielectricEvent(eta, dvec3(s, 0, -c), dvec3(0, 0, 1));
       EXPECT_NEAR(inside.fresnelSchlickNaive, f0 + (1 - f0) * std::pow(1 - c, 5.0), 1e-15);
       if (inside.tir) {
         EXPECT_EQ(inside.fresnelSchlick, 1.0);
@@ -203,7 +203,7 @@ TEST(Glass, SchlickVariantsBehaveAsDocumented) {
   for (double c = 0.999; c > 0.0; c -= 0.001) {
     const double s = std::sqrt((1 - c) * (1 + c));
     for (double side : {1.0, -1.0}) {
-      const GlassResult g = glass(eta, dvec3(s, 0, side * c), dvec3(0, 0, 1));
+      const DielectricEvent g = dielectricEvent(eta, dvec3(s, 0, side * c), dvec3(0, 0, 1));
       worstSchlick = std::max(worstSchlick, std::abs(g.fresnelSchlick - g.fresnelExact));
       worstNaive = std::max(worstNaive, std::abs(g.fresnelSchlickNaive - g.fresnelExact));
     }

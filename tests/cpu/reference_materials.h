@@ -41,4 +41,24 @@ inline std::string materialLabel(std::string_view model, const std::vector<Param
 
 inline std::string_view modelName(const reference::Material& material) { return modelInfo(material.model).name; }
 
+// A parameter of a reference material by name, in double precision (the table's slot for its model).
+inline const ParamInfo& paramOf(const reference::Material& material, std::string_view name) {
+  const ParamInfo* param = findParam(modelInfo(material.model), name);
+  if (param == nullptr || param->slot == gpu::kNoParam) {
+    throw Error("test material: '" + std::string(name) + "' is not a parameter of " + std::string(modelName(material)));
+  }
+  return *param;
+}
+inline double scalarParam(const reference::Material& material, std::string_view name) {
+  return material.params[paramOf(material, name).slot];
+}
+inline reference::dvec3 rgbParam(const reference::Material& material, std::string_view name) {
+  return reference::paramRgb(material, paramOf(material, name).slot);
+}
+// Sets a parameter exactly (the parameter table stores float; some tests need unrounded values).
+inline void setParamExactly(reference::Material& material, std::string_view name, reference::dvec3 value) {
+  const ParamInfo& param = paramOf(material, name);
+  for (int c = 0; c < (param.rgb ? 3 : 1); ++c) material.params[param.slot + c] = value[c];
+}
+
 }  // namespace raylab::test

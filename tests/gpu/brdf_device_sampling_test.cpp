@@ -218,8 +218,10 @@ TEST_F(BrdfDeviceSamplingRobustness, DegenerateInputsGiveFiniteSamplesOrNone) {
         for (const Param& p : scalars) applies = applies && findParam(model, p.name) != nullptr;
         if (!applies) continue;
         for (const Param& p : scalars) setParam(record, p.name, glm::vec3(p.value), std::string(model.name));
-        record.rhoD = glm::vec3(d);
-        record.rhoS = glm::vec3(sp);
+        // The diffuse colour d, the model's other colours (a specular lobe's weight or F0) sp.
+        for (const ParamInfo& p : model.params) {
+          if (p.rgb && !isDeltaOnly(model)) setParam(record, p.name, glm::vec3(p.role == "diffuse" ? d : sp), "test");
+        }
         for (const vec3& wo : wos) {
           const std::vector<gpu::BrdfSampleValue> samples = drawBrdfSamples(device(), sampler, record, wo, u);
           for (const gpu::BrdfSampleValue& s : samples) {

@@ -27,6 +27,7 @@
 
 #include "brdf_eval/device_evaluator.h"
 #include "reference/brdf_reference.h"
+#include "reference/models.h"
 #include "brdf_params/material_params.h"
 #include "support/gpu_test.h"
 
@@ -43,9 +44,16 @@ constexpr double kFresnelFloor = 1e-12;  // glass Fresnel factors (F is 2.5e-9 a
 constexpr double kUlp = 0x1p-23;         // relative spacing of float32 numbers
 constexpr double kFrameUlps = 1.0;       // absolute error of the device's frame and dot products, in ulps of 1
 
-const std::vector<std::uint32_t> kBrdfModels = {gpu::kModelLambert,     gpu::kModelPhong,    gpu::kModelBlinnPhong,
-                                                gpu::kModelCookTorrance, gpu::kModelWard,     gpu::kModelWardDuer,
-                                                gpu::kModelWardGmd,      gpu::kModelAshikhminShirley};
+// Every registered model with an f (delta BSDFs have their own test below), from the registry: a new model is
+// covered without an edit here.
+std::vector<std::uint32_t> brdfModels() {
+  std::vector<std::uint32_t> models;
+  for (const ModelInfo& model : allModels()) {
+    if (!isDeltaOnly(model)) models.push_back(model.id);
+  }
+  return models;
+}
+const std::vector<std::uint32_t> kBrdfModels = brdfModels();
 
 struct ParityCase {
   gpu::BrdfEvalCase input;
@@ -86,18 +94,11 @@ gpu::MaterialRecord randomMaterial(std::uint32_t model, Random& random) {
   return record;
 }
 
-// The angular width of the model's specular lobe, to aim cases at the part of the lobe that matters.
+// The angular width of the model's specular lobe (the reference's SpecularLobe), to aim cases at the part of the
+// lobe that matters.
 double lobeWidth(const gpu::MaterialRecord& m) {
-  switch (m.model) {
-    case gpu::kModelPhong:
-    case gpu::kModelBlinnPhong: return std::sqrt(2.0 / m.s);
-    case gpu::kModelCookTorrance: return m.m;
-    case gpu::kModelWard:
-    case gpu::kModelWardDuer:
-    case gpu::kModelWardGmd: return std::max(m.alphaX, m.alphaY);
-    case gpu::kModelAshikhminShirley: return std::sqrt(2.0 / std::min(m.nu, m.nv));
-    default: return 1.0;
-  }
+  const std::optional<reference::SpecularLobe> lobe = reference::specularLobe(reference::fromRecord(m));
+  return lobe ? std::max(lobe->widths.x, lobe->widths.y) : 1.0;
 }
 
 ParityCase canonicalCase(const gpu::MaterialRecord& material, const dvec3& wi, const dvec3& wo) {
@@ -161,52 +162,54 @@ void addRandomCases(std::uint32_t model, int count, Random& random, std::vector<
   }
 }
 
-// Parameter corners of the issue: m and alpha of 0.001 and 1, s and n of 1, 1000 and 10^4, eta of 1, 1.0001,
-// 1.5 and 10, alpha_x << alpha_y; reflectances white, coloured and zero.
+// The values of a scalar parameter a corner takes: a log-scale parameter its ends and a decade inside each
+// (s of 1, 10, 1000 and 10^4; m and alpha of 0.001, 0.01, 0.1 and 1), an index of refraction 1, 1.0001, 1.5 and
+// its maximum, any other its ends and middle.
+std::vector<float> cornerValues(const ParamInfo& p) {
+  if (p.logScale) return {p.min, 10.0f * p.min, p.max / 10.0f, p.max};
+  if (p.role == "eta") return {p.min, p.min + 1e-4f, std::clamp(1.5f, p.min, p.max), p.max};
+  return {p.min, 0.5f * (p.min + p.max), p.max};
+}
+
+// Parameter corners of the issue, for any model from its table: every combination of two scalar parameters'
+// corner values (more than two: each alone), anisotropic slopes 0.0063 and 0.142 (the case issue 9 found), and
+// reflectances white, coloured and zero for the diffuse colour and the model's other colours.
 std::vector<gpu::MaterialRecord> cornerMaterials(std::uint32_t model) {
-  std::vector<std::vector<std::pair<const char*, float>>> scalarSets;
-  switch (model) {
-    case gpu::kModelPhong:
-    case gpu::kModelBlinnPhong:
-      for (float s : {1.0f, 1000.0f, 10000.0f}) scalarSets.push_back({{"s", s}});
-      break;
-    case gpu::kModelCookTorrance:
-      for (float m : {0.001f, 0.01f, 1.0f}) {
-        for (float eta : {1.0f, 1.0001f, 1.5f, 10.0f}) scalarSets.push_back({{"m", m}, {"eta", eta}});
-      }
-      break;
-    case gpu::kModelWard:
-    case gpu::kModelWardDuer:
-    case gpu::kModelWardGmd:
-      for (float ax : {0.001f, 1.0f}) {
-        for (float ay : {0.001f, 1.0f}) scalarSets.push_back({{"alpha_x", ax}, {"alpha_y", ay}});
-      }
-      scalarSets.push_back({{"alpha_x", 0.01f}, {"alpha_y", 0.5f}});
-      scalarSets.push_back({{"alpha_x", 0.0063f}, {"alpha_y", 0.142f}});  // the case issue 9 found
-      break;
-    case gpu::kModelAshikhminShirley:
-      for (float nu : {1.0f, 1000.0f, 10000.0f}) {
-        for (float nv : {1.0f, 1000.0f, 10000.0f}) scalarSets.push_back({{"nu", nu}, {"nv", nv}});
-      }
-      break;
-    default:
-      scalarSets.push_back({});
+  const ModelInfo& info = modelInfo(model);
+  std::vector<const ParamInfo*> scalars;
+  for (const ParamInfo& p : info.params) {
+    if (!p.rgb) scalars.push_back(&p);
   }
-  const bool as = model == gpu::kModelAshikhminShirley;
-  const char* diffuse = as ? "Rd" : "rho_d";
-  const char* specular = as ? "Rs" : "rho_s";
+  std::vector<std::vector<std::pair<std::string_view, float>>> scalarSets;
+  if (scalars.size() == 2) {
+    for (float a : cornerValues(*scalars[0])) {
+      for (float b : cornerValues(*scalars[1])) scalarSets.push_back({{scalars[0]->name, a}, {scalars[1]->name, b}});
+    }
+  } else {
+    for (const ParamInfo* p : scalars) {
+      for (float v : cornerValues(*p)) scalarSets.push_back({{p->name, v}});
+    }
+  }
+  if (scalarSets.empty()) scalarSets.push_back({});
+  const ParamInfo* slopeX = findRole(info, "slope_x");
+  const ParamInfo* slopeY = findRole(info, "slope_y");
+  if (slopeX && slopeY) scalarSets.push_back({{slopeX->name, 0.0063f}, {slopeY->name, 0.142f}});
+  const ParamInfo* diffuse = findRole(info, "diffuse");
   const std::vector<std::pair<glm::vec3, glm::vec3>> reflectances = {
       {glm::vec3(1.0f), glm::vec3(1.0f)}, {glm::vec3(0.9f, 0.5f, 0.1f), glm::vec3(0.2f, 0.6f, 1.0f)},
       {glm::vec3(1.0f), glm::vec3(0.0f)},
       // The specular lobe alone: with a diffuse term beside it, a lobe wrong by 20% at 1e-8 hides under 1/pi.
       {glm::vec3(0.0f), glm::vec3(1.0f)}};
   std::vector<gpu::MaterialRecord> materials;
-  for (const auto& scalars : scalarSets) {
-    for (const auto& [d, s] : reflectances) {
+  for (const auto& set : scalarSets) {
+    for (const auto& [d, other] : reflectances) {
       gpu::MaterialRecord record = defaultRecord(model);
-      setParam(record, diffuse, d, "corner");
-      if (model != gpu::kModelLambert) setParam(record, specular, s, "corner");
-      for (const auto& [name, value] : scalars) setParam(record, name, glm::vec3(value), "corner");
+      for (const ParamInfo& p : info.params) {
+        if (!p.rgb) continue;
+        const glm::vec3 value = &p == diffuse ? d : other;
+        setParam(record, p.name, glm::clamp(value, glm::vec3(p.min), glm::vec3(p.max)), "corner");
+      }
+      for (const auto& [name, value] : set) setParam(record, name, glm::vec3(value), "corner");
       materials.push_back(record);
     }
   }
@@ -297,12 +300,9 @@ bool finiteNonNegative(const vec3& f) {
 
 std::string describe(const gpu::BrdfEvalCase& c) {
   char text[512];
-  std::snprintf(text, sizeof text, "rho_d %g/%g/%g rho_s %g/%g/%g s %g m %g eta %g alpha %g,%g n %g,%g | wi %.9g %.9g %.9g | wo %.9g %.9g %.9g | n %.9g %.9g %.9g | t %.9g %.9g %.9g",
-                c.material.rhoD.x, c.material.rhoD.y, c.material.rhoD.z, c.material.rhoS.x, c.material.rhoS.y,
-                c.material.rhoS.z, c.material.s, c.material.m, c.material.eta, c.material.alphaX, c.material.alphaY,
-                c.material.nu, c.material.nv, c.wi.x, c.wi.y, c.wi.z, c.wo.x, c.wo.y, c.wo.z, c.n.x, c.n.y, c.n.z,
-                c.t.x, c.t.y, c.t.z);
-  return text;
+  std::snprintf(text, sizeof text, " | wi %.9g %.9g %.9g | wo %.9g %.9g %.9g | n %.9g %.9g %.9g | t %.9g %.9g %.9g",
+                c.wi.x, c.wi.y, c.wi.z, c.wo.x, c.wo.y, c.wo.z, c.n.x, c.n.y, c.n.z, c.t.x, c.t.y, c.t.z);
+  return describeModelParams(c.material) + text;
 }
 
 class BrdfParityTest : public GpuTest {};
@@ -440,7 +440,7 @@ struct GlassErrors {
   double direction = 0.0;  // max over reflect, refract of the absolute error
 };
 
-GlassErrors glassDifference(const reference::GlassResult& a, const reference::GlassResult& b) {
+GlassErrors glassDifference(const reference::DielectricEvent& a, const reference::DielectricEvent& b) {
   GlassErrors e;
   for (auto [x, y] : {std::pair{a.fresnelExact, b.fresnelExact}, std::pair{a.fresnelSchlick, b.fresnelSchlick},
                       std::pair{a.fresnelSchlickNaive, b.fresnelSchlickNaive}}) {
@@ -450,8 +450,8 @@ GlassErrors glassDifference(const reference::GlassResult& a, const reference::Gl
   return e;
 }
 
-reference::GlassResult fromValue(const gpu::BrdfEvalValue& v) {
-  reference::GlassResult r;
+reference::DielectricEvent fromValue(const gpu::BrdfEvalValue& v) {
+  reference::DielectricEvent r;
   r.fresnelExact = v.fresnelExact;
   r.fresnelSchlick = v.fresnelSchlick;
   r.fresnelSchlickNaive = v.fresnelSchlickNaive;
@@ -464,7 +464,7 @@ reference::GlassResult fromValue(const gpu::BrdfEvalValue& v) {
 // The reference's change under one-ulp moves of wi's and n's components and lengths (n's components also by
 // 2 ulps of 1 when it is not an axis: the device's dot product carries that absolute error). `tirFlips`
 // reports whether any of them changes the TIR decision: then either answer is right.
-GlassErrors glassConditioning(const GlassCase& c, const reference::GlassResult& expected, bool& tirFlips) {
+GlassErrors glassConditioning(const GlassCase& c, const reference::DielectricEvent& expected, bool& tirFlips) {
   GlassErrors sum;
   tirFlips = false;
   for (int which = 0; which < 2; ++which) {
@@ -480,7 +480,7 @@ GlassErrors glassConditioning(const GlassCase& c, const reference::GlassResult& 
           if (delta == 0.0) continue;
           w[j] += sign * delta;
         }
-        const reference::GlassResult moved = reference::glass(c.eta, wi, n);
+        const reference::DielectricEvent moved = reference::dielectricEvent(c.eta, wi, n);
         tirFlips = tirFlips || moved.tir != expected.tir;
         const GlassErrors e = glassDifference(moved, expected);
         worst.fresnel = std::max(worst.fresnel, e.fresnel);
@@ -525,7 +525,7 @@ TEST_F(BrdfParityTest, GlassMatchesTheReference) {
   std::vector<gpu::BrdfEvalCase> inputs;
   for (const GlassCase& c : cases) {
     gpu::BrdfEvalCase input{};
-    input.material = defaultRecord(gpu::kModelGlass);
+    input.material = defaultRecord(modelId("glass"));
     setParam(input.material, "eta", glm::vec3(c.eta), "glass case");
     input.wi = vec3(c.wi);
     input.n = vec3(c.n);
@@ -539,8 +539,8 @@ TEST_F(BrdfParityTest, GlassMatchesTheReference) {
   double worstRatio = 0.0;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const GlassCase& c = cases[i];
-    const reference::GlassResult device = fromValue(values[i]);
-    const reference::GlassResult expected = reference::glass(c.eta, c.wi, c.n);
+    const reference::DielectricEvent device = fromValue(values[i]);
+    const reference::DielectricEvent expected = reference::dielectricEvent(c.eta, c.wi, c.n);
     const double deviceNumbers[] = {device.fresnelExact, device.fresnelSchlick, device.fresnelSchlickNaive,
                                     device.reflected.x,  device.reflected.y,    device.reflected.z,
                                     device.refracted.x,  device.refracted.y,    device.refracted.z};

@@ -19,8 +19,8 @@ namespace {
 class DirectIntegratorTest : public GpuTest {};
 
 gpu::MaterialRecord glassMaterial(float eta) {
-  gpu::MaterialRecord record = defaultRecord(gpu::kModelGlass);
-  record.eta = eta;
+  gpu::MaterialRecord record = defaultRecord(modelId("glass"));
+  setParam(record, "eta", glm::vec3(eta), "test");
   return record;
 }
 

@@ -52,11 +52,11 @@ TEST(GltfMaterial, ExtrasRaylabChoosesTheModelAndItsParameters) {
   ASSERT_EQ(scene.materials.size(), 1u);
   const gpu::MaterialRecord& r = scene.materials[0].record;
   EXPECT_EQ(scene.materials[0].name, "brushed");
-  EXPECT_EQ(r.model, gpu::kModelWard);
-  expectNear(r.rhoD, glm::vec3(0.1f), "rho_d");
-  expectNear(r.rhoS, glm::vec3(0.9f), "rho_s");
-  EXPECT_FLOAT_EQ(r.alphaX, 0.1f);
-  EXPECT_FLOAT_EQ(r.alphaY, 0.4f);
+  EXPECT_EQ(r.model, modelId("ward"));
+  expectNear(getParam(r, "rho_d"), glm::vec3(0.1f), "rho_d");
+  expectNear(getParam(r, "rho_s"), glm::vec3(0.9f), "rho_s");
+  EXPECT_FLOAT_EQ(getParam(r, "alpha_x").x, 0.1f);
+  EXPECT_FLOAT_EQ(getParam(r, "alpha_y").x, 0.4f);
   EXPECT_FLOAT_EQ(r.delta, 0.25f);
 }
 
@@ -96,7 +96,7 @@ TEST(GltfMaterial, NonFiniteValuesAreRejected) {
   const std::string parse = errorOf([&] { loadGltfText(text, "", "nan.gltf", {}); });
   EXPECT_NE(parse.find("nan.gltf: not valid JSON: parse error at line 2"), std::string::npos) << parse;
   // A NaN that reaches the material (from code) is refused with the same message as an out-of-range value.
-  gpu::MaterialRecord record = defaultRecord(gpu::kModelLambert);
+  gpu::MaterialRecord record = defaultRecord(modelId("lambert"));
   const json raylab = {{"rho_d", {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0}}};
   const std::string nan = errorOf([&] { gltf::applyRaylabMaterial(record, raylab, "file: material 3 'x'"); });
   EXPECT_NE(nan.find("file: material 3 'x': extras.raylab: rho_d = nan is outside [0, 1]"), std::string::npos) << nan;
@@ -109,11 +109,11 @@ TEST(GltfMaterial, DielectricMetallicRoughnessMapsToLambertPlusCookTorrance) {
   const Scene scene = loadMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.1, 1.0}},
                                                               {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}});
   const gpu::MaterialRecord& r = scene.materials[0].record;
-  EXPECT_EQ(r.model, gpu::kModelCookTorrance);
-  expectNear(r.rhoD, {0.8f, 0.2f, 0.1f}, "rho_d = base colour (1 - metallic)");
-  expectNear(r.rhoS, glm::vec3(1.0f), "rho_s: white, the Fresnel term carries F0");
-  EXPECT_NEAR(r.eta, 1.5f, 1e-5f) << "glTF's default ior";
-  EXPECT_NEAR(r.m, 0.25f, 1e-6f) << "m = roughness^2";
+  EXPECT_EQ(r.model, modelId("cooktorrance"));
+  expectNear(getParam(r, "rho_d"), {0.8f, 0.2f, 0.1f}, "rho_d = base colour (1 - metallic)");
+  expectNear(getParam(r, "rho_s"), glm::vec3(1.0f), "rho_s: white, the Fresnel term carries F0");
+  EXPECT_NEAR(getParam(r, "eta").x, 1.5f, 1e-5f) << "glTF's default ior";
+  EXPECT_NEAR(getParam(r, "m").x, 0.25f, 1e-6f) << "m = roughness^2";
   EXPECT_FLOAT_EQ(r.delta, 0.0f);
 }
 
@@ -122,37 +122,37 @@ TEST(GltfMaterial, MetalsKeepTheirF0WhereEtaAllowsIt) {
   const Scene scene = loadMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {copper.r, copper.g, copper.b, 1.0}},
                                                               {"metallicFactor", 1.0}, {"roughnessFactor", 0.2}}}});
   const gpu::MaterialRecord& r = scene.materials[0].record;
-  expectNear(r.rhoD, glm::vec3(0.0f), "no diffuse term for a metal");
-  expectNear(r.rhoS * schlickF0(r.eta), copper, "rho_s F0(eta) = the base colour", 1e-5f);
-  EXPECT_FLOAT_EQ(std::max({r.rhoS.r, r.rhoS.g, r.rhoS.b}), 1.0f);
-  EXPECT_NEAR(r.m, 0.04f, 1e-6f);
+  expectNear(getParam(r, "rho_d"), glm::vec3(0.0f), "no diffuse term for a metal");
+  expectNear(getParam(r, "rho_s") * schlickF0(getParam(r, "eta").x), copper, "rho_s F0(eta) = the base colour", 1e-5f);
+  EXPECT_FLOAT_EQ(std::max({getParam(r, "rho_s").r, getParam(r, "rho_s").g, getParam(r, "rho_s").b}), 1.0f);
+  EXPECT_NEAR(getParam(r, "m").x, 0.04f, 1e-6f);
 
   // Brighter than F0(10) = 0.669: eta saturates and the reflectance is scaled down, hue kept.
   const Scene silver = loadMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {0.97, 0.96, 0.91, 1.0}},
                                                                {"metallicFactor", 1.0}}}});
   const gpu::MaterialRecord& s = silver.materials[0].record;
-  EXPECT_FLOAT_EQ(s.eta, 10.0f);
-  expectNear(s.rhoS, glm::vec3(1.0f), "rho_s saturates at 1");
-  EXPECT_NEAR(s.m, 1.0f, 1e-6f) << "glTF's default roughness is 1";
+  EXPECT_FLOAT_EQ(getParam(s, "eta").x, 10.0f);
+  expectNear(getParam(s, "rho_s"), glm::vec3(1.0f), "rho_s saturates at 1");
+  EXPECT_NEAR(getParam(s, "m").x, 1.0f, 1e-6f) << "glTF's default roughness is 1";
 }
 
 TEST(GltfMaterial, IorSetsEtaAndFullTransmissionMakesGlass) {
   const Scene water = loadMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 1.33}}}}},
                                     {"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}});
-  EXPECT_EQ(water.materials[0].record.model, gpu::kModelCookTorrance);
-  EXPECT_NEAR(water.materials[0].record.eta, 1.33f, 1e-5f);
+  EXPECT_EQ(water.materials[0].record.model, modelId("cooktorrance"));
+  EXPECT_NEAR(getParam(water.materials[0].record, "eta").x, 1.33f, 1e-5f);
 
   const Scene glass = loadMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 1.7}}},
                                                     {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}},
                                     {"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 1.0, 0.95, 1.0}}}}});
   const gpu::MaterialRecord& g = glass.materials[0].record;
-  EXPECT_EQ(g.model, gpu::kModelGlass);
-  EXPECT_NEAR(g.eta, 1.7f, 1e-6f);
-  expectNear(g.tint, {0.9f, 1.0f, 0.95f}, "tint = base colour");
+  EXPECT_EQ(g.model, modelId("glass"));
+  EXPECT_NEAR(getParam(g, "eta").x, 1.7f, 1e-6f);
+  expectNear(getParam(g, "tint"), {0.9f, 1.0f, 0.95f}, "tint = base colour");
 
   WarningCapture warnings;
   const Scene partial = loadMaterial({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}}}});
-  EXPECT_EQ(partial.materials[0].record.model, gpu::kModelCookTorrance);
+  EXPECT_EQ(partial.materials[0].record.model, modelId("cooktorrance"));
   EXPECT_EQ(warnings.count("transmission factors between 0 and 1"), 1);
 
   const std::string error = materialError({{"name", "gem"}, {"extensions", {{"KHR_materials_ior", {{"ior", 0.5}}}}}});
@@ -168,7 +168,7 @@ TEST(GltfMaterial, CoreFactorsOutOfRangeAreErrors) {
 TEST(GltfMaterial, ExtrasWithoutAModelAdjustTheMappedMaterial) {
   const Scene scene = loadMaterial({{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
                                     {"extras", {{"raylab", {{"delta", 0.5}}}}}});
-  EXPECT_EQ(scene.materials[0].record.model, gpu::kModelCookTorrance);
+  EXPECT_EQ(scene.materials[0].record.model, modelId("cooktorrance"));
   EXPECT_FLOAT_EQ(scene.materials[0].record.delta, 0.5f);
 }
 
@@ -180,8 +180,8 @@ TEST(GltfMaterial, PrimitivesWithoutAMaterialShareADefaultGreyLambert) {
   const Scene scene = b.load();
   ASSERT_EQ(scene.materials.size(), 1u);
   EXPECT_EQ(scene.materials[0].name, "default");
-  EXPECT_EQ(scene.materials[0].record.model, gpu::kModelLambert);
-  expectNear(scene.materials[0].record.rhoD, glm::vec3(0.8f), "default grey");
+  EXPECT_EQ(scene.materials[0].record.model, modelId("lambert"));
+  expectNear(getParam(scene.materials[0].record, "rho_d"), glm::vec3(0.8f), "default grey");
 }
 
 // A quad with TEXCOORD_0 and one material per texture image.

@@ -66,7 +66,7 @@ Scene glassRowScene() {
   scene.name = kGlassRowName;
   scene.materials.push_back({"backdrop", lambertMaterial(glm::vec3(0.8f, 0.5f, 0.3f))});
   for (float eta : {1.5f, 2.2f, 1.5f}) {
-    gpu::MaterialRecord glass = defaultRecord(gpu::kModelGlass);
+    gpu::MaterialRecord glass = defaultRecord(modelId("glass"));
     setParam(glass, "eta", glm::vec3(eta), "test");
     scene.materials.push_back({"glass", glass});
   }

@@ -38,14 +38,14 @@ std::string usageError(const std::string& text) {
 TEST(CompareSpecTest, SwitchesOneMaterialToAModelWithParametersOverItsDefaults) {
   const CompareSpec spec = parseCompareSpec("red plastic=ward:rho_d=0.2/0.5/0.2,alpha_x=0.3", twoMaterials(), "x");
   EXPECT_EQ(spec.material, 1u);
-  EXPECT_EQ(spec.record.model, std::uint32_t(gpu::kModelWard));
+  EXPECT_EQ(spec.record.model, std::uint32_t(modelId("ward")));
   EXPECT_EQ(getParam(spec.record, "rho_d"), glm::vec3(0.2f, 0.5f, 0.2f));
   EXPECT_EQ(getParam(spec.record, "alpha_x"), glm::vec3(0.3f));
-  EXPECT_EQ(getParam(spec.record, "alpha_y"), getParam(defaultRecord(gpu::kModelWard), "alpha_y"));
+  EXPECT_EQ(getParam(spec.record, "alpha_y"), getParam(defaultRecord(modelId("ward")), "alpha_y"));
   EXPECT_EQ(spec.record.delta, 0.25f) << "the mirror weight is the material's, not the model's";
   EXPECT_EQ(describeRecord(spec.record).substr(0, 5), "ward ");
   // The model alone: its defaults.
-  EXPECT_EQ(parseCompareSpec("ground=phong", twoMaterials(), "x").record.model, std::uint32_t(gpu::kModelPhong));
+  EXPECT_EQ(parseCompareSpec("ground=phong", twoMaterials(), "x").record.model, std::uint32_t(modelId("phong")));
 }
 
 TEST(CompareSpecTest, MistakesListWhatExists) {
@@ -81,35 +81,35 @@ TEST(CompareSpecTest, ParameterListsTakeCommasOrSemicolons) {
 // Ashikhmin-Shirley, whose Rs is a Fresnel F0 and takes its default), the roughness through the stated
 // equivalences (round trips return), eta between Cook-Torrance and glass; the rest takes the model's defaults.
 TEST(CompareSpecTest, ModelSwitchesCarryOverWhatMeansTheSameThing) {
-  gpu::MaterialRecord record = defaultRecord(gpu::kModelCookTorrance);
+  gpu::MaterialRecord record = defaultRecord(modelId("cooktorrance"));
   setParam(record, "rho_d", glm::vec3(0.6f, 0.1f, 0.1f), "t");
   setParam(record, "rho_s", glm::vec3(1.0f), "t");
   setParam(record, "m", glm::vec3(0.3f), "t");
   setParam(record, "eta", glm::vec3(1.8f), "t");
   record.delta = 0.25f;
   gpu::MaterialRecord as = record;
-  switchModel(as, gpu::kModelAshikhminShirley);
+  switchModel(as, modelId("ashikhmin_shirley"));
   EXPECT_EQ(getParam(as, "Rd"), glm::vec3(0.6f, 0.1f, 0.1f));
-  EXPECT_EQ(getParam(as, "Rs"), getParam(defaultRecord(gpu::kModelAshikhminShirley), "Rs"));
+  EXPECT_EQ(getParam(as, "Rs"), getParam(defaultRecord(modelId("ashikhmin_shirley")), "Rs"));
   EXPECT_NEAR(getParam(as, "nu").x, 2.0f / (0.3f * 0.3f) - 2.0f, 1e-3f);
   EXPECT_EQ(as.delta, 0.25f);
   gpu::MaterialRecord ward = record;
-  switchModel(ward, gpu::kModelWard);
+  switchModel(ward, modelId("ward"));
   EXPECT_EQ(getParam(ward, "rho_s"), glm::vec3(1.0f));
   EXPECT_EQ(getParam(ward, "alpha_x"), glm::vec3(0.3f));
-  switchModel(ward, gpu::kModelCookTorrance);
+  switchModel(ward, modelId("cooktorrance"));
   EXPECT_NEAR(getParam(ward, "m").x, 0.3f, 1e-6f);
-  EXPECT_EQ(getParam(ward, "eta"), getParam(defaultRecord(gpu::kModelCookTorrance), "eta")) << "Ward has no eta";
-  gpu::MaterialRecord phong = defaultRecord(gpu::kModelPhong);
+  EXPECT_EQ(getParam(ward, "eta"), getParam(defaultRecord(modelId("cooktorrance")), "eta")) << "Ward has no eta";
+  gpu::MaterialRecord phong = defaultRecord(modelId("phong"));
   setParam(phong, "s", glm::vec3(50.0f), "t");
   gpu::MaterialRecord there = phong;
-  for (const std::uint32_t model : {gpu::kModelBlinnPhong, gpu::kModelWardGmd, gpu::kModelAshikhminShirley,
-                                    gpu::kModelCookTorrance, gpu::kModelPhong}) {
+  for (const std::uint32_t model : {modelId("blinnphong"), modelId("ward_gmd"), modelId("ashikhmin_shirley"),
+                                    modelId("cooktorrance"), modelId("phong")}) {
     switchModel(there, model);
   }
   EXPECT_NEAR(getParam(there, "s").x, 50.0f, 0.01f) << "Phong -> ... -> Phong keeps the exponent";
   gpu::MaterialRecord glass = record;
-  switchModel(glass, gpu::kModelGlass);
+  switchModel(glass, modelId("glass"));
   EXPECT_EQ(getParam(glass, "eta"), glm::vec3(1.8f));
   // Every switch leaves a record whose every parameter is in range, whatever came before.
   for (const ModelInfo& from : allModels()) {
@@ -225,7 +225,7 @@ TEST(PointerTest, HoveringReportsWhereTheCursorRestsOverTheImage) {
 }
 
 TEST(LobeTest, DirectionsLieInThePlaneOfIncidenceAndTheMirrorDirectionIsPlusThetaI) {
-  const gpu::MaterialRecord phong = defaultRecord(gpu::kModelPhong);
+  const gpu::MaterialRecord phong = defaultRecord(modelId("phong"));
   const std::vector<gpu::BrdfEvalCase> cases = lobeCases(phong, 30.0f);
   ASSERT_EQ(cases.size(), kLobeSamples);
   EXPECT_FLOAT_EQ(lobeAngleDegrees(0), -90.0f);
@@ -250,7 +250,7 @@ TEST(LobeTest, AlbedoCurveOfLambertIsItsReflectanceAtEveryAngle) {
     EXPECT_NEAR(albedo.g, 0.25f, 1e-4f);
     EXPECT_NEAR(albedo.b, 0.125f, 1e-4f);
   }
-  gpu::MaterialRecord glass = defaultRecord(gpu::kModelGlass);
+  gpu::MaterialRecord glass = defaultRecord(modelId("glass"));
   EXPECT_TRUE(albedoCurve(glass).albedo.empty()) << "glass has no lobe and no albedo curve";
 }
 

@@ -60,11 +60,12 @@ struct ShadingResult {
 
 double mrays(std::size_t rays, double seconds) { return seconds > 0.0 ? rays / seconds / 1e6 : 0.0; }
 
-// Cases of the 8 BRDF models (glass is a separate path of the evaluator) at random directions about +Z.
+// Cases of every BRDF model with a density (delta BSDFs are a separate path of the evaluator) at random
+// directions about +Z.
 std::vector<gpu::BrdfEvalCase> shadingCases(std::size_t count, bool sortedByModel) {
   std::vector<std::uint32_t> models;
   for (const ModelInfo& model : allModels()) {
-    if (model.id != gpu::kModelGlass) models.push_back(model.id);
+    if (!isDeltaOnly(model)) models.push_back(model.id);
   }
   std::mt19937 generator(7);
   std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);

@@ -19,6 +19,7 @@
 #include "brdf_commands.h"
 #include "gpu_session.h"
 #include "brdf_eval/albedo_estimate.h"
+#include "brdf_params/material_params.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/files.h"
@@ -105,9 +106,9 @@ int albedo(const AlbedoOptions& o) {
   } catch (const Error& error) {
     throw Error(error.what(), kExitUsage);
   }
-  if (record.model == gpu::kModelGlass) {
-    throw Error(std::string(kCommand) + ": glass is a delta BSDF and has no albedo integral; its reflectance is " +
-                    "F_exact of `raylab brdf eval`",
+  if (isDeltaOnly(record.model)) {
+    throw Error(std::string(kCommand) + ": " + std::string(modelInfo(record.model).name) +
+                    " is a delta BSDF and has no albedo integral; its reflectance is F_exact of `raylab brdf eval`",
                 kExitUsage);
   }
   const std::vector<double> angles = parseAngles(anglesText);

@@ -12,6 +12,7 @@
 
 #include "cli.h"
 #include "bench_commands.h"
+#include "brdf_params/material_params.h"
 #include "commands.h"
 #include "gpu_session.h"
 #include "render/kernel_features.h"
@@ -60,7 +61,7 @@ VariantTiming timeVariant(const Device& device, const Scene& scene, RenderSettin
 Scene lambertOnlyScene() {
   Scene scene = makeDefaultScene();
   scene.name = "showcase, every material Lambert";
-  for (Material& material : scene.materials) material.record = lambertMaterial(material.record.rhoD);
+  for (Material& material : scene.materials) material.record = lambertMaterial(previewColour(material.record));
   return scene;
 }
 

@@ -54,12 +54,6 @@ glm::vec3 parseParamValue(const std::string& option, const std::string& text, co
           parseNumber(option, text.substr(second + 1))};
 }
 
-std::string modelNames() {
-  std::string names;
-  for (const ModelInfo& model : allModels()) names += (names.empty() ? "" : ", ") + std::string(model.name);
-  return names;
-}
-
 std::string paramNames(const ModelInfo& model) {
   std::string names;
   for (const ParamInfo& param : model.params) names += std::string(param.name) + ", ";

@@ -6,18 +6,39 @@
 #include <algorithm>
 #include <cmath>
 
-#include "reference/models.h"
+#include "generated/reference_params.h"
 #include "reference/sampling.h"
 #include "reference/terms.h"
 
 namespace raylab::reference {
 
-Lobes ashikhminShirleyEval(const Material& material, const dvec3& wi, const dvec3& wo) {
+// Eq. 4: the exponent of N.H, k = (nu h_x^2 + nv h_y^2) / (h_x^2 + h_y^2) = nu cos^2 phi_h + nv sin^2 phi_h;
+// nu when h_x = h_y = 0 (there N.H = 1 and the lobe factor is 1 whatever k is).
+double AS_exponent(const dvec3& h, double nu, double nv) {
+  // hypot and the ratios keep k a weighted mean of nu and nv even when h_x^2 + h_y^2 would underflow.
+  const double r = std::hypot(h.x, h.y);
+  if (r == 0.0) return nu;
+  const double c = h.x / r;
+  const double s = h.y / r;
+  return nu * c * c + nv * s * s;
+}
+
+// Eq. 4: the lobe (N.H)^k with k = AS_exponent(h), as powCosThetaH(tan^2, k).
+double AS_lobe(const dvec3& h, double nu, double nv) { return powCosThetaH(tan2ThetaH(h), AS_exponent(h, nu, nv)); }
+
+// Eq. 5: 1 - (1 - cos/2)^5 as x (5 - 10x + 10x^2 - 5x^3 + x^4) with x = cos/2. The naive form cancels at
+// grazing (cos = 1e-7 loses half the digits even in double).
+double AS_diffuseFalloff(double cosTheta) {
+  const double x = 0.5 * cosTheta;
+  return x * (5.0 + x * (-10.0 + x * (10.0 + x * (-5.0 + x))));
+}
+
+Lobes ashikhminShirleyEval(const AshikhminShirleyParams& p, const dvec3& wi, const dvec3& wo) {
   if (!aboveHorizon(wi, wo)) return {};
-  const dvec3& Rd = material.rhoD;
-  const dvec3& Rs = material.rhoS;
-  const double nu = material.nu;
-  const double nv = material.nv;
+  const dvec3& Rd = p.Rd;
+  const dvec3& Rs = p.Rs;
+  const double nu = p.nu;
+  const double nv = p.nv;
   Lobes lobes;
   lobes.diffuse =
       (28.0 / (23.0 * kPi)) * Rd * (dvec3(1.0) - Rs) * AS_diffuseFalloff(wi.z) * AS_diffuseFalloff(wo.z);
@@ -32,9 +53,9 @@ Lobes ashikhminShirleyEval(const Material& material, const dvec3& wi, const dvec
   return lobes;
 }
 
-dvec3 ashikhminShirleySampleSpecular(const Material& material, const dvec3& wo, const dvec2& u) {
-  const double nu = material.nu;
-  const double nv = material.nv;
+dvec3 ashikhminShirleySampleSpecular(const AshikhminShirleyParams& p, const dvec3& wo, const dvec2& u) {
+  const double nu = p.nu;
+  const double nv = p.nv;
   // First quadrant: phi = atan(sqrt((nu+1)/(nv+1)) tan(pi v / 2)) with v in [0,1); u.z picks the quadrant
   // and v is mirrored in the second and fourth so that the map stays continuous (as pbrt-v2 does).
   const double u4 = 4.0 * u.y;
@@ -54,14 +75,19 @@ dvec3 ashikhminShirleySampleSpecular(const Material& material, const dvec3& wo, 
   return reflectAbout(wo, sphericalDirection(theta.sinTheta, theta.cosTheta, cosPhi, sinPhi));
 }
 
-double ashikhminShirleyPdfSpecular(const Material& material, const dvec3& wi, const dvec3& wo) {
-  const double nu = material.nu;
-  const double nv = material.nv;
+double ashikhminShirleyPdfSpecular(const AshikhminShirleyParams& p, const dvec3& wi, const dvec3& wo) {
+  const double nu = p.nu;
+  const double nv = p.nv;
   const dvec3 h = wi + wo;
   const double VoH = glm::dot(wo, h) / glm::length(h);
   if (!(VoH > 0.0)) return 0.0;  // see ashikhminShirleyEval
   const double pH = std::sqrt((nu + 1.0) * (nv + 1.0)) / (2.0 * kPi) * AS_lobe(h, nu, nv);
   return pH / (4.0 * VoH);
+}
+
+// (N.H)^k ~ exp(-(nu p^2 + nv q^2) / 2) in H space.
+SpecularLobe ashikhminShirleySpecularLobe(const AshikhminShirleyParams& p) {
+  return {mixtureProbability(p.Rd, p.Rs), {std::sqrt(2.0 / p.nu), std::sqrt(2.0 / p.nv)}, false};
 }
 
 }  // namespace raylab::reference

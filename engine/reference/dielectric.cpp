@@ -1,6 +1,6 @@
-// The smooth dielectric of docs/brdf_contract.md ("Glass"): which side the light comes from, mirror
-// reflection, Snell refraction with total internal reflection, and three Fresnel factors (the exact
-// unpolarised one the renderer uses and two Schlick forms for comparison).
+// A smooth dielectric interface (docs/brdf_contract.md, the delta BSDF "glass"): which side the light comes
+// from, mirror reflection, Snell refraction with total internal reflection, and three Fresnel factors (the
+// exact unpolarised one the renderer uses and two Schlick forms for comparison).
 #include <cmath>
 
 #include "reference/brdf_reference.h"
@@ -8,8 +8,8 @@
 
 namespace raylab::reference {
 
-GlassResult glass(double eta, const dvec3& wi, const dvec3& n) {
-  GlassResult result;
+DielectricEvent dielectricEvent(double eta, const dvec3& wi, const dvec3& n) {
+  DielectricEvent result;
   const double cosN = glm::dot(wi, n);
   const bool fromOutside = cosN >= 0.0;
   const double etaI = fromOutside ? 1.0 : eta;

@@ -1,0 +1,33 @@
+// Ward, "Measuring and Modeling Anisotropic Reflection", SIGGRAPH 1992:
+//   f = rho_d/pi + rho_s exp(-e) / (4 pi ax ay sqrt(cos_i cos_o)).
+// The exponent e and the sampler are the Ward lobe's (ward_lobe.h).
+#include <cmath>
+
+#include "generated/reference_params.h"
+#include "reference/terms.h"
+#include "ward_lobe.h"
+
+namespace raylab::reference {
+
+Lobes wardEval(const WardParams& p, const dvec3& wi, const dvec3& wo) {
+  if (!aboveHorizon(wi, wo)) return {};
+  const Lobes diffuseOnly{p.rho_d * kInvPi, dvec3(0.0)};
+  const dvec3 h = wi + wo;
+  const double lobe = std::exp(-wardExponent(h, p.alpha_x, p.alpha_y));
+  // Once exp(-e) underflows the value is 0; stopping here keeps 0 * inf out of a 1/h_z^4.
+  if (lobe == 0.0) return diffuseOnly;
+  const double spec = lobe / (4.0 * kPi * p.alpha_x * p.alpha_y * std::sqrt(wi.z * wo.z));
+  return {diffuseOnly.diffuse, p.rho_s * spec};
+}
+
+dvec3 wardSampleSpecular(const WardParams& p, const dvec3& wo, const dvec2& u) {
+  return wardLobeSample(p.alpha_x, p.alpha_y, wo, u);
+}
+
+double wardPdfSpecular(const WardParams& p, const dvec3& wi, const dvec3& wo) {
+  return wardLobePdf(p.alpha_x, p.alpha_y, wi, wo);
+}
+
+SpecularLobe wardSpecularLobe(const WardParams& p) { return wardSpecularLobe(p.rho_d, p.rho_s, p.alpha_x, p.alpha_y); }
+
+}  // namespace raylab::reference

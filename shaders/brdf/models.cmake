@@ -1,0 +1,15 @@
+# The BRDF model registry: one entry per model, in id order. A model is its GLSL file (lobe flags, parameter
+# table, <prefix>Eval/Pdf/Sample or <prefix>DeltaEvent) and its double-precision reference file; everything
+# else (dispatch, parameter table, CLI, viewer, Python, tests, tools) derives from these entries
+# (tools/cmake/brdf_registry.py, docs/extending.md). Scenes name models, never ids: the order may change.
+set(reference ${PROJECT_SOURCE_DIR}/engine/reference/models)
+raylab_brdf_model(lambert PREFIX lambert GLSL brdf/lambert.glsl REFERENCE ${reference}/lambert.cpp)
+raylab_brdf_model(phong PREFIX phong GLSL brdf/phong.glsl REFERENCE ${reference}/phong.cpp)
+raylab_brdf_model(blinnphong PREFIX blinnPhong GLSL brdf/blinnphong.glsl REFERENCE ${reference}/blinnphong.cpp)
+raylab_brdf_model(cooktorrance PREFIX cookTorrance GLSL brdf/cooktorrance.glsl REFERENCE ${reference}/cooktorrance.cpp)
+raylab_brdf_model(ward PREFIX ward GLSL brdf/ward.glsl REFERENCE ${reference}/ward.cpp)
+raylab_brdf_model(ward_duer PREFIX wardDuer GLSL brdf/ward_duer.glsl REFERENCE ${reference}/ward_duer.cpp)
+raylab_brdf_model(ward_gmd PREFIX wardGmd GLSL brdf/ward_gmd.glsl REFERENCE ${reference}/ward_gmd.cpp)
+raylab_brdf_model(ashikhmin_shirley PREFIX ashikhminShirley GLSL brdf/ashikhmin_shirley.glsl
+                  REFERENCE ${reference}/ashikhmin_shirley.cpp)
+raylab_brdf_model(glass PREFIX glass GLSL brdf/glass.glsl REFERENCE ${reference}/glass.cpp)
