@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "reference/cubature.h"
 #include "reference/terms.h"
 #include "reference_materials.h"
+#include "support/registry_materials.h"
 
 namespace raylab::test {
 namespace {
@@ -114,12 +116,20 @@ TEST(AlbedoQuadrature, LobeCoordinatesAgreeWithPlainHemisphere) {
       {"ward_gmd", {{"rho_d", 0.3}, {"rho_s", 0.7}, {"alpha_x", 0.1}, {"alpha_y", 0.4}}},
       {"ashikhmin_shirley", {{"Rd", 0.5}, {"Rs", 0.5}, {"nu", 20}, {"nv", 2}}},
   };
+  std::vector<Case> allCases = cases;
+  std::set<std::string, std::less<>> covered = {"lambert"};  // exact: LambertIsExactlyRhoD
+  for (const Case& c : cases) covered.insert(c.model);
+  for (const GenericMaterial& generic : uncoveredModelMaterials(covered)) {
+    std::vector<ParamValue> params;
+    for (const auto& [name, value] : generic.params) params.push_back({name, value});
+    allCases.push_back({generic.model, params});
+  }
   reference::CubatureOptions options;
   options.relTolerance = 1e-9;
   options.maxRegions = 100000;
   options.initialX = 8;
   options.initialY = 16;
-  for (const Case& c : cases) {
+  for (const Case& c : allCases) {
     const Material material = makeMaterial(c.model, c.params);
     for (double theta : {0.0, 60.0, 89.0}) {
       const dvec3 wo = directionFromAngles(theta * kDegree, 30.0 * kDegree);

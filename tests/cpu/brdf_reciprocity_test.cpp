@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <cstdio>
 #include <map>
 #include <random>
@@ -21,6 +22,7 @@
 
 #include "reference/terms.h"
 #include "reference_materials.h"
+#include "support/registry_materials.h"
 
 namespace raylab::test {
 namespace {
@@ -67,6 +69,13 @@ std::vector<std::pair<std::string, std::vector<ParamValue>>> materialsUnderTest(
   }
   for (auto [nu, nv] : {std::pair{1.0, 1.0}, {100.0, 100.0}, {10000.0, 10000.0}, {1.0, 10000.0}, {10.0, 1000.0}}) {
     list.push_back({"ashikhmin_shirley", {{"Rd", 0.3}, {"Rs", 0.6}, {"nu", nu}, {"nv", nv}}});
+  }
+  std::set<std::string, std::less<>> covered;
+  for (const auto& [model, params] : list) covered.insert(model);
+  for (const GenericMaterial& generic : uncoveredModelMaterials(covered)) {
+    std::vector<ParamValue> params;
+    for (const auto& [name, value] : generic.params) params.push_back({name, value});
+    list.push_back({generic.model, params});
   }
   return list;
 }
@@ -137,7 +146,10 @@ TEST(Reciprocity, EveryModelIsSymmetricInWiAndWo) {
     std::printf("  %-18s all %.2e   V.H > 0.1: %.2e   (%lld pairs)\n", model.c_str(), worst,
                 worstAwayPerModel[model], countPerModel[model]);
   }
-  EXPECT_EQ(worstPerModel.size(), 8u);  // every BRDF model (glass is a delta BSDF, tested in glass_physics_test)
+  // Every registered model with an f (delta BSDFs are tested in glass_physics_test).
+  std::size_t withF = 0;
+  for (const ModelInfo& model : allModels()) withF += isDeltaOnly(model) ? 0 : 1;
+  EXPECT_EQ(worstPerModel.size(), withF);
 }
 
 // The test can fail: a deliberately non-reciprocal variant (Phong's f times cos_o, the classic slip of folding

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -15,6 +16,7 @@
 
 #include "reference/terms.h"
 #include "reference_materials.h"
+#include "support/registry_materials.h"
 #include "support/chi2.h"
 
 namespace raylab::test {
@@ -50,8 +52,15 @@ std::vector<SamplingCase> samplingCases() {
       {"ashikhmin_shirley", {{"Rd", 0}, {"Rs", 1}, {"nu", 100}, {"nv", 100}}},
   };
   std::vector<SamplingCase> cases;
+  std::set<std::string, std::less<>> covered;
   for (const auto& [model, params] : materials) {
+    covered.insert(model);
     for (double theta : {0.0, 45.0, 85.0}) cases.push_back({model, params, theta});
+  }
+  for (const GenericMaterial& generic : uncoveredModelMaterials(covered)) {
+    std::vector<ParamValue> params;
+    for (const auto& [name, value] : generic.params) params.push_back({name, value});
+    for (double theta : {0.0, 45.0, 85.0}) cases.push_back({generic.model, params, theta});
   }
   return cases;
 }

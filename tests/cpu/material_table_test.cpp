@@ -1,8 +1,9 @@
-// The BRDF parameter table is defined once, in code (engine/brdf_params/material_params.cpp). Three texts repeat
-// it for their readers: the contract the code cites (docs/brdf_contract.md), the model pages (docs/brdfs.md) and
-// the parameter table each GLSL model file opens with (shaders/brdf/<model>.glsl). This test reads all three and
-// requires each to name the same models with the same parameters, ranges and defaults as the code (and the
-// model pages the same log scales), so that none can drift alone.
+// The BRDF parameter table is defined once, in the table each model's GLSL file opens with, from which the build
+// generates the code's table (tools/cmake/brdf_registry.py). Two texts repeat it for their readers: the contract
+// the code cites (docs/brdf_contract.md) and the model pages (docs/brdfs.md). This test reads both, and the GLSL
+// tables as the generator's check, and requires each to name the same models with the same parameters, ranges
+// and defaults as the code (and the model pages the same log scales), so that none can drift alone. Models that
+// live in the test tree (tests/models) are not documented for users.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -98,11 +99,20 @@ Table modelPagesTable() {
   return table;
 }
 
-// shaders/brdf/<model>.glsl: the table in the file's opening comment.
+// The models users see: the library's, not the test tree's.
+std::vector<const ModelInfo*> documentedModels() {
+  std::vector<const ModelInfo*> models;
+  for (const ModelInfo& model : allModels()) {
+    if (!model.glslFile.starts_with("tests/")) models.push_back(&model);
+  }
+  return models;
+}
+
+// Each model's GLSL file: the table in the file's opening comment.
 Table glslTable() {
   Table table;
   for (const ModelInfo& model : allModels()) {
-    std::istringstream lines(readSource("shaders/brdf/" + std::string(model.name) + ".glsl"));
+    std::istringstream lines(readSource(std::string(model.glslFile)));
     std::string line;
     while (std::getline(lines, line) && line.rfind("//", 0) == 0) {
       if (const std::optional<DocParam> param = parameterRow(line)) table[std::string(model.name)].push_back(*param);
@@ -111,9 +121,10 @@ Table glslTable() {
   return table;
 }
 
-void expectSameAsCode(const Table& table, const std::string& where) {
-  EXPECT_EQ(table.size(), allModels().size()) << where << " lists another set of models";
-  for (const ModelInfo& model : allModels()) {
+void expectSameAsCode(const Table& table, const std::string& where, const std::vector<const ModelInfo*>& models) {
+  EXPECT_EQ(table.size(), models.size()) << where << " lists another set of models";
+  for (const ModelInfo* modelPointer : models) {
+    const ModelInfo& model = *modelPointer;
     const auto row = table.find(std::string(model.name));
     ASSERT_NE(row, table.end()) << model.name << " is missing from " << where;
     ASSERT_EQ(row->second.size(), model.params.size()) << where << ": " << model.name;
@@ -131,22 +142,28 @@ void expectSameAsCode(const Table& table, const std::string& where) {
   }
 }
 
-TEST(MaterialTable, TheContractsTableEqualsTheCodes) { expectSameAsCode(contractTable(), "docs/brdf_contract.md"); }
+TEST(MaterialTable, TheContractsTableEqualsTheCodes) {
+  expectSameAsCode(contractTable(), "docs/brdf_contract.md", documentedModels());
+}
 
 TEST(MaterialTable, TheModelPagesTablesEqualTheCodes) {
   const Table table = modelPagesTable();
-  expectSameAsCode(table, "docs/brdfs.md");
+  expectSameAsCode(table, "docs/brdfs.md", documentedModels());
   // The pages mark log scales: every log parameter of the code says so there.
-  for (const ModelInfo& model : allModels()) {
-    const std::vector<DocParam>& params = table.at(std::string(model.name));
-    for (std::size_t i = 0; i < model.params.size() && i < params.size(); ++i) {
-      EXPECT_EQ(params[i].logScale.value_or(false), model.params[i].logScale)
-          << "docs/brdfs.md: " << model.name << "." << model.params[i].name << " log scale";
+  for (const ModelInfo* model : documentedModels()) {
+    const std::vector<DocParam>& params = table.at(std::string(model->name));
+    for (std::size_t i = 0; i < model->params.size() && i < params.size(); ++i) {
+      EXPECT_EQ(params[i].logScale.value_or(false), model->params[i].logScale)
+          << "docs/brdfs.md: " << model->name << "." << model->params[i].name << " log scale";
     }
   }
 }
 
-TEST(MaterialTable, EveryGlslModelFileOpensWithTheCodesTable) { expectSameAsCode(glslTable(), "shaders/brdf/*.glsl"); }
+TEST(MaterialTable, EveryGlslModelFileOpensWithTheCodesTable) {
+  std::vector<const ModelInfo*> all;
+  for (const ModelInfo& model : allModels()) all.push_back(&model);
+  expectSameAsCode(glslTable(), "the models' GLSL files", all);
+}
 
 }  // namespace
 }  // namespace raylab::test

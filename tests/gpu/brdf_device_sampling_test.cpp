@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -19,6 +20,7 @@
 #include "brdf_params/material_params.h"
 #include "support/chi2.h"
 #include "support/gpu_test.h"
+#include "support/registry_materials.h"
 
 namespace raylab::test {
 namespace {
@@ -57,7 +59,15 @@ std::vector<SamplingCase> samplingCases() {
       {"ashikhmin_shirley", {{"Rd", 0.0f}, {"Rs", 1.0f}, {"nu", 100.0f}, {"nv", 100.0f}}},
   };
   std::vector<SamplingCase> cases;
+  std::set<std::string, std::less<>> covered;
   for (const auto& [model, params] : materials) {
+    covered.insert(model);
+    for (double theta : {0.0, 45.0, 85.0}) cases.push_back({model, params, theta});
+  }
+  for (const GenericMaterial& generic : uncoveredModelMaterials(covered)) {
+    std::vector<Param> params;
+    for (const auto& [name, value] : generic.params) params.push_back({name.data(), float(value)});
+    const char* model = findModel(generic.model)->name.data();  // the registry's names are string literals
     for (double theta : {0.0, 45.0, 85.0}) cases.push_back({model, params, theta});
   }
   return cases;

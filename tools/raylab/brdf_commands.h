@@ -8,5 +8,7 @@ class App;
 namespace raylab {
 
 void addBrdfAlbedoCommand(CLI::App& brdf);
+// `raylab brdf models` (brdf_models.cpp).
+void addBrdfModelsCommand(CLI::App& brdf);
 
 }  // namespace raylab

@@ -1,5 +1,5 @@
 // `raylab brdf`: the BRDF library from the command line, one subcommand per job: eval (values of f and of
-// glass) and albedo (brdf_albedo.cpp), the data of tools/brdf_plot.py.
+// glass), albedo (brdf_albedo.cpp), the data of tools/brdf_plot.py, and models (brdf_models.cpp).
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -68,7 +68,7 @@ int evaluate(const EvalOptions& o) {
 
 void addBrdfCommands(CLI::App& raylab) {
   CLI::App* brdf = addCommandGroup(raylab, "brdf",
-                                   "the BRDF library outside the renderer: brdf eval, brdf albedo (docs/brdfs.md)");
+                                   "the BRDF library outside the renderer: brdf eval, brdf albedo, brdf models (docs/brdfs.md)");
   auto o = std::make_shared<EvalOptions>();
   CLI::App* command = addCommand(
       *brdf, "eval",
@@ -86,6 +86,7 @@ void addBrdfCommands(CLI::App& raylab) {
   addChoice(command, "--backend", o->backend, {"gpu", "cpu"}, "the shader library on the device, or the CPU reference");
   addDeviceOption(command, o->device);
   addBrdfAlbedoCommand(*brdf);
+  addBrdfModelsCommand(*brdf);
 }
 
 }  // namespace raylab

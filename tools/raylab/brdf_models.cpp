@@ -1,0 +1,82 @@
+// `raylab brdf models`: the model registry as users and scripts read it (tools/*.py call it with --json instead
+// of keeping their own lists). Everything printed comes from the registry's generated table.
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "brdf_commands.h"
+#include "brdf_params/material_params.h"
+#include "cli.h"
+#include "shared/brdf_lobes.h"
+#include "util/error.h"
+
+namespace raylab {
+
+namespace {
+
+std::string lobeNames(std::uint32_t lobes) {
+  constexpr std::pair<std::uint32_t, const char*> kNames[] = {
+      {gpu::kLobeReflection, "reflection"}, {gpu::kLobeTransmission, "transmission"}, {gpu::kLobeDiffuse, "diffuse"},
+      {gpu::kLobeGlossy, "glossy"},         {gpu::kLobeSpecular, "specular"}};
+  std::string names;
+  for (const auto& [bit, name] : kNames) {
+    if (lobes & bit) names += (names.empty() ? "" : " ") + std::string(name);
+  }
+  return names;
+}
+
+nlohmann::ordered_json paramJson(const ParamInfo& p) {
+  return {{"name", p.name},       {"type", p.rgb ? "rgb" : "scalar"}, {"min", p.min},
+          {"max", p.max},         {"default", p.defaultValue},        {"scale", p.logScale ? "log" : "linear"},
+          {"role", p.role},       {"meaning", p.meaning}};
+}
+
+int listModels(bool json) {
+  if (json) {
+    nlohmann::ordered_json models = nlohmann::ordered_json::array();
+    for (const ModelInfo& model : allModels()) {
+      nlohmann::ordered_json params = nlohmann::ordered_json::array();
+      for (const ParamInfo& p : model.params) params.push_back(paramJson(p));
+      params.push_back(paramJson(deltaParam()));
+      models.push_back({{"name", model.name},
+                        {"lobes", lobeNames(model.lobes)},
+                        {"delta_only", isDeltaOnly(model)},
+                        {"params", params},
+                        {"sweep_base", model.sweepBase},
+                        {"glsl", model.glslFile},
+                        {"reference", model.referenceFile}});
+    }
+    std::printf("%s\n", models.dump(2).c_str());
+    return kExitOk;
+  }
+  for (const ModelInfo& model : allModels()) {
+    std::printf("%s  (%s; %s)\n", std::string(model.name).c_str(), lobeNames(model.lobes).c_str(),
+                std::string(model.glslFile).c_str());
+    for (const ParamInfo& p : model.params) {
+      std::printf("  %-8s %-3s [%g, %g] default %g%s  %s\n", std::string(p.name).c_str(), p.rgb ? "rgb" : "",
+                  p.min, p.max, p.defaultValue, p.logScale ? ", log scale" : "", std::string(p.meaning).c_str());
+    }
+  }
+  const ParamInfo& delta = deltaParam();
+  std::printf("every model also has %s [%g, %g] default %g: the %s\n", std::string(delta.name).c_str(), delta.min,
+              delta.max, delta.defaultValue, std::string(delta.meaning).c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void addBrdfModelsCommand(CLI::App& brdf) {
+  auto json = std::make_shared<bool>(false);
+  CLI::App* command = addCommand(
+      brdf, "models",
+      "list the BRDF models and their parameters (names, ranges, defaults, roles)\n"
+      "Lists every model of the registry (shaders/brdf/models.cmake) with its lobes and parameters, as text or, "
+      "with --json, as an array of {name, lobes, delta_only, params: [{name, type, min, max, default, scale, role, "
+      "meaning}], sweep_base, glsl, reference} for scripts. docs/extending.md says how a model is added.",
+      [json] { return listModels(*json); });
+  addFlag(command, "--json", *json, "print JSON instead of text");
+}
+
+}  // namespace raylab
