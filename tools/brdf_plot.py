@@ -55,8 +55,7 @@ def parse_args() -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter,
                                      epilog="\n\n".join(__doc__.split("\n\n")[1:]))
-    parser.add_argument("--model", required=True, help="lambert, phong, blinnphong, cooktorrance, ward, ward_duer, "
-                        "ward_gmd, ashikhmin_shirley or glass")
+    parser.add_argument("--model", required=True, help="a model of `raylab brdf models`")
     parser.add_argument("--params", default="", help="'k=v;k=v' as in `raylab brdf eval` (RGB as r/g/b); "
                         "others take the defaults of docs/brdfs.md")
     parser.add_argument("--out", type=Path, required=True, metavar="FILE.png", help="the figure to write")

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Regenerates the BRDF figures of docs/brdfs.md: one tools/brdf_plot.py figure per model (and a log-radius
-figure of a sharp lobe) into docs/images/brdf/.
+"""Regenerates the BRDF figures of docs/brdfs.md: one tools/brdf_plot.py figure per model of the registry
+(`raylab brdf models`; models of the test tree excluded) and a log-radius figure of a sharp lobe, into
+docs/images/brdf/. Models without a hand-picked figure below get their defaults.
 
     .venv/bin/python tools/brdf_plots_all.py                 # about a minute
     .venv/bin/python tools/brdf_plots_all.py --only phong,glass --raylab build/debug/raylab
@@ -13,7 +14,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from raylab_tools import REPO, ToolError, add_raylab_option, check_raylab, run_main
+from raylab_tools import REPO, ToolError, add_raylab_option, check_raylab, registered_models, run_main
 
 MAX_BYTES = 150 * 1024  # the repository's limit per image
 
@@ -27,7 +28,8 @@ class Figure:
 
 
 ANISOTROPIC = ("--phi", "0,90")
-FIGURES = [
+# Hand-picked figures; every other registered model gets one of its defaults (figures()).
+CHOSEN = [
     Figure("lambert", "lambert", "rho_d=1"),
     Figure("phong", "phong", "rho_d=0;rho_s=1;s=50"),
     Figure("blinnphong", "blinnphong", "rho_d=0;rho_s=1;s=50"),
@@ -48,15 +50,22 @@ def parse_args() -> argparse.Namespace:
     parser.add_argument("--out", type=Path, default=REPO / "docs" / "images" / "brdf",
                         help="output directory (default docs/images/brdf)")
     parser.add_argument("--only", default=None, metavar="LIST",
-                        help="comma-separated figure names: " + ", ".join(f.name for f in FIGURES))
+                        help="comma-separated figure names (a model's name, or cooktorrance_sharp_log)")
     add_raylab_option(parser)
     return parser.parse_args()
 
 
-def selected(only: str | None) -> list[Figure]:
+def figures(raylab: Path) -> list[Figure]:
+    chosen = {f.model for f in CHOSEN}
+    extra = [Figure(m["name"], m["name"], "", ANISOTROPIC if any(p["role"].endswith("_x") for p in m["params"]) else ())
+             for m in registered_models(raylab) if m["name"] not in chosen and not m["glsl"].startswith("tests/")]
+    return CHOSEN + extra
+
+
+def selected(all_figures: list[Figure], only: str | None) -> list[Figure]:
     if only is None:
-        return FIGURES
-    by_name = {f.name: f for f in FIGURES}
+        return all_figures
+    by_name = {f.name: f for f in all_figures}
     unknown = [n for n in only.split(",") if n not in by_name]
     if unknown:
         raise ToolError(f"--only: unknown {', '.join(unknown)} (known: {', '.join(by_name)})")
@@ -67,7 +76,7 @@ def main() -> None:
     args = parse_args()
     raylab = check_raylab(args.raylab)
     script = Path(__file__).resolve().parent / "brdf_plot.py"
-    for figure in selected(args.only):
+    for figure in selected(figures(raylab), args.only):
         out = args.out / f"{figure.name}.png"
         command = [sys.executable, str(script), "--model", figure.model, "--params", figure.params,
                    "--out", str(out), "--raylab", str(raylab), *figure.options]

@@ -7,6 +7,7 @@ The tools run with the project's virtual environment, which `tools/setup.sh rend
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import subprocess
 import sys
@@ -46,6 +47,21 @@ def run_raylab(raylab: Path, args: list[str], what: str) -> subprocess.Completed
         shown = lines if len(lines) <= 4 else [*lines[:3], f"... ({len(lines) - 4} more lines)", lines[-1]]
         raise ToolError(f"{what} failed (exit {result.returncode}): {' '.join(command)}\n  " + "\n  ".join(shown))
     return result
+
+
+def registered_models(raylab: Path) -> list[dict]:
+    """The BRDF model registry as `raylab brdf models --json` prints it: tools keep no model lists of their own."""
+    return json.loads(run_raylab(raylab, ["brdf", "models", "--json"], "listing the BRDF models").stdout)
+
+
+def generic_material(model: dict) -> dict:
+    """An extras.raylab material of a registered model for a figure without a hand-picked look for it: its
+    defaults, with a warm diffuse colour and grey other colours."""
+    material = {"model": model["name"]}
+    for param in model["params"]:
+        if param["type"] == "rgb":
+            material[param["name"]] = [0.6, 0.35, 0.25] if param["role"] == "diffuse" else [0.5, 0.5, 0.5]
+    return material
 
 
 def run_main(main) -> None:

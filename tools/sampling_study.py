@@ -28,7 +28,8 @@ import sys
 import time
 from pathlib import Path
 
-from raylab_tools import REPO, ToolError, add_raylab_option, check_raylab, run_main, run_raylab, venv_hint
+from raylab_tools import (REPO, ToolError, add_raylab_option, check_raylab, generic_material, registered_models,
+                          run_main, run_raylab, venv_hint)
 
 sys.path.insert(0, str(REPO / "tools" / "scenes"))
 import make_scenes  # noqa: E402
@@ -46,7 +47,9 @@ ENVIRONMENT = REPO / "assets" / "scenes" / "environments" / "sunrise.exr"
 EPSILON = 0.01
 TARGET = 1e-3
 STRATEGIES = [("mis", "o-"), ("bsdf", "s--"), ("light", "^-.")]
-MODELS = {
+MODELS_IN_USE: dict[str, dict] = {}  # name -> extras.raylab material, from the registry (parse_args)
+# Hand-picked looks; every other registered model (`raylab brdf models`) gets raylab_tools.generic_material.
+LOOKS = {
     "lambert": {"model": "lambert", "rho_d": [0.75, 0.2, 0.15]},
     "phong": {"model": "phong", "rho_d": [0.7, 0.5, 0.1], "rho_s": [0.3, 0.3, 0.3], "s": 60},
     "blinnphong": {"model": "blinnphong", "rho_d": [0.3, 0.65, 0.2], "rho_s": [0.3, 0.3, 0.3], "s": 120},
@@ -66,7 +69,7 @@ def write_scene(model: str, out: Path) -> Path:
     g = make_scenes.Gltf(f"sampling_{model}")
     floor = g.material("floor", {"model": "lambert", "rho_d": [0.5, 0.5, 0.5]})
     make_scenes.add_quad(g, "floor", [-6.0, 0.0, 6.0], [12.0, 0.0, 0.0], [0.0, 0.0, -12.0], floor)
-    g.sphere(model, [0.0, 1.0, 0.0], 1.0, g.material(model, MODELS[model]))
+    g.sphere(model, [0.0, 1.0, 0.0], 1.0, g.material(model, MODELS_IN_USE[model]))
     g.camera("camera", [0.0, 1.6, 4.2], [0.0, 0.8, 0.0], 40.0)
     g.environment("environments/" + ENVIRONMENT.name)
     return Path(g.write(str(out)))
@@ -88,7 +91,8 @@ def parse_args() -> argparse.Namespace:
                                      formatter_class=argparse.RawDescriptionHelpFormatter,
                                      epilog="\n\n".join(__doc__.split("\n\n")[1:]))
     add_raylab_option(parser)
-    parser.add_argument("--models", default=",".join(MODELS), help="comma-separated subset of the models")
+    parser.add_argument("--models", default=None, help="comma-separated subset of the models (default: every model "
+                        "of `raylab brdf models` with a density)")
     parser.add_argument("--width", type=int, default=128)
     parser.add_argument("--height", type=int, default=72)
     parser.add_argument("--max-spp", type=int, default=64, help="a power of two (default 64)")
@@ -99,9 +103,12 @@ def parse_args() -> argparse.Namespace:
     args = parser.parse_args()
     if args.quick:
         args.models, args.width, args.height, args.max_spp, args.reference_spp = "lambert,cooktorrance", 48, 27, 8, 128
-    unknown = [m for m in args.models.split(",") if m not in MODELS]
+    registry = {m["name"]: m for m in registered_models(check_raylab(args.raylab)) if not m["delta_only"]}
+    MODELS_IN_USE.update({name: LOOKS.get(name) or generic_material(model) for name, model in registry.items()})
+    args.models = args.models or ",".join(registry)
+    unknown = [m for m in args.models.split(",") if m not in registry]
     if unknown:
-        parser.error(f"--models: unknown {', '.join(unknown)} (known: {', '.join(MODELS)})")
+        parser.error(f"--models: unknown {', '.join(unknown)} (known: {', '.join(registry)})")
     if args.max_spp < 2 or args.max_spp & (args.max_spp - 1) or args.reference_spp < 4 * args.max_spp:
         parser.error("--max-spp must be a power of two >= 2 and --reference-spp at least 4x it")
     args.out = (args.out or REPO / "out" / ("sampling_study_quick" if args.quick else "sampling_study")).resolve()
