@@ -29,11 +29,4 @@ Backend chooseBackend(const Device& device, BackendChoice choice) {
 
 const char* backendName(Backend backend) { return backend == Backend::kPipeline ? "pipeline" : "query"; }
 
-BackendChoice parseBackendChoice(const std::string& name) {
-  if (name == "auto") return BackendChoice::kAuto;
-  if (name == "query") return BackendChoice::kQuery;
-  if (name == "pipeline") return BackendChoice::kPipeline;
-  throw Error("--backend: '" + name + "' is not one of auto, query, pipeline", kExitUsage);
-}
-
 }  // namespace raylab

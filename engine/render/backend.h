@@ -15,8 +15,7 @@ enum class BackendChoice { kAuto, kQuery, kPipeline };
 // otherwise. Throws Error(kExitNoDevice) naming what the device lacks when the requested one is not there.
 Backend chooseBackend(const Device& device, BackendChoice choice);
 
-// "query" or "pipeline"; parseBackendChoice takes those and "auto" (anything else: Error(kExitUsage)).
+// "query" or "pipeline" (render/render_choices.h parses the option).
 const char* backendName(Backend backend);
-BackendChoice parseBackendChoice(const std::string& name);
 
 }  // namespace raylab

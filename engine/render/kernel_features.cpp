@@ -3,6 +3,7 @@
 #include "brdf_params/material_params.h"
 #include "shared/features.h"
 #include "util/error.h"
+#include "util/render_options.h"
 
 namespace raylab {
 
@@ -35,8 +36,9 @@ std::uint32_t chooseIntegrator(const Scene& scene, IntegratorChoice choice) {
   return hasEmissiveGeometry(scene) || scene.environment.hasImage() ? gpu::kIntegratorPath : gpu::kIntegratorSlides;
 }
 
-const char* integratorName(std::uint32_t integrator) {
-  return integrator == gpu::kIntegratorPath ? "path" : "slides";
+std::string_view integratorName(std::uint32_t integrator) {
+  return kIntegratorValues[std::size_t(integrator == gpu::kIntegratorPath ? IntegratorChoice::kPath
+                                                                           : IntegratorChoice::kSlides)];
 }
 
 std::string describe(const KernelFeatures& features) {
@@ -60,7 +62,7 @@ std::string describe(const KernelFeatures& features) {
   for (const Named& named : kNames) {
     if (features.features & named.bit) list += (list.empty() ? "" : ", ") + std::string(named.name);
   }
-  return std::string("integrator: ") + integratorName(features.integrator) + "; models: " + (models.empty() ? std::string("none") : models) +
+  return std::string("integrator: ") + std::string(integratorName(features.integrator)) + "; models: " + (models.empty() ? std::string("none") : models) +
          "; features: " + (list.empty() ? std::string("none") : list) +
          ((features.features & gpu::kFeatureDeltaBsdf) && features.schlickFresnel ? "; glass Fresnel: Schlick" : "");
 }
@@ -71,13 +73,6 @@ KernelFeatures kernelFor(const Scene& scene, const KernelOptions& options) {
   kernel.integrator = chooseIntegrator(scene, options.integrator);
   kernel.sampling = options.sampling;
   return kernel;
-}
-
-std::uint32_t parseSampling(const std::string& name) {
-  if (name == "mis") return gpu::kSamplingMis;
-  if (name == "bsdf") return gpu::kSamplingBsdf;
-  if (name == "light") return gpu::kSamplingLight;
-  throw Error("sampling '" + name + "' is not mis, bsdf or light", kExitUsage);
 }
 
 }  // namespace raylab

@@ -28,8 +28,8 @@ enum class IntegratorChoice { kAuto, kSlides, kPath };
 // environment image (the slides' equation cannot show either lighting anything), the slides' integrator
 // otherwise.
 std::uint32_t chooseIntegrator(const Scene& scene, IntegratorChoice choice);
-// "slides" or "path".
-const char* integratorName(std::uint32_t integrator);
+// "slides" or "path" (the option's value naming it).
+std::string_view integratorName(std::uint32_t integrator);
 
 // Everything compiled in (the unspecialised kernel, for comparisons and for the viewer's model switching).
 KernelFeatures allFeatures();
@@ -43,8 +43,6 @@ struct KernelOptions {
 };
 // The kernel a render of `scene` with these options runs.
 KernelFeatures kernelFor(const Scene& scene, const KernelOptions& options);
-// "mis", "bsdf", "light" as gpu::kSampling...; throws Error(kExitUsage) naming the choices otherwise.
-std::uint32_t parseSampling(const std::string& name);
 
 // "models: lambert, phong; features: mirror, point lights"
 std::string describe(const KernelFeatures& features);

@@ -17,7 +17,7 @@
 #include "scene/scene.h"
 #include "shared/frame.h"
 #include "vk/device.h"
-#include "util/render_limits.h"
+#include "util/render_options.h"
 #include "vk/resources.h"
 
 namespace raylab {
@@ -26,7 +26,7 @@ namespace raylab {
 struct RenderSettings {
   std::uint32_t width = 640;
   std::uint32_t height = 360;
-  std::uint32_t maxDepth = 8;         // bounces after the primary hit
+  std::uint32_t maxDepth = kMaxDepthOption.defaultValue;  // bounces after the primary hit
   std::uint32_t seed = 0;
   bool jitter = true;                 // anti-aliasing by jittered sub-pixel samples; off: pixel centres
   float throughputCutoff = 1.0e-3f;   // paths whose weight falls below this stop

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "brdf_params/material_params.h"
+#include "render/kernel_features.h"
 #include "scene/radiance_limits.h"
 #include "shared/features.h"
 #include "util/progress.h"
@@ -98,14 +99,17 @@ PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selec
   if (!status.message.empty()) ImGui::TextWrapped("%s", status.message.c_str());
 
   if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) {
-    const char* integrators[] = {"slides", "path"};
+    // The integrators a kernel runs (the option's values after auto, which the viewer resolves when it opens).
+    const char* integrators[] = {kIntegratorValues[std::size_t(IntegratorChoice::kSlides)].data(),
+                                 kIntegratorValues[std::size_t(IntegratorChoice::kPath)].data()};
     int integrator = settings.integrator == gpu::kIntegratorPath ? 1 : 0;
     if (ImGui::Combo("integrator", &integrator, integrators, 2)) {
       settings.integrator = integrator == 1 ? gpu::kIntegratorPath : gpu::kIntegratorSlides;
       edits.integrator = true;
     }
     int depth = static_cast<int>(settings.maxDepth);
-    if (ImGui::SliderInt("max depth", &depth, 0, 64, "%d", ImGuiSliderFlags_AlwaysClamp)) {
+    if (ImGui::SliderInt("max depth", &depth, int(kMaxDepthOption.min), int(kMaxDepthOption.max), "%d",
+                         ImGuiSliderFlags_AlwaysClamp)) {
       settings.maxDepth = static_cast<std::uint32_t>(depth);
       edits.maxDepth = true;
     }

@@ -12,13 +12,14 @@
 
 #include "image/image.h"
 #include "scene/scene.h"
+#include "util/render_options.h"
 
 namespace raylab {
 
 // What the panel edits besides the scene.
 struct ViewSettings {
   std::uint32_t integrator = 0;  // gpu::kIntegrator...
-  std::uint32_t maxDepth = 8;
+  std::uint32_t maxDepth = kMaxDepthOption.defaultValue;
   float exposure = 0.0f;
   ToneMap toneMap = ToneMap::kClamp;
   float resolutionScale = 1.0f;  // full render size over window size

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <ctime>
 
+#include "render/render_choices.h"
 #include "shared/features.h"
 #include "util/error.h"
 #include "view_logic/scene_edits.h"
@@ -100,7 +101,7 @@ void applyScriptEvents(Viewer& v) {
         v.settings.maxDepth = static_cast<std::uint32_t>(event.value.x);
         break;
       case ScriptAction::kSetIntegrator:
-        v.settings.integrator = event.param == "path" ? gpu::kIntegratorPath : gpu::kIntegratorSlides;
+        v.settings.integrator = chooseIntegrator(v.scene, parseIntegratorChoice(event.param, event.where));
         switchIntegrator(v);
         break;
       case ScriptAction::kSetEnvironmentStrength:

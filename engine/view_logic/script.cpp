@@ -11,7 +11,7 @@
 #include "scene/radiance_limits.h"
 #include "shared/scene_records.h"
 #include "util/error.h"
-#include "util/render_limits.h"
+#include "util/render_options.h"
 #include "util/files.h"
 #include "view_logic/compare_spec.h"
 #include "view_logic/scene_edits.h"
@@ -66,7 +66,7 @@ std::uint32_t parseCount(const std::string& word, const std::string& where, cons
 }
 
 void expectWords(const std::vector<std::string>& words, std::size_t count, const std::string& where,
-                 const char* form) {
+                 const std::string& form) {
   if (words.size() != count) throw Error(where + ": expected '" + form + "'");
 }
 
@@ -189,16 +189,12 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
       event.action = ScriptAction::kSetMaxDepth;
       event.value.x = float(parseCount(words[4], where, "the depth"));
       event.valueCount = 1;
-      if (event.value.x > float(kMaxDepthLimit)) {
-        throw Error(where + ": max-depth must be within 0.." + std::to_string(kMaxDepthLimit));
-      }
+      checkCount(kMaxDepthOption, std::int64_t(event.value.x), where);
     } else if (what == "integrator") {
-      expectWords(words, 5, where, "at <frame> set integrator slides|path");
+      expectWords(words, 5, where, "at <frame> set integrator " + choiceList(kIntegratorOption));
       event.action = ScriptAction::kSetIntegrator;
       event.param = words[4];
-      if (event.param != "slides" && event.param != "path") {
-        throw Error(where + ": the integrator is slides or path, not '" + event.param + "'");
-      }
+      choiceIndex(kIntegratorOption, event.param, where);
     } else if (what == "environment") {
       expectWords(words, 6, where, "at <frame> set environment strength|rotation <value>");
       const std::string& property = words[4];

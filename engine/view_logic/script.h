@@ -49,7 +49,7 @@ enum class ScriptAction {
   kSetLightCone,
   kSetExposure,
   kSetMaxDepth,
-  kSetIntegrator,            // param: "slides" or "path"
+  kSetIntegrator,            // param: a value of the integrator option (util/render_options.h)
   kSetEnvironmentStrength,
   kSetEnvironmentRotation,   // value.x in degrees
   kModel,

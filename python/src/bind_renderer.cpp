@@ -19,6 +19,7 @@
 #include "render/renderer.h"
 #include "util/error.h"
 #include "util/timer.h"
+#include "render/render_choices.h"
 
 namespace py = pybind11;
 
@@ -40,24 +41,14 @@ class PythonRenderer {
                  const std::string& schedule, std::uint32_t maxDepth, std::uint32_t seed, bool jitter,
                  std::optional<std::uint32_t> device)
       : scene_(scene) {
-    if (maxDepth > kMaxDepthLimit) {
-      throw Error("raylab.Renderer: max_depth must be within 0.." + std::to_string(kMaxDepthLimit), kExitUsage);
-    }
-    if (fresnel != "exact" && fresnel != "schlick") {
-      throw Error("raylab.Renderer: fresnel is exact or schlick, not '" + fresnel + "'", kExitUsage);
-    }
-    if (schedule != "auto" && schedule != "megakernel" && schedule != "wavefront") {
-      throw Error("raylab.Renderer: schedule is auto, megakernel or wavefront, not '" + schedule + "'", kExitUsage);
-    }
-    if (integrator != "auto" && integrator != "slides" && integrator != "path") {
-      throw Error("raylab.Renderer: integrator is auto, slides or path, not '" + integrator + "'", kExitUsage);
-    }
+    const std::string where = "raylab.Renderer";
+    checkCount(kMaxDepthOption, maxDepth, where);
     KernelOptions kernel;
-    kernel.integrator = integrator == "slides" ? IntegratorChoice::kSlides
-                        : integrator == "path" ? IntegratorChoice::kPath
-                                               : IntegratorChoice::kAuto;
-    kernel.sampling = parseSampling(sampling);
-    kernel.schlickFresnel = fresnel == "schlick";
+    kernel.integrator = parseIntegratorChoice(integrator, where);
+    kernel.sampling = parseSampling(sampling, where);
+    kernel.schlickFresnel = parseSchlickFresnel(fresnel, where);
+    const Schedule scheduleChoice = parseSchedule(schedule, where);
+    const BackendChoice backendChoice = parseBackendChoice(backend, where);
     kernel.allFeatures = allFeatures;
     RenderSettings settings;
     settings.width = width;
@@ -66,10 +57,7 @@ class PythonRenderer {
     settings.seed = seed;
     settings.jitter = jitter;
     settings.kernel = kernelFor(scene_, kernel);
-    settings.schedule = schedule == "megakernel"  ? Schedule::kMegakernel
-                        : schedule == "wavefront" ? Schedule::kWavefront
-                                                  : Schedule::kAutomatic;
-    const BackendChoice backendChoice = parseBackendChoice(backend);
+    settings.schedule = scheduleChoice;
 
     context_ = deviceContext(device);
     const Device& d = context_->session.device;
@@ -164,7 +152,7 @@ class PythonRenderer {
     d["device"] = device.name;
     d["driver"] = device.driver;
     d["backend"] = backendName(renderer_.trace.backend);
-    d["integrator"] = integratorName(renderer_.kernel.integrator);
+    d["integrator"] = std::string(integratorName(renderer_.kernel.integrator));
     d["kernel"] = describe(renderer_.kernel);
     d["schedule"] = renderer_.wavefrontActive ? "wavefront" : "megakernel";
     d["acceleration_s"] = gpuScene_.accelerationBuildSeconds;
@@ -207,9 +195,12 @@ void bindRenderer(py::module_& m) {
                     const std::string&, bool, const std::string&, const std::string&, std::uint32_t, std::uint32_t,
                     bool, std::optional<std::uint32_t>>(),
            py::arg("scene"), py::kw_only(), py::arg("width") = 640, py::arg("height") = 360,
-           py::arg("integrator") = "auto", py::arg("sampling") = "mis", py::arg("fresnel") = "exact",
-           py::arg("all_features") = false, py::arg("backend") = "auto", py::arg("schedule") = "auto",
-           py::arg("max_depth") = 8, py::arg("seed") = 0, py::arg("jitter") = true, py::arg("device") = py::none())
+           py::arg("integrator") = std::string(kIntegratorOption.defaultValue),
+           py::arg("sampling") = std::string(kSamplingOption.defaultValue),
+           py::arg("fresnel") = std::string(kFresnelOption.defaultValue), py::arg("all_features") = false,
+           py::arg("backend") = std::string(kBackendOption.defaultValue),
+           py::arg("schedule") = std::string(kScheduleOption.defaultValue),
+           py::arg("max_depth") = kMaxDepthOption.defaultValue, py::arg("seed") = 0, py::arg("jitter") = true, py::arg("device") = py::none())
       .def("render", &PythonRenderer::render, py::arg("spp") = 16, py::arg("seed") = py::none(),
            "Clears the accumulation and renders spp samples per pixel (with `seed`, else the renderer's); returns the "
            "mean radiance, float32 (height, width, 4), alpha 1.")

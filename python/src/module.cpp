@@ -29,9 +29,33 @@ PYBIND11_MODULE(_raylab, m) {
   py::dict limits;
   limits["max_image_side"] = raylab::kMaxImageSide;
   limits["max_spp"] = raylab::kMaxSamplesPerPixel;
-  limits["max_depth"] = raylab::kMaxDepthLimit;
+  limits["max_depth"] = raylab::kMaxDepthOption.max;
   limits["max_exposure_stops"] = raylab::kMaxExposureStops;
   m.attr("limits") = limits;
+  // The render options as the engine declares them (util/render_options.h): values, defaults, ranges, help; the
+  // farm's RenderJob and command line read these rather than repeating them. Keys use '_' for '-'.
+  py::dict options;
+  auto key = [](std::string_view name) {
+    std::string text(name);
+    for (char& c : text) c = c == '-' ? '_' : c;
+    return text;
+  };
+  for (const raylab::ChoiceOption* option : raylab::kChoiceOptions) {
+    py::list values;
+    for (std::string_view value : option->values) values.append(std::string(value));
+    py::dict entry;
+    entry["values"] = values;
+    entry["default"] = std::string(option->defaultValue);
+    entry["help"] = std::string(option->help);
+    options[py::str(key(option->name))] = entry;
+  }
+  py::dict depth;
+  depth["min"] = raylab::kMaxDepthOption.min;
+  depth["max"] = raylab::kMaxDepthOption.max;
+  depth["default"] = raylab::kMaxDepthOption.defaultValue;
+  depth["help"] = std::string(raylab::kMaxDepthOption.help);
+  options[py::str(key(raylab::kMaxDepthOption.name))] = depth;
+  m.attr("render_options") = options;
   raylab::python::bindScene(m);
   raylab::python::bindRenderer(m);
   raylab::python::bindBrdf(m);

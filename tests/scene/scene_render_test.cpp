@@ -75,7 +75,7 @@ TEST_F(SceneRenderTest, EveryCommittedSceneRendersFiniteWithBothIntegrators) {
   for (const fs::path& file : files) {
     const Scene scene = loadQuietly(file);
     for (IntegratorChoice integrator : {IntegratorChoice::kSlides, IntegratorChoice::kPath}) {
-      const std::string name = file.stem().string() + "_" + integratorName(chooseIntegrator(scene, integrator));
+      const std::string name = file.stem().string() + "_" + std::string(integratorName(chooseIntegrator(scene, integrator)));
       SCOPED_TRACE(name);
       RenderSettings settings;
       settings.width = 64;

@@ -19,6 +19,7 @@
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "view/viewer.h"
+#include "render/render_choices.h"
 
 namespace raylab {
 
@@ -148,7 +149,7 @@ struct ViewBenchOptions {
   bool json = false;
   std::string scenePath;
   std::string csvPath;
-  std::string backend = "auto";
+  std::string backend{kBackendOption.defaultValue};
 };
 
 int benchView(const ViewBenchOptions& o) {
@@ -168,7 +169,7 @@ int benchView(const ViewBenchOptions& o) {
   std::vector<ViewTiming> timings;
   for (const Size size : {Size{640, 360}, Size{1280, 720}}) {
     timings.push_back(timeViewer(scene, size, warmupFrames, orbitFrames, degrees, targetMs, spp,
-                                 parseBackendChoice(backend), csvPath.empty() ? nullptr : &csv));
+                                 parseBackendChoice(backend, "raylab bench view: --backend"), csvPath.empty() ? nullptr : &csv));
   }
   if (!csvPath.empty()) writeFileAtomically(csvPath, csv);
   const std::string loadAfter = loadAverage();

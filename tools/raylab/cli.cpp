@@ -322,12 +322,6 @@ ToneMap parseToneMap(const std::string& name) {
   return ToneMap::kClamp;
 }
 
-IntegratorChoice parseIntegratorChoice(const std::string& name) {
-  if (name == "slides") return IntegratorChoice::kSlides;
-  if (name == "path") return IntegratorChoice::kPath;
-  return IntegratorChoice::kAuto;
-}
-
 void requireExtension(const std::string& command, const std::string& option, const std::string& path,
                       const std::string& extension) {
   if (std::filesystem::path(path).extension() != extension) {
@@ -414,16 +408,20 @@ void addSceneOptions(CLI::App* command, SceneRequest& request) {
                     -kMaxEnvironmentRotationDegrees, kMaxEnvironmentRotationDegrees);
 }
 
+void addChoiceOption(CLI::App* command, const ChoiceOption& option, std::string& value) {
+  value = std::string(option.defaultValue);
+  addChoice(command, "--" + std::string(option.name), value,
+            std::vector<std::string>(option.values.begin(), option.values.end()), std::string(option.help));
+}
+
 void addIntegratorOption(CLI::App* command, std::string& integrator) {
-  addChoice(command, "--integrator", integrator, {"auto", "slides", "path"},
-            "slides: equation 2 of the slides (mirror weight, direct light); path: the rendering equation; auto: "
-            "path when the scene has an emissive surface or an environment image");
+  addChoiceOption(command, kIntegratorOption, integrator);
 }
 
 void addSampleOptions(CLI::App* command, RenderSettings& settings) {
   addCount(command, "--seed", settings.seed, "random seed of the sample pattern", 0, UINT32_MAX);
-  addCount(command, "--max-depth", settings.maxDepth, "bounces after the primary hit (mirror, glass, paths)", 0,
-           kMaxDepthLimit);
+  addCount(command, "--" + std::string(kMaxDepthOption.name), settings.maxDepth, std::string(kMaxDepthOption.help),
+           kMaxDepthOption.min, kMaxDepthOption.max);
 }
 
 void addToneOptions(CLI::App* command, float& exposure, std::string& toneMap, const std::string& what) {
@@ -431,11 +429,7 @@ void addToneOptions(CLI::App* command, float& exposure, std::string& toneMap, co
   addChoice(command, "--tonemap", toneMap, {"clamp", "reinhard", "aces"}, "tone curve of " + what);
 }
 
-void addBackendOption(CLI::App* command, std::string& backend) {
-  addChoice(command, "--backend", backend, {"auto", "query", "pipeline"},
-            "query: compute kernels with ray queries; pipeline: a ray-tracing pipeline (raygen, closest-hit, miss "
-            "and intersection programs); auto: ray queries where the device has them");
-}
+void addBackendOption(CLI::App* command, std::string& backend) { addChoiceOption(command, kBackendOption, backend); }
 
 void addBenchBackendOption(CLI::App* command, std::string& backend) {
   addChoice(command, "--backend", backend, {"all", "auto", "query", "pipeline"},

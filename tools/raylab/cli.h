@@ -61,7 +61,6 @@ void addPositional(CLI::App* command, const std::string& name, std::string& valu
 
 // The names options take, as the kernels and images use them.
 ToneMap parseToneMap(const std::string& name);
-IntegratorChoice parseIntegratorChoice(const std::string& name);
 // Throws Error(kExitUsage) "<command>: <option>: 'path' must end in <extension>".
 void requireExtension(const std::string& command, const std::string& option, const std::string& path,
                       const std::string& extension);
@@ -70,6 +69,8 @@ void requireExtension(const std::string& command, const std::string& option, con
 // SCENE (positional), --camera, --allow-outside-uris, --env, --env-strength, --env-rotation.
 void addSceneOptions(CLI::App* command, SceneRequest& request);
 // --integrator auto|slides|path.
+// A render option of util/render_options.h: its name, values, help and default (set into `value`).
+void addChoiceOption(CLI::App* command, const ChoiceOption& option, std::string& value);
 void addIntegratorOption(CLI::App* command, std::string& integrator);
 // --seed and --max-depth.
 void addSampleOptions(CLI::App* command, RenderSettings& settings);

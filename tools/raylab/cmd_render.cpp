@@ -24,6 +24,7 @@
 #include "util/progress.h"
 #include "util/timer.h"
 #include "view_logic/compare_spec.h"
+#include "render/render_choices.h"
 
 namespace raylab {
 
@@ -44,11 +45,12 @@ struct RenderOptions {
   bool noPng = false;
   bool stats = false;
   bool allFeatures = false;
-  std::string fresnel = "exact";
-  std::string integrator = "auto";
-  std::string sampling = "mis";
-  std::string backend = "auto";
-  std::string schedule = "auto";
+  // The render options' values as given; their defaults come from util/render_options.h (addChoiceOption).
+  std::string fresnel;
+  std::string integrator;
+  std::string sampling;
+  std::string backend;
+  std::string schedule;
   std::optional<std::uint32_t> device;
   std::vector<std::string> materials;  // --material MATERIAL=MODEL[:k=v,...]
 };
@@ -74,7 +76,7 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
       {"seed", o.settings.seed},
       {"max_depth", o.settings.maxDepth},
       {"fresnel", o.fresnel},
-      {"integrator", integratorName(renderer.kernel.integrator)},
+      {"integrator", std::string(integratorName(renderer.kernel.integrator))},
       {"sampling", o.sampling},
       {"dropped_samples", renderer.droppedSamples},
       {"all_features", o.allFeatures},
@@ -170,17 +172,15 @@ void render(RenderOptions o) {
     scene.materials[spec.material].record = spec.record;
   }
   KernelOptions kernel;
-  kernel.integrator = parseIntegratorChoice(o.integrator);
-  kernel.sampling = parseSampling(o.sampling);
-  kernel.schlickFresnel = o.fresnel == "schlick";
+  kernel.integrator = parseIntegratorChoice(o.integrator, "raylab render: --integrator");
+  kernel.sampling = parseSampling(o.sampling, "raylab render: --sampling");
+  kernel.schlickFresnel = parseSchlickFresnel(o.fresnel, "raylab render: --fresnel");
   kernel.allFeatures = o.allFeatures;
   o.settings.kernel = kernelFor(scene, kernel);
 
   GpuSession gpu(o.device);
-  o.settings.backend = chooseBackend(gpu.device, parseBackendChoice(o.backend));
-  o.settings.schedule = o.schedule == "megakernel" ? Schedule::kMegakernel
-                        : o.schedule == "wavefront" ? Schedule::kWavefront
-                                                    : Schedule::kAutomatic;
+  o.settings.backend = chooseBackend(gpu.device, parseBackendChoice(o.backend, "raylab render: --backend"));
+  o.settings.schedule = parseSchedule(o.schedule, "raylab render: --schedule");
   checkImageSize(gpu.device, o.settings.width, o.settings.height);
   GpuScene gpuScene = uploadScene(gpu.device, scene);
   Renderer renderer;
@@ -297,19 +297,13 @@ void addRenderCommand(CLI::App& raylab) {
           "also write the printed figures (times, rays, kernel, device) here as JSON, for scripts");
   addToneOptions(command, o->exposure, o->toneMap, "the PNG");
   addIntegratorOption(command, o->integrator);
-  addChoice(command, "--sampling", o->sampling, {"mis", "bsdf", "light"},
-            "path integrator: how emitters are estimated, MIS of light and BSDF sampling, or one alone");
+  addChoiceOption(command, kSamplingOption, o->sampling);
   addFlag(command, "--stats", o->stats,
           "print the kernel variant (models, features), the backend and schedule, and the lane utilisation");
   addFlag(command, "--all-features", o->allFeatures, "compile every model and feature in, not only what the scene uses");
-  addChoice(command, "--fresnel", o->fresnel, {"exact", "schlick"},
-            "Fresnel term of glass: exact, or Schlick's approximation (faster, less accurate)");
+  addChoiceOption(command, kFresnelOption, o->fresnel);
   addBackendOption(command, o->backend);
-  addChoice(command, "--schedule", o->schedule, {"auto", "megakernel", "wavefront"},
-            "how paths are traced: megakernel (a lane per pixel until its path ends) or wavefront (one segment of "
-            "every live path per dispatch; the path integrator on ray queries only); auto: the wavefront for path "
-            "kernels in closed scenes (no environment image, black background), where it measured faster; the "
-            "image is the same");
+  addChoiceOption(command, kScheduleOption, o->schedule);
   addDeviceOption(command, o->device);
 }
 

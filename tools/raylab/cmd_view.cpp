@@ -13,6 +13,7 @@
 #include "util/error.h"
 #include "view_logic/script.h"
 #include "view/viewer.h"
+#include "render/render_choices.h"
 
 namespace raylab {
 
@@ -29,8 +30,8 @@ struct ViewCommandOptions {
   std::string scriptPath;
   std::string compare;
   std::string toneMap = "clamp";
-  std::string integrator = "auto";
-  std::string backend = "auto";
+  std::string integrator{kIntegratorOption.defaultValue};
+  std::string backend{kBackendOption.defaultValue};
   float targetMs = 50.0f;
   bool noAntialiasing = false;
   bool noPanel = false;
@@ -40,7 +41,7 @@ struct ViewCommandOptions {
 void view(ViewCommandOptions command) {
   ViewerOptions& o = command.viewer;
   const std::optional<std::uint32_t>& frames = command.frames;
-  o.backend = parseBackendChoice(command.backend);
+  o.backend = parseBackendChoice(command.backend, "raylab view: --backend");
 
   if (!o.screenshot.empty() && !hasExtension(o.screenshot, ".exr") && !hasExtension(o.screenshot, ".png")) {
     throw Error("raylab view: --screenshot: '" + o.screenshot + "' must end in .exr or .png", kExitUsage);
@@ -58,7 +59,7 @@ void view(ViewCommandOptions command) {
   o.targetMs = command.targetMs;
   o.toneMap = parseToneMap(command.toneMap);
   o.render.jitter = !command.noAntialiasing;
-  o.integrator = parseIntegratorChoice(command.integrator);
+  o.integrator = parseIntegratorChoice(command.integrator, "raylab view: --integrator");
   o.panel = !command.noPanel;
   if (!command.scriptPath.empty()) o.script = loadScript(command.scriptPath);
   // With --frames N the viewer exits after frame N - 1: a later event would never happen.

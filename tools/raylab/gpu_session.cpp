@@ -1,4 +1,5 @@
 #include "gpu_session.h"
+#include "render/render_choices.h"
 
 #include <cstdio>
 
@@ -31,7 +32,7 @@ std::uint64_t deviceBufferLimit(std::optional<std::uint32_t> deviceIndex) {
 }
 
 std::vector<Backend> backendsToCompare(const Device& device, const std::string& choice) {
-  if (choice != "all") return {chooseBackend(device, parseBackendChoice(choice))};
+  if (choice != "all") return {chooseBackend(device, parseBackendChoice(choice, "--backend"))};
   std::vector<Backend> backends;
   if (device.rayQueries) backends.push_back(Backend::kQuery);
   if (device.rayTracingPipelines) backends.push_back(Backend::kPipeline);

@@ -16,6 +16,7 @@
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/timer.h"
+#include "render/render_choices.h"
 
 namespace raylab {
 
@@ -230,7 +231,7 @@ SweepCellRenderer::SweepCellRenderer(const SweepStudy& study, bool quiet) : gpu(
     RenderSettings settings = study.options.render;
     settings.width = study.options.cell;
     settings.height = study.options.cell;
-    settings.backend = chooseBackend(gpu.device, parseBackendChoice(study.options.backend));
+    settings.backend = chooseBackend(gpu.device, parseBackendChoice(study.options.backend, "raylab sweep: --backend"));
     renderer = createRenderer(gpu.device, gpuScene, scene, settings);
   } catch (...) {
     destroyGpuScene(gpu.device, gpuScene);

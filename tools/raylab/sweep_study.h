@@ -41,7 +41,7 @@ struct SweepOptions {
   float exposure = 0.0f;
   std::string toneMap = "clamp";
   std::optional<std::uint32_t> device;
-  std::string backend = "auto";
+  std::string backend{kBackendOption.defaultValue};
 };
 
 

@@ -85,9 +85,12 @@ def _turntable_parser():
     parser.add_argument("--height", type=int, default=360)
     parser.add_argument("--spp", type=int, default=16, help="samples per pixel (default 16)")
     parser.add_argument("--seed", type=int, default=0)
-    parser.add_argument("--max-depth", type=int, default=8)
-    parser.add_argument("--integrator", default="auto", choices=["auto", "slides", "path"])
-    parser.add_argument("--backend", default="auto", choices=["auto", "query", "pipeline"])
+    options = _raylab.render_options  # the engine's declarations (util/render_options.h)
+    parser.add_argument("--max-depth", type=int, default=options["max_depth"]["default"],
+                        help=options["max_depth"]["help"])
+    for name in ("integrator", "backend"):
+        parser.add_argument(f"--{name}", default=options[name]["default"], choices=options[name]["values"],
+                            help=options[name]["help"])
     parser.add_argument("--env", default="", metavar="FILE.exr", help="an equirectangular HDR environment")
     _where(parser)
     return parser

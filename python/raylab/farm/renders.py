@@ -12,6 +12,9 @@ from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 
 from .. import _raylab
+
+# The engine's render options (util/render_options.h): names, values, defaults and ranges, stated there once.
+_OPTIONS = _raylab.render_options
 from .jobs import FarmReport, Job, Stopwatch, farm
 
 _device_lock = threading.Lock()  # one job at a time on the worker process's device
@@ -28,9 +31,9 @@ class RenderJob:
     height: int = 360
     spp: int = 16
     seed: int = 0
-    integrator: str = "auto"
-    backend: str = "auto"
-    max_depth: int = 8
+    integrator: str = _OPTIONS["integrator"]["default"]
+    backend: str = _OPTIONS["backend"]["default"]
+    max_depth: int = _OPTIONS["max_depth"]["default"]
     env: str = ""
     camera: dict = field(default_factory=dict)
     materials: dict = field(default_factory=dict)
@@ -43,7 +46,7 @@ class RenderJob:
         limits = _raylab.limits
         for name, low, high in (("width", 1, limits["max_image_side"]), ("height", 1, limits["max_image_side"]),
                                 ("spp", 1, limits["max_spp"]), ("seed", 0, (1 << 32) - 1),
-                                ("max_depth", 0, limits["max_depth"])):
+                                ("max_depth", _OPTIONS["max_depth"]["min"], _OPTIONS["max_depth"]["max"])):
             value = getattr(self, name)
             try:
                 value = operator.index(value)  # int and NumPy integers; not float or bool-like strings
@@ -53,7 +56,8 @@ class RenderJob:
                 raise ValueError(f"raylab.farm: {name} must be an integer in [{low}, {high}], "
                                  f"not {getattr(self, name)!r}")
             object.__setattr__(self, name, value)  # a plain int, so that descriptions compare equal
-        for name, choices in (("integrator", ("auto", "slides", "path")), ("backend", ("auto", "query", "pipeline"))):
+        for name in ("integrator", "backend"):
+            choices = _OPTIONS[name]["values"]
             if getattr(self, name) not in choices:
                 raise ValueError(f"raylab.farm: {name} is {', '.join(choices)}, not {getattr(self, name)!r}")
 
