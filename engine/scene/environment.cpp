@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "image/image.h"
-#include "scene/gltf_files.h"
+#include "util/files.h"
 #include "scene/radiance_limits.h"
 #include "shared/scene_records.h"
 #include "util/error.h"
@@ -27,7 +27,7 @@ Environment loadEnvironment(const std::string& path, float strength, const std::
                             const std::string& strengthWhere, std::uint64_t maxBufferBytes) {
   std::string bytes;
   try {
-    bytes = gltf::readSceneFile(path, kMaxEnvironmentFileBytes);
+    bytes = readInputFile(path, kMaxEnvironmentFileBytes);
   } catch (const Error& e) {
     throw Error(where + ": environment image " + e.what());
   }

@@ -16,7 +16,7 @@
 #include "scene/camera_frame.h"
 #include "scene/camera_pivot.h"
 #include "scene/environment.h"
-#include "scene/load_scene.h"
+#include "builtin_scenes/load_scene.h"
 #include "scene/radiance_limits.h"
 #include "shared/scene_records.h"
 #include "util/error.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "bindings.h"
-#include "sweep_study.h"
+#include "sweep_study/sweep_study.h"
 #include "util/error.h"
 
 namespace py = pybind11;

@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "brdf_eval/device_evaluator.h"
-#include "gpu_session.h"
+#include "session/gpu_session.h"
 
 namespace raylab::python {
 

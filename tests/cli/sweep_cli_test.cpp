@@ -13,8 +13,8 @@
 #include "brdf_params/material_params.h"
 #include "image/contact_sheet.h"
 #include "image/image.h"
-#include "scene/gltf_loader.h"
-#include "scene/sweep_scene.h"
+#include "gltf_read/gltf_loader.h"
+#include "sweep/sweep_scene.h"
 #include "support/run_command.h"
 
 namespace raylab::test {

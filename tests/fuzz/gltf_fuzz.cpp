@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "scene/gltf_loader.h"
+#include "gltf_read/gltf_loader.h"
 #include "util/error.h"
 #include "util/log.h"
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-#include "scene/default_scene.h"
+#include "builtin_scenes/default_scene.h"
 #include "util/error.h"
 #include "util/log.h"
 #include "view_logic/script.h"

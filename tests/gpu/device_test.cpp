@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "scene/default_scene.h"
+#include "builtin_scenes/default_scene.h"
 #include "scene/shapes.h"
 #include "support/gpu_test.h"
 

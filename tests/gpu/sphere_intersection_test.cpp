@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/default_scene.h"
+#include "builtin_scenes/default_scene.h"
 #include "scene/shapes.h"
 #include "support/gpu_test.h"
 

@@ -9,7 +9,7 @@
 
 #include "render/renderer.h"
 #include "render/gpu_scene.h"
-#include "scene/default_scene.h"
+#include "builtin_scenes/default_scene.h"
 #include "scene/shapes.h"
 #include "support/analytic.h"
 #include "support/gpu_test.h"

@@ -10,7 +10,7 @@
 
 #include "render/renderer.h"
 #include "render/gpu_scene.h"
-#include "scene/load_scene.h"
+#include "builtin_scenes/load_scene.h"
 #include "shared/features.h"
 #include "support/gpu_test.h"
 #include "util/error.h"

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "gltf_test_support.h"
-#include "scene/gltf_files.h"
+#include "gltf_read/gltf_files.h"
 
 namespace raylab::test {
 namespace {

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "gltf_test_support.h"
-#include "scene/gltf_materials.h"
+#include "gltf_read/gltf_materials.h"
 #include "brdf_params/material_params.h"
 
 namespace raylab::test {

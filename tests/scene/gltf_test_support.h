@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include "scene/gltf_loader.h"
+#include "gltf_read/gltf_loader.h"
 #include "util/error.h"
 #include "util/log.h"
 

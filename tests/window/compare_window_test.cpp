@@ -16,7 +16,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "scene/load_scene.h"
+#include "builtin_scenes/load_scene.h"
 #include "window/window_support.h"
 
 namespace raylab::test {

@@ -14,7 +14,7 @@
 
 #include "image/image.h"
 #include "render/renderer.h"
-#include "scene/load_scene.h"
+#include "builtin_scenes/load_scene.h"
 #include "support/run_command.h"
 #include "window/window_support.h"
 

@@ -12,12 +12,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli.h"
+#include "command_line/cli.h"
 #include "bench/bench_scenes.h"
 #include "bench/embree_tracer.h"
 #include "bench/ray_sets.h"
 #include "bench_commands.h"
-#include "gpu_session.h"
+#include "session/gpu_session.h"
 #include "render/ray_probe.h"
 #include "render/renderer.h"
 #include "render/gpu_scene.h"

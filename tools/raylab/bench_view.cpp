@@ -13,9 +13,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli.h"
+#include "command_line/cli.h"
 #include "bench_commands.h"
-#include "scene/load_scene.h"
+#include "builtin_scenes/load_scene.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "view/viewer.h"

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "bench_commands.h"
-#include "cli.h"
+#include "command_line/cli.h"
 #include "util/error.h"
 
 namespace raylab {

@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
+#include "command_line/cli.h"
 #include "brdf_eval/brdf_cases.h"
 #include "brdf_eval/device_evaluator.h"
 #include "brdf_commands.h"
-#include "gpu_session.h"
+#include "session/gpu_session.h"
 #include "brdf_eval/albedo_estimate.h"
 #include "brdf_params/material_params.h"
 #include "util/atomic_file.h"

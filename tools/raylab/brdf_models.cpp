@@ -8,7 +8,7 @@
 
 #include "brdf_commands.h"
 #include "brdf_params/material_params.h"
-#include "cli.h"
+#include "command_line/cli.h"
 #include "shared/brdf_lobes.h"
 #include "util/error.h"
 

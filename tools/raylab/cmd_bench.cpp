@@ -10,14 +10,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli.h"
+#include "command_line/cli.h"
 #include "bench_commands.h"
 #include "brdf_params/material_params.h"
 #include "commands.h"
-#include "gpu_session.h"
+#include "session/gpu_session.h"
 #include "render/kernel_features.h"
 #include "render/renderer.h"
-#include "scene/default_scene.h"
+#include "builtin_scenes/default_scene.h"
 #include "render/gpu_scene.h"
 #include "util/error.h"
 #include "util/progress.h"

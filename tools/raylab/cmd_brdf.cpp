@@ -6,13 +6,13 @@
 #include <optional>
 #include <string>
 
-#include "cli.h"
+#include "command_line/cli.h"
 #include "brdf_eval/brdf_cases.h"
 #include "brdf_eval/cpu_evaluator.h"
 #include "brdf_eval/device_evaluator.h"
 #include "brdf_commands.h"
 #include "commands.h"
-#include "gpu_session.h"
+#include "session/gpu_session.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/files.h"

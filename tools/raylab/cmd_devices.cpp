@@ -2,7 +2,7 @@
 // can run on it (with either of its two backends).
 #include <cstdio>
 
-#include "cli.h"
+#include "command_line/cli.h"
 #include "commands.h"
 #include "util/error.h"
 #include "vk/device.h"

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "brdf_params/material_params.h"
-#include "cli.h"
+#include "command_line/cli.h"
 #include "commands.h"
-#include "scene/load_scene.h"
+#include "builtin_scenes/load_scene.h"
 #include "shared/scene_records.h"
 #include "util/error.h"
 

@@ -11,12 +11,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli.h"
+#include "command_line/cli.h"
 #include "commands.h"
-#include "gpu_session.h"
+#include "session/gpu_session.h"
 #include "image/image.h"
 #include "render/renderer.h"
-#include "scene/load_scene.h"
+#include "builtin_scenes/load_scene.h"
 #include "render/gpu_scene.h"
 #include "util/error.h"
 #include "shared/features.h"

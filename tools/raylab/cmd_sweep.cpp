@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
+#include "command_line/cli.h"
 #include "commands.h"
-#include "sweep_study.h"
+#include "sweep_study/sweep_study.h"
 #include "util/error.h"
 #include "util/progress.h"
 #include "util/timer.h"

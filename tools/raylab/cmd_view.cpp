@@ -5,10 +5,10 @@
 #include <optional>
 #include <string>
 
-#include "cli.h"
+#include "command_line/cli.h"
 #include "commands.h"
-#include "gpu_session.h"
-#include "scene/load_scene.h"
+#include "session/gpu_session.h"
+#include "builtin_scenes/load_scene.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "view_logic/script.h"

@@ -1,7 +1,7 @@
 // raylab: one executable, one command per job (cli.h: the command line on CLI11).
 #include <cstdio>
 
-#include "cli.h"
+#include "command_line/cli.h"
 #include "commands.h"
 #include "util/error.h"
 #include "vk/device.h"

@@ -1,11 +1,11 @@
-#include "scene/gltf_document.h"
+#include "gltf_read/gltf_document.h"
 
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 
-#include "scene/gltf_files.h"
+#include "gltf_read/gltf_files.h"
 #include "util/error.h"
 #include "util/log.h"
 

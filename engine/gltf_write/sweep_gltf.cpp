@@ -1,4 +1,4 @@
-#include "scene/sweep_gltf.h"
+#include "gltf_write/sweep_gltf.h"
 
 #include <tiny_gltf.h>
 

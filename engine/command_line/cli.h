@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "render/renderer.h"
-#include "scene/load_scene.h"
+#include "builtin_scenes/load_scene.h"
 
 namespace CLI {
 class App;

@@ -1,4 +1,4 @@
-#include "scene/gltf_lights.h"
+#include "gltf_read/gltf_lights.h"
 
 #include <algorithm>
 #include <cmath>

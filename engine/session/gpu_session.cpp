@@ -1,4 +1,4 @@
-#include "gpu_session.h"
+#include "session/gpu_session.h"
 #include "render/render_choices.h"
 
 #include <cstdio>

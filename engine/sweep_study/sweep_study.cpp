@@ -1,4 +1,4 @@
-#include "sweep_study.h"
+#include "sweep_study/sweep_study.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "brdf_params/material_params.h"
-#include "cli.h"
+#include "command_line/cli.h"
 #include "image/contact_sheet.h"
-#include "scene/sweep_gltf.h"
+#include "gltf_write/sweep_gltf.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/timer.h"

@@ -1,10 +1,10 @@
-#include "scene/load_scene.h"
+#include "builtin_scenes/load_scene.h"
 
 #include <filesystem>
 #include <new>
 
-#include "scene/default_scene.h"
-#include "scene/gltf_loader.h"
+#include "builtin_scenes/default_scene.h"
+#include "gltf_read/gltf_loader.h"
 #include "util/error.h"
 
 namespace raylab {

@@ -1,6 +1,6 @@
 // The glTF entry points and the walk over the default scene's node hierarchy: transforms, mesh instances,
 // raylab spheres, cameras and lights, and the defaults for files without a camera or lights.
-#include "scene/gltf_loader.h"
+#include "gltf_read/gltf_loader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,12 +13,12 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scene/camera_pivot.h"
-#include "scene/gltf_document.h"
-#include "scene/gltf_environment.h"
-#include "scene/gltf_files.h"
-#include "scene/gltf_geometry.h"
-#include "scene/gltf_lights.h"
-#include "scene/gltf_materials.h"
+#include "gltf_read/gltf_document.h"
+#include "gltf_read/gltf_environment.h"
+#include "gltf_read/gltf_files.h"
+#include "gltf_read/gltf_geometry.h"
+#include "gltf_read/gltf_lights.h"
+#include "gltf_read/gltf_materials.h"
 #include "util/error.h"
 #include "util/files.h"
 

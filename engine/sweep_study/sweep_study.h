@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "gpu_session.h"
+#include "session/gpu_session.h"
 #include "image/image.h"
 #include "render/gpu_scene.h"
 #include "render/renderer.h"
-#include "scene/sweep_scene.h"
+#include "sweep/sweep_scene.h"
 
 namespace CLI {
 class App;

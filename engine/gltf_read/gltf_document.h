@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
-#include "scene/gltf_files.h"
+#include "gltf_read/gltf_files.h"
 
 namespace raylab::gltf {
 

@@ -1,8 +1,8 @@
-#include "scene/default_scene.h"
+#include "builtin_scenes/default_scene.h"
 
 #include <string_view>
 
-#include "scene/gltf_loader.h"
+#include "gltf_read/gltf_loader.h"
 
 namespace raylab {
 

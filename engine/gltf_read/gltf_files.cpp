@@ -1,4 +1,4 @@
-#include "scene/gltf_files.h"
+#include "gltf_read/gltf_files.h"
 
 #include <algorithm>
 #include <cctype>

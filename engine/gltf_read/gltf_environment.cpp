@@ -1,4 +1,4 @@
-#include "scene/gltf_environment.h"
+#include "gltf_read/gltf_environment.h"
 
 #include <cmath>
 

@@ -9,7 +9,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include "scene/gltf_document.h"
+#include "gltf_read/gltf_document.h"
 #include "scene/scene.h"
 
 namespace raylab::gltf {

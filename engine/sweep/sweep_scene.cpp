@@ -1,4 +1,4 @@
-#include "scene/sweep_scene.h"
+#include "sweep/sweep_scene.h"
 
 #include <cmath>
 #include <cstdio>

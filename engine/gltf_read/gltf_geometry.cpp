@@ -1,4 +1,4 @@
-#include "scene/gltf_geometry.h"
+#include "gltf_read/gltf_geometry.h"
 
 #include <cmath>
 #include <cstdint>

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "scene/sweep_scene.h"
+#include "sweep/sweep_scene.h"
 
 namespace raylab {
 

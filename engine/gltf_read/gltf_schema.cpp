@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/gltf_document.h"
+#include "gltf_read/gltf_document.h"
 #include "util/error.h"
 
 namespace raylab::gltf {

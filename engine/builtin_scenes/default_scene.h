@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "scene/gltf_loader.h"
+#include "gltf_read/gltf_loader.h"
 #include "scene/scene.h"
 
 namespace raylab {

@@ -1,4 +1,4 @@
-#include "scene/gltf_materials.h"
+#include "gltf_read/gltf_materials.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 
 #include "brdf_params/material_params.h"
 #include "image/image.h"
-#include "scene/gltf_files.h"
+#include "gltf_read/gltf_files.h"
 #include "scene/radiance_limits.h"
 #include "util/error.h"
 

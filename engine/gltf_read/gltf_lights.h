@@ -3,7 +3,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/gltf_document.h"
+#include "gltf_read/gltf_document.h"
 #include "scene/scene.h"
 
 namespace raylab::gltf {

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "scene/environment.h"
-#include "scene/gltf_document.h"
-#include "scene/gltf_loader.h"
+#include "gltf_read/gltf_document.h"
+#include "gltf_read/gltf_loader.h"
 
 namespace raylab::gltf {
 

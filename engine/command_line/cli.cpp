@@ -1,4 +1,4 @@
-#include "cli.h"
+#include "command_line/cli.h"
 
 #include <CLI/CLI.hpp>
 
