@@ -184,6 +184,10 @@ void checkDeviceLimits(const Device& device, const Scene& scene) {
 
 }  // namespace
 
+namespace {
+void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene);
+}  // namespace
+
 GpuScene uploadScene(const Device& device, const Scene& scene) {
   checkDeviceLimits(device, scene);
   for (const MeshInstance& instance : scene.instances) {
@@ -201,7 +205,20 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
     }
   }
 
+  // The GpuScene owns what is created into it: a failure at any step releases everything made before it.
   GpuScene gpuScene;
+  try {
+    fillGpuScene(device, scene, gpuScene);
+  } catch (...) {
+    destroyGpuScene(device, gpuScene);
+    throw;
+  }
+  return gpuScene;
+}
+
+namespace {
+
+void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) {
   const Stopwatch clock;
   const PackedMeshes packed = packMeshes(scene);
   gpuScene.positions = createBufferWithData<glm::vec3>(device, packed.positions, kStorage | kAsInputUsage,
@@ -325,8 +342,9 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
   gpuScene.emitterCount = static_cast<std::uint32_t>(emitters.size());
   const std::vector<float> environment = packEnvironment(scene.environment, buildEnvironmentTables(scene.environment));
   gpuScene.environment = createBufferWithData<float>(device, environment, kStorage, "environment");
-  return gpuScene;
 }
+
+}  // namespace
 
 void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
   destroyAccelerationStructure(device, gpuScene.tlas);

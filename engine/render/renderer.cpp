@@ -105,10 +105,29 @@ void checkImageSize(const Device& device, std::uint32_t width, std::uint32_t hei
   }
 }
 
+namespace {
+void fillRenderer(const Device& device, const GpuScene& gpuScene, const Scene& scene, const RenderSettings& settings,
+                  Renderer& renderer);
+}  // namespace
+
 Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Scene& scene,
                         const RenderSettings& settings) {
   checkImageSize(device, settings.width, settings.height);
+  // The Renderer owns what is created into it: a failure at any step releases everything made before it.
   Renderer renderer;
+  try {
+    fillRenderer(device, gpuScene, scene, settings, renderer);
+  } catch (...) {
+    destroyRenderer(device, renderer);
+    throw;
+  }
+  return renderer;
+}
+
+namespace {
+
+void fillRenderer(const Device& device, const GpuScene& gpuScene, const Scene& scene, const RenderSettings& settings,
+                  Renderer& renderer) {
   gpu::FrameParams& params = renderer.params;
   params.width = settings.width;
   params.height = settings.height;
@@ -144,8 +163,9 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
   swapRenderPipelines(device, renderer, createRenderPipelines(device, renderer, renderer.kernel), renderer.kernel);
   renderer.clocksPixels = settings.heatmap;  // resizeRenderer sizes the heat map with the accumulation
   resizeRenderer(device, renderer, settings.width, settings.height);
-  return renderer;
 }
+
+}  // namespace
 
 RenderPipelines createRenderPipelines(const Device& device, const Renderer& renderer, const KernelFeatures& kernel) {
   SpecializationConstants constants = specializationFor(kernel);

@@ -26,7 +26,12 @@ AccelerationStructure createAccelerationStructure(const Device& device, VkAccele
   info.buffer = as.storage.handle;
   info.size = size;
   info.type = type;
-  VK_CHECK(device.ext.createAccelerationStructure(device.handle, &info, nullptr, &as.handle));
+  try {
+    VK_CHECK(device.ext.createAccelerationStructure(device.handle, &info, nullptr, &as.handle));
+  } catch (...) {
+    destroyBuffer(device, as.storage);
+    throw;
+  }
   VkAccelerationStructureDeviceAddressInfoKHR addressInfo{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
   addressInfo.accelerationStructure = as.handle;
@@ -68,7 +73,9 @@ std::vector<AccelerationStructure> buildBlases(const Device& device, std::span<c
   std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges(count);
   std::vector<VkDeviceSize> scratchOffsets(count);
   std::vector<AccelerationStructure> blases(count);
-
+  Buffer scratch;
+  // What was created is released when a later step throws.
+  try {
   VkDeviceSize scratchSize = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const BlasInput& input = inputs[i];
@@ -98,7 +105,7 @@ std::vector<AccelerationStructure> buildBlases(const Device& device, std::span<c
   if (count == 0) return blases;
 
   // The scratch address itself must be aligned too; over-allocate so that any base can be rounded up.
-  Buffer scratch = createBuffer(device, scratchSize + device.scratchAlignment,
+  scratch = createBuffer(device, scratchSize + device.scratchAlignment,
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
                                 MemoryUse::kDevice, "BLAS scratch");
   const VkDeviceAddress scratchBase = alignUp(scratch.address, device.scratchAlignment);
@@ -111,6 +118,11 @@ std::vector<AccelerationStructure> buildBlases(const Device& device, std::span<c
     device.ext.cmdBuildAccelerationStructures(cmd, static_cast<std::uint32_t>(count), builds.data(),
                                               rangePointers.data());
   });
+  } catch (...) {
+    destroyBuffer(device, scratch);
+    for (AccelerationStructure& blas : blases) destroyAccelerationStructure(device, blas);
+    throw;
+  }
   destroyBuffer(device, scratch);
   return blases;
 }
@@ -135,8 +147,13 @@ AccelerationStructure buildTlas(const Device& device, std::span<const Accelerati
     record.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
     record.accelerationStructureReference = blases[instance.blas].address;
   }
-  Buffer instanceBuffer = createBufferWithData<VkAccelerationStructureInstanceKHR>(
-      device, records, kAsInputUsage, "TLAS instances");
+  Buffer instanceBuffer;
+  AccelerationStructure tlas;
+  Buffer scratch;
+  // What was created is released when a later step throws.
+  try {
+  instanceBuffer = createBufferWithData<VkAccelerationStructureInstanceKHR>(device, records, kAsInputUsage,
+                                                                            "TLAS instances");
 
   VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
   geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
@@ -154,9 +171,9 @@ AccelerationStructure buildTlas(const Device& device, std::span<const Accelerati
   VkAccelerationStructureBuildSizesInfoKHR sizes{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
   device.ext.getAccelerationStructureBuildSizes(device.handle, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
                                                 &build, &primitiveCount, &sizes);
-  AccelerationStructure tlas = createAccelerationStructure(device, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                                                           sizes.accelerationStructureSize, "TLAS");
-  Buffer scratch = createBuffer(device, sizes.buildScratchSize + device.scratchAlignment,
+  tlas = createAccelerationStructure(device, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                                     sizes.accelerationStructureSize, "TLAS");
+  scratch = createBuffer(device, sizes.buildScratchSize + device.scratchAlignment,
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
                                 MemoryUse::kDevice, "TLAS scratch");
   build.dstAccelerationStructure = tlas.handle;
@@ -167,6 +184,12 @@ AccelerationStructure buildTlas(const Device& device, std::span<const Accelerati
   submitAndWait(device, [&](VkCommandBuffer cmd) {
     device.ext.cmdBuildAccelerationStructures(cmd, 1, &build, &rangePointer);
   });
+  } catch (...) {
+    destroyBuffer(device, scratch);
+    destroyAccelerationStructure(device, tlas);
+    destroyBuffer(device, instanceBuffer);
+    throw;
+  }
   destroyBuffer(device, scratch);
   destroyBuffer(device, instanceBuffer);
   return tlas;

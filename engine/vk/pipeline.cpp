@@ -83,7 +83,9 @@ VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, 
   info.stage.pSpecializationInfo = constants != nullptr ? constants->info() : nullptr;
   info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  const VkResult result = vkCreateComputePipelines(device.handle, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+  const VkResult result = injectedCreationFailure("vkCreateComputePipelines")
+                              ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+                              : vkCreateComputePipelines(device.handle, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
   vkDestroyShaderModule(device.handle, module, nullptr);
   VK_CHECK(result);
   setDebugName(device, pipeline, name.c_str());
@@ -106,7 +108,12 @@ DescriptorSet allocateDescriptorSet(const Device& device, VkDescriptorSetLayout 
   allocateInfo.descriptorPool = result.pool;
   allocateInfo.descriptorSetCount = 1;
   allocateInfo.pSetLayouts = &layout;
-  VK_CHECK(vkAllocateDescriptorSets(device.handle, &allocateInfo, &result.set));
+  try {
+    VK_CHECK(vkAllocateDescriptorSets(device.handle, &allocateInfo, &result.set));
+  } catch (...) {
+    destroyDescriptorSet(device, result);
+    throw;
+  }
   setDebugName(device, result.set, name);
   return result;
 }

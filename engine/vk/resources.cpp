@@ -51,7 +51,9 @@ Buffer createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags 
   allocateInfo.allocationSize = requirements.size;
   allocateInfo.memoryTypeIndex = typeIndex;
   // Running out of memory is the input's size, not a bug: say what was being allocated and how much.
-  const VkResult allocated = vkAllocateMemory(device.handle, &allocateInfo, nullptr, &buffer.memory);
+  const VkResult allocated = injectedCreationFailure("vkAllocateMemory")
+                                 ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+                                 : vkAllocateMemory(device.handle, &allocateInfo, nullptr, &buffer.memory);
   if (allocated == VK_ERROR_OUT_OF_DEVICE_MEMORY || allocated == VK_ERROR_OUT_OF_HOST_MEMORY) {
     vkDestroyBuffer(device.handle, buffer.handle, nullptr);
     char size[32];

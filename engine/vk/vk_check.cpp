@@ -1,5 +1,7 @@
 #include "vk/vk_check.h"
 
+#include <atomic>
+#include <cstring>
 #include <string>
 
 #include "util/error.h"
@@ -53,6 +55,24 @@ const char* vkResultName(VkResult result) {
 void failVulkanCall(const char* call, VkResult result, const char* file, int line) {
   throw Error(std::string(file) + ":" + std::to_string(line) + ": " + call + " failed with " + vkResultName(result) +
               " (" + std::to_string(static_cast<int>(result)) + ")");
+}
+
+namespace {
+
+std::atomic<unsigned> failAt{0};  // 0: off
+std::atomic<unsigned> creations{0};
+
+}  // namespace
+
+void failAtCreation(unsigned n) {
+  creations = 0;
+  failAt = n;
+}
+
+bool injectedCreationFailure(const char* call) {
+  if (failAt.load(std::memory_order_relaxed) == 0) return false;
+  if (std::strstr(call, "vkCreate") == nullptr && std::strstr(call, "vkAllocate") == nullptr) return false;
+  return ++creations == failAt.load();
 }
 
 }  // namespace raylab
