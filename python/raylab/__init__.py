@@ -13,7 +13,9 @@ ValueError (bad input), FileNotFoundError or RuntimeError (no device, a failed d
 messages. raylab.farm spreads studies over a Dask cluster (docs/farm.md).
 """
 from ._raylab import (Cancelled, Renderer, Scene, __version__, brdf, devices, limits, read_exr,  # noqa: F401
-                      read_png, write_exr, write_png)
+                      read_png, render_options, write_exr, write_png)
+from ._raylab import _fail_at_creation  # noqa: F401  (a test hook: tests/python/test_renderer_churn.py)
 
 __all__ = ["Cancelled", "Renderer", "Scene", "__version__", "brdf", "devices", "limits", "read_exr", "read_png",
+           "render_options",
            "write_exr", "write_png"]

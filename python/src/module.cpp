@@ -10,6 +10,7 @@
 #include "errors.h"
 #include "image/image.h"
 #include "render/renderer.h"
+#include "vk/vk_check.h"
 
 namespace py = pybind11;
 
@@ -56,6 +57,9 @@ PYBIND11_MODULE(_raylab, m) {
   depth["help"] = std::string(raylab::kMaxDepthOption.help);
   options[py::str(key(raylab::kMaxDepthOption.name))] = depth;
   m.attr("render_options") = options;
+  // A test hook (vk/vk_check.h): the Nth Vulkan object created from now on fails to be created; 0 turns it off.
+  // tests/python/test_renderer_churn.py checks that such failures release everything, with flat memory.
+  m.def("_fail_at_creation", [](unsigned n) { raylab::failAtCreation(n); }, py::arg("n"));
   raylab::python::bindScene(m);
   raylab::python::bindRenderer(m);
   raylab::python::bindBrdf(m);
