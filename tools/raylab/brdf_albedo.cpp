@@ -165,8 +165,7 @@ void addBrdfAlbedoCommand(CLI::App& brdf) {
       "channel). delta, the mirror weight of the integrator, is not part of f and does not change the albedo. "
       "Glass is a delta BSDF: its reflectance is F_exact of `raylab brdf eval`.",
       [o] { return albedo(*o); });
-  addText(command, "--model", o->model, "MODEL",
-          "lambert, phong, blinnphong, cooktorrance, ward, ward_duer, ward_gmd, ashikhmin_shirley");
+  addText(command, "--model", o->model, "MODEL", "a model of `raylab brdf models`: " + modelNames());
   addText(command, "--params", o->params, "'k=v,k=v'",
           "parameters as in `raylab brdf eval` (RGB as r/g/b); others take defaults");
   addText(command, "--angles", o->angles, "LIST", "theta_o in degrees, in [0, 90), comma-separated", true);
