@@ -42,17 +42,33 @@ struct SpecularSample {
   uint flags;    // kLobeSpecular and kLobeReflection or kLobeTransmission
 };
 
-// One of the delta lobes of a specular-only BSDF, in any frame with n its outward shading normal, chosen by u:
-// reflection with probability delta + (1 - delta) F (1 under total internal reflection), else refraction,
-// with the model's transmittance on the way in. The probabilities equal the weights, so the weight is 1 (or the
-// transmittance).
-SpecularSample bsdfSampleSpecular(MaterialRecord m, vec3 wo, vec3 n, float u) {
+// The delta lobes of a specular-only BSDF (glass) for the direction wo, in any frame with n its outward shading
+// normal: both directions, the Fresnel term of the kernel variant (exact, or Schlick's: the other one's
+// arithmetic is dead code and compiles away), total internal reflection and the transmittance on the way in.
+// The slides' integrator follows both lobes (closest_hit.glsl), the path integrator one (bsdfSampleSpecular).
+struct DeltaLobes {
+  vec3 reflected;
+  vec3 refracted;      // zero under total internal reflection
+  float fresnel;
+  bool tir;
+  vec3 transmittance;
+};
+
+DeltaLobes bsdfDeltaLobes(MaterialRecord m, vec3 wo, vec3 n) {
   const DeltaEvent event = modelDeltaEvent(m, wo, n);
   const float fresnel = kGlassFresnel == kFresnelSchlick ? event.fresnelSchlick : event.fresnelExact;
-  const float reflectProbability = event.tir ? 1.0 : m.delta + (1.0 - m.delta) * fresnel;
-  if (u < reflectProbability) return SpecularSample(event.reflected, vec3(1.0), kLobeSpecular | kLobeReflection);
+  return DeltaLobes(event.reflected, event.refracted, fresnel, event.tir, event.transmittance);
+}
+
+// One of the delta lobes, chosen by u: reflection with probability delta + (1 - delta) F (1 under total internal
+// reflection), else refraction, with the transmittance on the way in. The probabilities equal the weights, so
+// the weight is 1 (or the transmittance).
+SpecularSample bsdfSampleSpecular(MaterialRecord m, vec3 wo, vec3 n, float u) {
+  const DeltaLobes lobes = bsdfDeltaLobes(m, wo, n);
+  const float reflectProbability = lobes.tir ? 1.0 : m.delta + (1.0 - m.delta) * lobes.fresnel;
+  if (u < reflectProbability) return SpecularSample(lobes.reflected, vec3(1.0), kLobeSpecular | kLobeReflection);
   const bool entering = dot(wo, n) >= 0.0;
-  return SpecularSample(event.refracted, entering ? event.transmittance : vec3(1.0), kLobeSpecular | kLobeTransmission);
+  return SpecularSample(lobes.refracted, entering ? lobes.transmittance : vec3(1.0), kLobeSpecular | kLobeTransmission);
 }
 
 #endif

@@ -15,7 +15,7 @@
 #ifndef RAYLAB_KERNEL_PATH_HIT_GLSL
 #define RAYLAB_KERNEL_PATH_HIT_GLSL
 
-#include "kernel/closest_hit.glsl"
+#include "kernel/hit_common.glsl"
 #include "kernel/emitters.glsl"
 #include "kernel/environment.glsl"
 #include "kernel/mis.glsl"
