@@ -40,40 +40,15 @@ uvec2 pixelOfSlot(uint slot) {
   return params.tileOrigin + uvec2(pixelInTile % wave.tileWidth, pixelInTile / wave.tileWidth);
 }
 
-Payload loadPath(uint slot, out uint segments) {
-  const PathState s = states[slot];
+Payload loadPath(uint slot) {
   Payload p;
-  p.radiance = s.radiance;
-  p.throughput = s.throughput;
-  p.origin = s.origin;
-  p.direction = s.direction;
-  p.depth = s.depth;
+  p.path = states[slot];
   p.done = false;
   p.split = false;
-  p.rng.key = uvec4(s.rng[0], s.rng[1], s.rng[2], s.rng[3]);
-  p.shadowRays = s.shadowRays;
-  p.lastPosition = s.lastPosition;
-  p.lastPdf = s.lastPdf;
-  p.lastSpecular = s.lastSpecular != 0u;
-  segments = s.segments;
   return p;
 }
 
-void storePath(uint slot, Payload p, uint segments) {
-  PathState s;
-  s.radiance = p.radiance;
-  s.depth = p.depth;
-  s.throughput = p.throughput;
-  s.shadowRays = p.shadowRays;
-  s.origin = p.origin;
-  s.segments = segments;
-  s.direction = p.direction;
-  s.lastSpecular = p.lastSpecular ? 1u : 0u;
-  s.lastPosition = p.lastPosition;
-  s.lastPdf = p.lastPdf;
-  s.rng = uint[4](p.rng.key.x, p.rng.key.y, p.rng.key.z, p.rng.key.w);
-  states[slot] = s;
-}
+void storePath(uint slot, Payload p) { states[slot] = p.path; }
 
 // One segment of the path in slot `slot` (started here for the first segment); a finished path leaves its
 // radiance in `results`, a live one goes to the other queue. Every lane reaches the ballot, live or not.
@@ -85,17 +60,15 @@ void segment(uint i, inout uvec3 rays, inout uint laneSegments) {
   uint slot = 0u;
   if (live) {
     slot = first ? i : queues[wave.queue * control.capacity + i];
-    uint segments = 0u;
-    Payload p = first ? startSample(pixelOfSlot(slot), params.sampleIndex + slot % params.sampleCount)
-                      : loadPath(slot, segments);
-    segments += 1u;
+    Payload p = first ? startSample(pixelOfSlot(slot), params.sampleIndex + slot % params.sampleCount) : loadPath(slot);
+    p.path.segments += 1u;
     traceSegment(p);
     laneSegments += 1u;
     if (p.done) {
-      results[slot] = vec4(p.radiance, 0.0);
-      rays += uvec3(1u, p.shadowRays, segments - 1u);
+      results[slot] = vec4(p.path.radiance, 0.0);
+      rays += uvec3(1u, p.path.shadowRays, p.path.segments - 1u);
     } else {
-      storePath(slot, p, segments);
+      storePath(slot, p);
       keep = true;
     }
   }

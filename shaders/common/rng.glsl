@@ -7,6 +7,8 @@
 #ifndef RAYLAB_COMMON_RNG_GLSL
 #define RAYLAB_COMMON_RNG_GLSL
 
+#include "shared/path_state.h"
+
 #include "common/sobol.glsl"
 #include "common/specialization.glsl"
 
@@ -24,9 +26,6 @@ uvec4 pcg4d(uvec4 v) {
   return v;
 }
 
-struct Rng {
-  uvec4 key;  // (packed pixel, sample index, seed, next dimension)
-};
 
 Rng rngCreate(uvec2 pixel, uint sampleIndex, uint seed) {
   return Rng(uvec4(pixel.x | (pixel.y << 16u), sampleIndex, seed, 0u));

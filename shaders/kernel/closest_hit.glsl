@@ -11,9 +11,9 @@
 // Sets the payload's next segment; false when the path should stop there.
 bool continuePath(inout Payload p, vec3 origin, vec3 direction, vec3 throughput) {
   if (maxComponent(throughput) < params.throughputCutoff) return false;
-  p.origin = origin;
-  p.direction = direction;
-  p.throughput = throughput;
+  p.path.origin = origin;
+  p.path.direction = direction;
+  p.path.throughput = throughput;
   return true;
 }
 
@@ -24,10 +24,10 @@ void glassHit(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
   const float fresnel = lobes.fresnel;
   const float delta = material.delta;
   const bool entering = dot(wo, s.geometricNormal) > 0.0;
-  const vec3 weightReflect = p.throughput * (delta + (1.0 - delta) * fresnel);
+  const vec3 weightReflect = p.path.throughput * (delta + (1.0 - delta) * fresnel);
   // The tint colours light once, as it enters: a closed object then tints what is seen through it once.
   const vec3 weightRefract =
-      lobes.tir ? vec3(0.0) : p.throughput * (1.0 - delta) * (1.0 - fresnel) * (entering ? lobes.transmittance : vec3(1.0));
+      lobes.tir ? vec3(0.0) : p.path.throughput * (1.0 - delta) * (1.0 - fresnel) * (entering ? lobes.transmittance : vec3(1.0));
 
   // Each continuation leaves from the side of the geometric surface it travels into.
   const vec3 ngOutside = s.geometricNormal;
@@ -64,13 +64,13 @@ void glassHit(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
 void closestHit(Hit hit, inout Payload p) {
   const Surface s = surfaceAt(hit);
   MaterialRecord material = materials[s.material];
-  const vec3 wo = -p.direction;
+  const vec3 wo = -p.path.direction;
   p.done = true;
   p.split = false;
 
   if (featureEnabled(kFeatureDeltaBsdf) && isSpecularOnly(bsdfFlags(material))) {
-    if (p.depth < params.maxDepth) {
-      p.depth += 1u;
+    if (p.path.depth < params.maxDepth) {
+      p.path.depth += 1u;
       glassHit(s, material, wo, p);
     }
     return;
@@ -83,12 +83,12 @@ void closestHit(Hit hit, inout Payload p) {
 
   const float delta = featureEnabled(kFeatureMirror) ? material.delta : 0.0;
   if (delta < 1.0) {
-    p.radiance += p.throughput * (1.0 - delta) * directLighting(s.position, ng, frame, toLocal(frame, wo), material, p);
+    p.path.radiance += p.path.throughput * (1.0 - delta) * directLighting(s.position, ng, frame, toLocal(frame, wo), material, p);
   }
-  if (delta > 0.0 && p.depth < params.maxDepth) {
-    const vec3 mirror = reflect(p.direction, ns);
-    if (dot(mirror, ng) > 0.0 && continuePath(p, offsetRayOrigin(s.position, ng), mirror, p.throughput * delta)) {
-      p.depth += 1u;
+  if (delta > 0.0 && p.path.depth < params.maxDepth) {
+    const vec3 mirror = reflect(p.path.direction, ns);
+    if (dot(mirror, ng) > 0.0 && continuePath(p, offsetRayOrigin(s.position, ng), mirror, p.path.throughput * delta)) {
+      p.path.depth += 1u;
       p.done = false;
     }
   }

@@ -34,7 +34,7 @@ vec3 directLighting(vec3 position, vec3 ng, ShadingFrame frame, vec3 woLocal, Ma
     const vec3 contribution = bsdfEval(material, wiLocal, woLocal) * light.irradiance * wiLocal.z;
     // Only light that would contribute is worth a shadow ray.
     if (!(maxComponent(contribution) > 0.0)) continue;
-    p.shadowRays += 1u;
+    p.path.shadowRays += 1u;
     if (traceVisibility(shadowOrigin, light.wi, light.distance)) sum += contribution;
   }
   return sum;

@@ -11,15 +11,15 @@
 
 // The weight of environment light that a continuation reached, against next event estimation of it.
 float environmentWeight(Payload p) {
-  if (kIntegrator != kIntegratorPath || p.lastSpecular || kSampling == kSamplingBsdf || !environmentSamplable()) {
+  if (kIntegrator != kIntegratorPath || p.path.lastSpecular != 0u || kSampling == kSamplingBsdf || !environmentSamplable()) {
     return 1.0;
   }
   if (kSampling == kSamplingLight) return 0.0;
-  return powerHeuristic(p.lastPdf, environmentPdf(p.direction));
+  return powerHeuristic(p.path.lastPdf, environmentPdf(p.path.direction));
 }
 
 void miss(inout Payload p) {
-  p.radiance += p.throughput * environmentRadiance(p.direction) * environmentWeight(p);
+  p.path.radiance += p.path.throughput * environmentRadiance(p.path.direction) * environmentWeight(p);
   p.done = true;
 }
 

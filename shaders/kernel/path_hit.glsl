@@ -27,12 +27,12 @@ const float kRouletteMax = 0.95;
 
 // The weight of emission that a continuation reached, against next event estimation of the same point.
 float emissionWeight(Hit hit, Surface s, Payload p) {
-  if (p.lastSpecular || kSampling == kSamplingBsdf || params.emitterCount == 0u) return 1.0;
+  if (p.path.lastSpecular != 0u || kSampling == kSamplingBsdf || params.emitterCount == 0u) return 1.0;
   if (kSampling == kSamplingLight) return 0.0;
   const uint first = instances[hit.instance].firstEmitter;
   if (first == kNoEmitter) return 1.0;
-  const float lightPdf = emitterPdf(first + hit.primitive, p.lastPosition, s.position, s.geometricNormal);
-  return powerHeuristic(p.lastPdf, lightPdf);
+  const float lightPdf = emitterPdf(first + hit.primitive, p.path.lastPosition, s.position, s.geometricNormal);
+  return powerHeuristic(p.path.lastPdf, lightPdf);
 }
 
 // What one light sample (direction wi, radiance arriving along it, solid-angle pdf, free distance) brings through
@@ -46,7 +46,7 @@ vec3 lightSampleContribution(vec3 wi, vec3 radiance, float pdf, float distance, 
   if (!(maxComponent(contribution) > 0.0)) return vec3(0.0);
   const float weight =
       kSampling == kSamplingMis ? powerHeuristic(pdf, (1.0 - delta) * bsdfPdf(material, wiLocal, woLocal)) : 1.0;
-  p.shadowRays += 1u;
+  p.path.shadowRays += 1u;
   if (!traceVisibility(offsetRayOrigin(s.position, ng), wi, distance)) return vec3(0.0);
   return weight * contribution;
 }
@@ -54,7 +54,7 @@ vec3 lightSampleContribution(vec3 wi, vec3 radiance, float pdf, float distance, 
 // Next event estimation of one emitter point.
 vec3 sampleEmitterLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material, float delta,
                         inout Payload p) {
-  const EmitterSample e = sampleEmitter(s.position, rngNext4(p.rng).xyz);
+  const EmitterSample e = sampleEmitter(s.position, rngNext4(p.path.rng).xyz);
   // The shadow ray stops short of the emitter, which is scene geometry too.
   return lightSampleContribution(e.wi, e.radiance, e.pdf, e.distance * (1.0 - 1e-4), s, ng, frame, woLocal, material,
                                  delta, p);
@@ -63,7 +63,7 @@ vec3 sampleEmitterLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, Ma
 // Next event estimation of the environment image.
 vec3 sampleEnvironmentLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material,
                             float delta, inout Payload p) {
-  const EnvironmentSample e = sampleEnvironment(rngNext4(p.rng).xy);
+  const EnvironmentSample e = sampleEnvironment(rngNext4(p.path.rng).xy);
   return lightSampleContribution(e.wi, e.radiance, e.pdf, kRayTMax, s, ng, frame, woLocal, material, delta, p);
 }
 
@@ -71,21 +71,21 @@ vec3 sampleEnvironmentLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal
 void continueOrEnd(inout Payload p, vec3 origin, vec3 direction, vec3 throughput) {
   p.done = true;
   if (!(maxComponent(throughput) > 0.0)) return;
-  if (p.depth >= kRouletteDepth) {
+  if (p.path.depth >= kRouletteDepth) {
     const float survive = min(maxComponent(throughput), kRouletteMax);
-    if (rngNext4(p.rng).x >= survive) return;
+    if (rngNext4(p.path.rng).x >= survive) return;
     throughput /= survive;
   }
-  p.origin = origin;
-  p.direction = direction;
-  p.throughput = throughput;
-  p.depth += 1u;
+  p.path.origin = origin;
+  p.path.direction = direction;
+  p.path.throughput = throughput;
+  p.path.depth += 1u;
   p.done = false;
 }
 
 // A vertex of a specular-only BSDF (glass): one delta lobe, chosen by bsdfSampleSpecular.
 void specularVertex(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
-  const SpecularSample b = bsdfSampleSpecular(material, wo, s.shadingNormal, rngNext4(p.rng).x);
+  const SpecularSample b = bsdfSampleSpecular(material, wo, s.shadingNormal, rngNext4(p.path.rng).x);
   const bool entering = dot(wo, s.geometricNormal) > 0.0;
   const bool reflected = (b.flags & kLobeReflection) != 0u;
   // Each continuation leaves from the side of the geometric surface it travels into.
@@ -94,23 +94,23 @@ void specularVertex(Surface s, MaterialRecord material, vec3 wo, inout Payload p
     p.done = true;
     return;
   }
-  p.lastSpecular = true;
-  continueOrEnd(p, offsetRayOrigin(s.position, side), b.wi, p.throughput * b.weight);
+  p.path.lastSpecular = 1u;
+  continueOrEnd(p, offsetRayOrigin(s.position, side), b.wi, p.path.throughput * b.weight);
 }
 
 void closestHitPath(Hit hit, inout Payload p) {
   const Surface s = surfaceAt(hit);
   MaterialRecord material = materials[s.material];
-  const vec3 wo = -p.direction;
+  const vec3 wo = -p.path.direction;
   p.done = true;
   p.split = false;
-  rngStartVertex(p.rng, p.depth);
+  rngStartVertex(p.path.rng, p.path.depth);
 
   // Emission from the front face only, the side the counter-clockwise winding's normal points to.
   if (s.frontFace && maxComponent(material.emission) > 0.0) {
-    p.radiance += p.throughput * material.emission * emissionWeight(hit, s, p);
+    p.path.radiance += p.path.throughput * material.emission * emissionWeight(hit, s, p);
   }
-  if (p.depth > params.maxDepth) return;  // the segment that reached here was the last one allowed
+  if (p.path.depth > params.maxDepth) return;  // the segment that reached here was the last one allowed
 
   if (isSpecularOnly(bsdfFlags(material))) {
     specularVertex(s, material, wo, p);
@@ -126,22 +126,22 @@ void closestHitPath(Hit hit, inout Payload p) {
 
   // Next event estimation of the punctual lights: the (1 - delta) f_r part of the mixture sees them.
   if (delta < 1.0 && params.lightCount > 0u) {
-    p.radiance += p.throughput * (1.0 - delta) * directLighting(s.position, ng, frame, woLocal, material, p);
+    p.path.radiance += p.path.throughput * (1.0 - delta) * directLighting(s.position, ng, frame, woLocal, material, p);
   }
   if (kSampling != kSamplingBsdf && delta < 1.0 && params.emitterCount > 0u) {
-    p.radiance += p.throughput * sampleEmitterLight(s, ng, frame, woLocal, material, delta, p);
+    p.path.radiance += p.path.throughput * sampleEmitterLight(s, ng, frame, woLocal, material, delta, p);
   }
   if (kSampling != kSamplingBsdf && delta < 1.0 && environmentSamplable()) {
-    p.radiance += p.throughput * sampleEnvironmentLight(s, ng, frame, woLocal, material, delta, p);
+    p.path.radiance += p.path.throughput * sampleEnvironmentLight(s, ng, frame, woLocal, material, delta, p);
   }
-  p.lastPosition = s.position;
+  p.path.lastPosition = s.position;
 
   // The continuation: the mirror with probability delta, else a sample of f_r (weight f cos / pdf).
-  const vec4 u = rngNext4(p.rng);
+  const vec4 u = rngNext4(p.path.rng);
   if (u.w < delta) {
-    const vec3 mirror = reflect(p.direction, ns);
-    p.lastSpecular = true;
-    if (dot(mirror, ng) > 0.0) continueOrEnd(p, offsetRayOrigin(s.position, ng), mirror, p.throughput);
+    const vec3 mirror = reflect(p.path.direction, ns);
+    p.path.lastSpecular = 1u;
+    if (dot(mirror, ng) > 0.0) continueOrEnd(p, offsetRayOrigin(s.position, ng), mirror, p.path.throughput);
     return;
   }
   const BsdfSample b = bsdfSample(material, woLocal, u.xyz);
@@ -149,9 +149,9 @@ void closestHitPath(Hit hit, inout Payload p) {
   const vec3 wi = toWorld(frame, b.wi);
   // A shading-normal sample below the geometric surface cannot leave this side.
   if (!(dot(wi, ng) > 0.0)) return;
-  p.lastSpecular = false;
-  p.lastPdf = (1.0 - delta) * b.pdf;
-  continueOrEnd(p, offsetRayOrigin(s.position, ng), wi, p.throughput * b.f * (b.wi.z / b.pdf));
+  p.path.lastSpecular = 0u;
+  p.path.lastPdf = (1.0 - delta) * b.pdf;
+  continueOrEnd(p, offsetRayOrigin(s.position, ng), wi, p.path.throughput * b.f * (b.wi.z / b.pdf));
 }
 
 #endif

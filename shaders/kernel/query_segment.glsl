@@ -10,7 +10,7 @@
 
 void traceSegment(inout Payload p) {
   Hit hit;
-  if (traceClosest(p.origin, p.direction, 0.0, kRayTMax, hit)) {
+  if (traceClosest(p.path.origin, p.path.direction, 0.0, kRayTMax, hit)) {
     closestHitProgram(hit, p);
   } else {
     miss(p);

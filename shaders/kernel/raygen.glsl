@@ -8,7 +8,7 @@
 
 #include "kernel/payload.glsl"
 
-// Traces the segment (p.origin, p.direction): closestHit or miss add what they see to the payload and set up
+// Traces the segment (p.path.origin, p.path.direction): closestHit or miss add what they see to the payload and set up
 // the next segment or mark the path done.
 void traceSegment(inout Payload p);
 
@@ -33,38 +33,39 @@ vec3 primaryDirection(uvec2 pixel, vec2 offset) {
 void keepSplit(inout Payload p, inout Pending pending[kMaxPending], inout uint pendingCount) {
   p.split = false;
   if (pendingCount < kMaxPending) {
-    pending[pendingCount] = Pending(p.splitOrigin, p.splitDirection, p.splitThroughput, p.depth);
+    pending[pendingCount] = Pending(p.splitOrigin, p.splitDirection, p.splitThroughput, p.path.depth);
     pendingCount += 1u;
     return;
   }
-  const float keep = maxComponent(p.throughput);
+  const float keep = maxComponent(p.path.throughput);
   const float other = maxComponent(p.splitThroughput);
   const float pickOther = other / (keep + other);
-  if (rngNext4(p.rng).x < pickOther) {
-    p.origin = p.splitOrigin;
-    p.direction = p.splitDirection;
-    p.throughput = p.splitThroughput / pickOther;
+  if (rngNext4(p.path.rng).x < pickOther) {
+    p.path.origin = p.splitOrigin;
+    p.path.direction = p.splitDirection;
+    p.path.throughput = p.splitThroughput / pickOther;
   } else {
-    p.throughput /= 1.0 - pickOther;
+    p.path.throughput /= 1.0 - pickOther;
   }
 }
 
 // The camera path of sample `sampleIndex` of `pixel`, ready for its first segment.
 Payload startSample(uvec2 pixel, uint sampleIndex) {
   Payload p;
-  p.rng = rngCreate(pixel, sampleIndex, params.seed);
-  const vec2 offset = (params.flags & kFrameJitter) != 0u ? rngNext2(p.rng) : vec2(0.5);
-  p.origin = params.cameraOrigin;
-  p.direction = primaryDirection(pixel, offset);
-  p.radiance = vec3(0.0);
-  p.throughput = vec3(1.0);
-  p.depth = 0u;
+  p.path.rng = rngCreate(pixel, sampleIndex, params.seed);
+  const vec2 offset = (params.flags & kFrameJitter) != 0u ? rngNext2(p.path.rng) : vec2(0.5);
+  p.path.origin = params.cameraOrigin;
+  p.path.direction = primaryDirection(pixel, offset);
+  p.path.radiance = vec3(0.0);
+  p.path.throughput = vec3(1.0);
+  p.path.depth = 0u;
   p.done = false;
   p.split = false;
-  p.shadowRays = 0u;
-  p.lastPosition = p.origin;
-  p.lastPdf = 0.0;
-  p.lastSpecular = true;
+  p.path.shadowRays = 0u;
+  p.path.segments = 0u;
+  p.path.lastPosition = p.path.origin;
+  p.path.lastPdf = 0.0;
+  p.path.lastSpecular = 1u;
   return p;
 }
 
@@ -100,16 +101,16 @@ vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
     if (p.done) {
       if (kIntegrator == kIntegratorPath || pendingCount == 0u) break;
       pendingCount -= 1u;
-      p.origin = pending[pendingCount].origin;
-      p.direction = pending[pendingCount].direction;
-      p.throughput = pending[pendingCount].throughput;
-      p.depth = pending[pendingCount].depth;
+      p.path.origin = pending[pendingCount].origin;
+      p.path.direction = pending[pendingCount].direction;
+      p.path.throughput = pending[pendingCount].throughput;
+      p.path.depth = pending[pendingCount].depth;
       p.done = false;
     }
   }
   lanesJoin(segments);
-  rays += uvec3(1u, p.shadowRays, segments - 1u);
-  return p.radiance;
+  rays += uvec3(1u, p.path.shadowRays, segments - 1u);
+  return p.path.radiance;
 }
 
 // Adds params.sampleCount samples to the pixel's running sum, one at a time and in order, exactly as separate

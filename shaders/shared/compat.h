@@ -13,7 +13,8 @@
   using glm::vec2;           \
   using glm::vec3;           \
   using glm::vec4;            \
-  using glm::uvec2;
+  using glm::uvec2;          \
+  using glm::uvec4;
 #define RL_NAMESPACE_END }
 #define RL_CONST inline constexpr
 #define RL_CHECK_SIZE(type, bytes) static_assert(sizeof(type) == (bytes), #type " must match its GLSL layout")

@@ -5,11 +5,12 @@
 #define RAYLAB_SHARED_WAVEFRONT_H
 
 #include "compat.h"
+#include "path_state.h"  // PathState, what kBindingPathStates holds
 
 RL_NAMESPACE_BEGIN
 
 // Bindings of wavefront.comp, beside the scene's and the renderer's.
-RL_CONST uint kBindingPathStates = 19;   // PathState[capacity]
+RL_CONST uint kBindingPathStates = 19;   // PathState[capacity] (path_state.h)
 RL_CONST uint kBindingPathResults = 20;  // vec4[capacity]: the radiance of each finished path
 RL_CONST uint kBindingPathQueues = 21;   // uint[2 * capacity]: two queues of live slots, read one, fill the other
 RL_CONST uint kBindingWaveControl = 22;  // WaveControl
@@ -39,21 +40,6 @@ struct WaveControl {
 };
 RL_CHECK_SIZE(WaveControl, 40);
 
-// A path between two segments: the path integrator's Payload, and where its result goes.
-struct PathState {
-  vec3 radiance;
-  uint depth;
-  vec3 throughput;
-  uint shadowRays;
-  vec3 origin;
-  uint segments;
-  vec3 direction;
-  uint lastSpecular;
-  vec3 lastPosition;
-  float lastPdf;
-  uint rng[4];
-};
-RL_CHECK_SIZE(PathState, 96);
 
 RL_NAMESPACE_END
 

@@ -10,14 +10,9 @@
 namespace raylab::reference {
 
 Lobes wardEval(const WardParams& p, const dvec3& wi, const dvec3& wo) {
-  if (!aboveHorizon(wi, wo)) return {};
-  const Lobes diffuseOnly{p.rho_d * kInvPi, dvec3(0.0)};
-  const dvec3 h = wi + wo;
-  const double lobe = std::exp(-wardExponent(h, p.alpha_x, p.alpha_y));
-  // Once exp(-e) underflows the value is 0; stopping here keeps 0 * inf out of a 1/h_z^4.
-  if (lobe == 0.0) return diffuseOnly;
-  const double spec = lobe / (4.0 * kPi * p.alpha_x * p.alpha_y * std::sqrt(wi.z * wo.z));
-  return {diffuseOnly.diffuse, p.rho_s * spec};
+  return wardFamilyEval(p.rho_d, p.rho_s, p.alpha_x, p.alpha_y, wi, wo, [&](double lobe, const dvec3&) {
+    return lobe / (4.0 * kPi * p.alpha_x * p.alpha_y * std::sqrt(wi.z * wo.z));
+  });
 }
 
 dvec3 wardSampleSpecular(const WardParams& p, const dvec3& wo, const dvec2& u) {

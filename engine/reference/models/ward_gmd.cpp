@@ -10,15 +10,10 @@
 namespace raylab::reference {
 
 Lobes wardGmdEval(const WardGmdParams& p, const dvec3& wi, const dvec3& wo) {
-  if (!aboveHorizon(wi, wo)) return {};
-  const Lobes diffuseOnly{p.rho_d * kInvPi, dvec3(0.0)};
-  const dvec3 h = wi + wo;
-  const double lobe = std::exp(-wardExponent(h, p.alpha_x, p.alpha_y));
-  // Once exp(-e) underflows the value is 0; stopping here keeps 0 * inf out of a 1/h_z^4.
-  if (lobe == 0.0) return diffuseOnly;
-  const double hz2 = h.z * h.z;
-  const double spec = glm::dot(h, h) / hz2 / hz2 * lobe / (kPi * p.alpha_x * p.alpha_y);
-  return {diffuseOnly.diffuse, p.rho_s * spec};
+  return wardFamilyEval(p.rho_d, p.rho_s, p.alpha_x, p.alpha_y, wi, wo, [&](double lobe, const dvec3& h) {
+    const double hz2 = h.z * h.z;
+    return glm::dot(h, h) / hz2 / hz2 * lobe / (kPi * p.alpha_x * p.alpha_y);
+  });
 }
 
 dvec3 wardGmdSampleSpecular(const WardGmdParams& p, const dvec3& wo, const dvec2& u) {
