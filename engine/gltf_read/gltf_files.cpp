@@ -133,6 +133,4 @@ std::string resolveUri(const std::string& uri, const std::string& baseDirectory,
   return resolved.string();
 }
 
-std::string readSceneFile(const std::string& path, std::uint64_t maxBytes) { return readInputFile(path, maxBytes); }
-
 }  // namespace raylab::gltf

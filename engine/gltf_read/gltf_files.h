@@ -41,7 +41,5 @@ void checkJsonDepth(const std::string& text, const std::string& label);
 // it; else throws Error saying why (a URI scheme, outside the scene's folder, a scene held in memory).
 std::string resolveUri(const std::string& uri, const std::string& baseDirectory, UriPolicy& policy);
 
-// Reads a scene file the user named: a regular file of at most `maxBytes`. Errors name the path.
-std::string readSceneFile(const std::string& path, std::uint64_t maxBytes);
 
 }  // namespace raylab::gltf

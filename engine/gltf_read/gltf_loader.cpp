@@ -535,7 +535,7 @@ Scene loadGltfFile(const std::string& path, const GltfOptions& options) {
                     "' (convert it, e.g. with Blender or assimp export)",
                 kExitUsage);
   }
-  const std::string bytes = gltf::readSceneFile(path, gltf::kMaxSceneFileBytes);
+  const std::string bytes = readInputFile(path, gltf::kMaxSceneFileBytes);
   const std::string directory = file.parent_path().empty() ? "." : file.parent_path().string();
   Document document = gltf::parseDocument(bytes, directory, path, extension == ".glb", options.allowOutsideUris);
   return loadDocument(document, file.stem().string(), options);
