@@ -36,7 +36,7 @@ Light convertLight(const Document& document, int lightIndex, const glm::mat4& wo
 
   Light light;
   light.name = gltfLight.name;
-  gpu::LightRecord& record = light.record;
+  PunctualLight& record = light.record;
   record.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
   record.intensity = color * float(gltfLight.intensity);
   // Checked as the float the kernel uses (1e39, or 1e30 x 1e30, would reach the image as Inf).

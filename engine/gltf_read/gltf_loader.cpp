@@ -495,7 +495,7 @@ class SceneBuilder {
     const glm::vec3 offset(-0.3f * distance, 0.3f * distance, 0.0f);  // along right, up, forward
     const float toCenter = glm::length(center - (camera.position + offset.x * u + offset.y * v));
     const float intensity = kDefaultLightRadiance * kPi * toCenter * toCenter;
-    gpu::LightRecord record = pointLight(offset, glm::vec3(intensity));
+    PunctualLight record = pointLight(offset, glm::vec3(intensity));
     record.type = gpu::kLightHeadlight;
     scene_.lights.push_back({"default", record});
     document_.warnOnce("no lights", "has no KHR_lights_punctual lights; added a default headlight, carried with the "

@@ -91,45 +91,6 @@ std::vector<gpu::MaterialRecord> materialRecords(std::span<const Material> mater
   return records;
 }
 
-std::vector<gpu::LightRecord> lightRecords(std::span<const Light> lights) {
-  std::vector<gpu::LightRecord> records;
-  for (const Light& light : lights) records.push_back(light.record);
-  return records;
-}
-
-float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
-// The emitting triangles of one instance, in world space, appended to `emitters` (pmf and cdf come later).
-void addTriangleEmitters(const Scene& scene, const MeshInstance& instance, std::vector<gpu::EmitterRecord>& emitters) {
-  const Mesh& mesh = scene.meshes[instance.mesh];
-  const glm::vec3 radiance = scene.materials[instance.material].record.emission;
-  for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-    gpu::EmitterRecord e{};
-    e.kind = gpu::kEmitterTriangle;
-    e.p0 = glm::vec3(instance.transform * glm::vec4(mesh.positions[mesh.indices[i]], 1.0f));
-    e.p1 = glm::vec3(instance.transform * glm::vec4(mesh.positions[mesh.indices[i + 1]], 1.0f));
-    e.p2 = glm::vec3(instance.transform * glm::vec4(mesh.positions[mesh.indices[i + 2]], 1.0f));
-    e.radiance = radiance;
-    e.area = 0.5f * glm::length(glm::cross(e.p1 - e.p0, e.p2 - e.p0));
-    emitters.push_back(e);
-  }
-}
-
-// Emitters are picked in proportion to their power, luminance(L_e) x area (the factor pi of a Lambertian
-// emitter is common to all). The cdf is inclusive; the last entry is exactly 1.
-void normaliseEmitters(std::vector<gpu::EmitterRecord>& emitters) {
-  double total = 0.0;
-  for (const gpu::EmitterRecord& e : emitters) total += double(luminance(e.radiance)) * e.area;
-  double running = 0.0;
-  for (gpu::EmitterRecord& e : emitters) {
-    const double power = total > 0.0 ? double(luminance(e.radiance)) * e.area / total : 0.0;
-    running += power;
-    e.pmf = float(power);
-    e.cdf = float(running);
-  }
-  if (!emitters.empty()) emitters.back().cdf = 1.0f;
-}
-
 std::string mebibytes(std::uint64_t bytes) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
@@ -163,12 +124,11 @@ void checkDeviceLimits(const Device& device, const Scene& scene) {
   checkBuffer("texture texels (" + std::to_string(texels) + ")", texels * sizeof(std::uint32_t));
   checkBuffer("spheres (" + std::to_string(scene.spheres.size()) + ")",
               scene.spheres.size() * sizeof(gpu::SphereRecord));
-  std::uint64_t emitting = scene.spheres.size();
+  std::uint64_t emitting = scene.lights.size() + scene.spheres.size() + 1;
   for (const MeshInstance& instance : scene.instances) {
     if (emits(scene, instance.material)) emitting += scene.meshes[instance.mesh].indices.size() / 3;
   }
-  checkBuffer("emitting primitives (" + std::to_string(emitting) + ")", emitting * sizeof(gpu::EmitterRecord));
-  const std::uint64_t environmentTexels = std::uint64_t(scene.environment.width) * scene.environment.height;
+  checkBuffer("lights and emitting primitives (" + std::to_string(emitting) + ")", emitting * sizeof(gpu::LightRecord));
   checkBuffer("environment image (" + std::to_string(scene.environment.width) + "x" +
                   std::to_string(scene.environment.height) + ") and its sampling tables",
               environmentBufferBytes(scene.environment.width, scene.environment.height));
@@ -269,15 +229,13 @@ void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) 
 
   std::vector<gpu::InstanceRecord> instanceRecords;
   std::vector<TlasInstance> tlasInstances;
-  std::vector<gpu::EmitterRecord> emitters;
-  for (const MeshInstance& instance : scene.instances) {
+  const EnvironmentTables environmentTables = buildEnvironmentTables(scene.environment);
+  gpuScene.sceneLights = sceneLights(scene, environmentTables);
+  for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+    const MeshInstance& instance = scene.instances[i];
     if (meshBlas[instance.mesh] == UINT32_MAX) continue;
     gpu::InstanceRecord record{};
-    record.firstEmitter = gpu::kNoEmitter;
-    if (emits(scene, instance.material)) {
-      record.firstEmitter = static_cast<std::uint32_t>(emitters.size());
-      addTriangleEmitters(scene, instance, emitters);
-    }
+    record.firstLight = gpuScene.sceneLights.instanceFirstLight[i];
     record.geometryKind = gpu::kGeometryTriangles;
     record.material = instance.material;
     record.firstIndex = packed.firstIndex[instance.mesh];
@@ -296,22 +254,7 @@ void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) 
     gpu::InstanceRecord record{};
     record.geometryKind = gpu::kGeometrySpheres;
     record.firstSphere = 0;
-    record.firstEmitter = gpu::kNoEmitter;
-    bool anyEmits = false;
-    for (const Sphere& sphere : scene.spheres) anyEmits |= emits(scene, sphere.material);
-    if (anyEmits) {
-      // One entry per sphere (pmf 0 for those that do not emit), so that entry = firstEmitter + primitive.
-      record.firstEmitter = static_cast<std::uint32_t>(emitters.size());
-      for (const Sphere& sphere : scene.spheres) {
-        gpu::EmitterRecord e{};
-        e.kind = gpu::kEmitterSphere;
-        e.p0 = sphere.center;
-        e.p1 = glm::vec3(sphere.radius, 0.0f, 0.0f);
-        e.radiance = scene.materials[sphere.material].record.emission;
-        e.area = 4.0f * 3.14159265f * sphere.radius * sphere.radius;
-        emitters.push_back(e);
-      }
-    }
+    record.firstLight = gpuScene.sceneLights.sphereFirstLight;
     TlasInstance tlasInstance;
     tlasInstance.blas = sphereBlas;
     copyTransform(glm::mat4(1.0f), tlasInstance.transform);
@@ -328,19 +271,20 @@ void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) 
   const std::vector<gpu::MaterialRecord> materials = materialRecords(scene.materials);
   gpuScene.materials = createBufferWithData<gpu::MaterialRecord>(device, materials, kStorage, "materials");
   gpuScene.materialCount = static_cast<std::uint32_t>(materials.size());
-  const std::vector<gpu::LightRecord> lights = lightRecords(scene.lights);
-  gpuScene.lights = createBufferWithData<gpu::LightRecord>(device, lights, kStorage, "lights");
-  gpuScene.lightCount = static_cast<std::uint32_t>(lights.size());
+  const SceneLights& lights = gpuScene.sceneLights;
+  // A buffer may not be empty: a scene without lights gets one black record that nothing counts.
+  const std::vector<gpu::LightRecord> lightRecords =
+      lights.records.empty() ? std::vector<gpu::LightRecord>(1) : lights.records;
+  gpuScene.lights = createBufferWithData<gpu::LightRecord>(device, lightRecords, kStorage, "lights");
+  gpuScene.lightCount = static_cast<std::uint32_t>(lights.records.size());
+  gpuScene.punctualLightCount = lights.punctualCount;
 
   std::vector<gpu::TextureRecord> textureRecords;
   std::vector<std::uint32_t> texels;
   packTextures(scene, textureRecords, texels);
   gpuScene.textures = createBufferWithData<gpu::TextureRecord>(device, textureRecords, kStorage, "textures");
   gpuScene.texels = createBufferWithData<std::uint32_t>(device, texels, kStorage, "texels");
-  normaliseEmitters(emitters);
-  gpuScene.emitters = createBufferWithData<gpu::EmitterRecord>(device, emitters, kStorage, "emitters");
-  gpuScene.emitterCount = static_cast<std::uint32_t>(emitters.size());
-  const std::vector<float> environment = packEnvironment(scene.environment, buildEnvironmentTables(scene.environment));
+  const std::vector<float> environment = packEnvironment(scene.environment, environmentTables, lights.environmentLight);
   gpuScene.environment = createBufferWithData<float>(device, environment, kStorage, "environment");
 }
 
@@ -351,8 +295,7 @@ void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
   for (AccelerationStructure& blas : gpuScene.blases) destroyAccelerationStructure(device, blas);
   for (Buffer* buffer : {&gpuScene.instances, &gpuScene.positions, &gpuScene.normals, &gpuScene.uvs,
                          &gpuScene.indices, &gpuScene.spheres, &gpuScene.sphereAabbs, &gpuScene.materials,
-                         &gpuScene.lights, &gpuScene.textures, &gpuScene.texels, &gpuScene.emitters,
-                         &gpuScene.environment}) {
+                         &gpuScene.lights, &gpuScene.textures, &gpuScene.texels, &gpuScene.environment}) {
     destroyBuffer(device, *buffer);
   }
   gpuScene = {};
@@ -364,10 +307,11 @@ void updateMaterials(const Device& device, const GpuScene& gpuScene, std::span<c
   uploadBuffer<gpu::MaterialRecord>(device, gpuScene.materials, records);
 }
 
-void updateLights(const Device& device, const GpuScene& gpuScene, std::span<const Light> lights) {
-  if (lights.size() != gpuScene.lightCount) throw Error("updateLights: the light count changed");
-  const std::vector<gpu::LightRecord> records = lightRecords(lights);
-  uploadBuffer<gpu::LightRecord>(device, gpuScene.lights, records);
+void updateLights(const Device& device, GpuScene& gpuScene, std::span<const Light> lights) {
+  updatePunctualLights(gpuScene.sceneLights, lights);
+  if (!gpuScene.sceneLights.records.empty()) {
+    uploadBuffer<gpu::LightRecord>(device, gpuScene.lights, gpuScene.sceneLights.records);
+  }
 }
 
 std::vector<DescriptorBinding> sceneBindings() {
@@ -383,7 +327,6 @@ std::vector<DescriptorBinding> sceneBindings() {
       {gpu::kBindingLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingTextures, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingTexels, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-      {gpu::kBindingEmitters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingEnvironment, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   };
 }
@@ -400,7 +343,6 @@ void writeSceneDescriptors(const Device& device, VkDescriptorSet set, const GpuS
   writeStorageBuffer(device, set, gpu::kBindingLights, gpuScene.lights.handle);
   writeStorageBuffer(device, set, gpu::kBindingTextures, gpuScene.textures.handle);
   writeStorageBuffer(device, set, gpu::kBindingTexels, gpuScene.texels.handle);
-  writeStorageBuffer(device, set, gpu::kBindingEmitters, gpuScene.emitters.handle);
   writeStorageBuffer(device, set, gpu::kBindingEnvironment, gpuScene.environment.handle);
 }
 

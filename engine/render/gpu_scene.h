@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "render/light_records.h"
 #include "scene/scene.h"
 #include "vk/accel.h"
 #include "vk/device.h"
@@ -23,18 +24,18 @@ struct GpuScene {
   Buffer spheres;
   Buffer sphereAabbs;
   Buffer materials;
-  Buffer lights;
+  Buffer lights;    // LightRecord[]: every light, with the light-selection distribution (light_records.h)
   Buffer textures;  // TextureRecord[]
   Buffer texels;    // RGBA8 sRGB texels of every texture
-  Buffer emitters;  // EmitterRecord[]: emissive triangles and spheres in world space
   Buffer environment;  // EnvironmentHeader, the environment image and its sampling tables
   std::vector<AccelerationStructure> blases;
   AccelerationStructure tlas;
   // gpu::kGeometry... of each TLAS instance, in instance order: instance i's custom index and SBT record
   // offset are both i, and a ray-tracing pipeline's hit record i must be of this geometry's hit group.
   std::vector<std::uint32_t> instanceGeometry;
-  std::uint32_t lightCount = 0;
-  std::uint32_t emitterCount = 0;  // emitting primitives (0: nothing for the path integrator to sample)
+  SceneLights sceneLights;  // the host's copy of `lights`, which live edits of the punctual lights rewrite
+  std::uint32_t lightCount = 0;          // LightRecords
+  std::uint32_t punctualLightCount = 0;  // the scene's punctual lights, the first LightRecords
   std::uint32_t materialCount = 0;
   std::uint64_t triangleCount = 0;
   std::uint32_t sphereCount = 0;
@@ -46,7 +47,7 @@ void destroyGpuScene(const Device& device, GpuScene& gpuScene);
 
 // Live edits (the viewer): same counts as uploaded, new values.
 void updateMaterials(const Device& device, const GpuScene& gpuScene, std::span<const Material> materials);
-void updateLights(const Device& device, const GpuScene& gpuScene, std::span<const Light> lights);
+void updateLights(const Device& device, GpuScene& gpuScene, std::span<const Light> lights);
 
 // The scene's descriptor bindings, to merge into a kernel's set layout, and writing them into a set.
 std::vector<DescriptorBinding> sceneBindings();

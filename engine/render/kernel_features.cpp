@@ -1,6 +1,7 @@
 #include "render/kernel_features.h"
 
 #include "brdf_params/material_params.h"
+#include "render/light_records.h"
 #include "shared/features.h"
 #include "util/error.h"
 #include "util/render_options.h"
@@ -16,19 +17,17 @@ KernelFeatures featuresOf(const Scene& scene) {
     if (material.record.baseColorTexture >= 0) f.features |= gpu::kFeatureTextures;
   }
   if (scene.environment.hasImage()) f.features |= gpu::kFeatureEnvironment;
-  for (const Light& light : scene.lights) {
-    switch (light.record.type) {
-      case gpu::kLightPoint: f.features |= gpu::kFeaturePointLights; break;
-      case gpu::kLightSpot: f.features |= gpu::kFeatureSpotLights; break;
-      case gpu::kLightDirectional: f.features |= gpu::kFeatureDirectionalLights; break;
-      case gpu::kLightHeadlight: f.features |= gpu::kFeatureHeadlight; break;
-      default: break;
-    }
-  }
+  f.lightKinds = lightKindsOf(scene);
   return f;
 }
 
-KernelFeatures allFeatures() { return {gpu::kAllModels, gpu::kAllFeatures}; }
+KernelFeatures allFeatures() {
+  KernelFeatures f;
+  f.models = gpu::kAllModels;
+  f.features = gpu::kAllFeatures;
+  f.lightKinds = gpu::kAllLightKinds;
+  return f;
+}
 
 std::uint32_t chooseIntegrator(const Scene& scene, IntegratorChoice choice) {
   if (choice == IntegratorChoice::kSlides) return gpu::kIntegratorSlides;
@@ -52,15 +51,14 @@ std::string describe(const KernelFeatures& features) {
   };
   constexpr Named kNames[] = {{gpu::kFeatureDeltaBsdf, "glass"},
                               {gpu::kFeatureMirror, "mirror reflection"},
-                              {gpu::kFeaturePointLights, "point lights"},
-                              {gpu::kFeatureSpotLights, "spot lights"},
-                              {gpu::kFeatureDirectionalLights, "directional lights"},
                               {gpu::kFeatureTextures, "base-colour textures"},
-                              {gpu::kFeatureEnvironment, "environment image"},
-                              {gpu::kFeatureHeadlight, "headlight"}};
+                              {gpu::kFeatureEnvironment, "environment image"}};
   std::string list;
   for (const Named& named : kNames) {
     if (features.features & named.bit) list += (list.empty() ? "" : ", ") + std::string(named.name);
+  }
+  for (std::uint32_t kind = 0; kind < gpu::kLightKindCount; ++kind) {
+    if (features.lightKinds & (1u << kind)) list += (list.empty() ? "" : ", ") + std::string(gpu::kLightKindNames[kind]) + " lights";
   }
   return std::string("integrator: ") + std::string(integratorName(features.integrator)) + "; models: " + (models.empty() ? std::string("none") : models) +
          "; features: " + (list.empty() ? std::string("none") : list) +

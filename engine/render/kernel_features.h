@@ -11,6 +11,7 @@ namespace raylab {
 struct KernelFeatures {
   std::uint32_t models = 0;    // bit (1 << gpu::kModel...) per model compiled in
   std::uint32_t features = 0;  // gpu::kFeature... bits
+  std::uint32_t lightKinds = 0;  // bit (1 << gpu::kLight...) per kind of light compiled in
   bool schlickFresnel = false; // glass uses Schlick's approximation instead of the exact Fresnel term
   std::uint32_t integrator = 0;  // gpu::kIntegrator...; each integrator is its own kernel
   std::uint32_t sampling = 0;    // gpu::kSampling...: MIS, or BSDF or light sampling alone (path integrator)

@@ -33,6 +33,7 @@ SpecializationConstants specializationFor(const KernelFeatures& kernel) {
   constants.set(gpu::kSpecGlassFresnel, kernel.schlickFresnel ? gpu::kFresnelSchlick : gpu::kFresnelExact);
   constants.set(gpu::kSpecIntegrator, kernel.integrator);
   constants.set(gpu::kSpecSampling, kernel.sampling);
+  constants.set(gpu::kSpecLightKinds, kernel.lightKinds);
   return constants;
 }
 
@@ -135,7 +136,7 @@ void fillRenderer(const Device& device, const GpuScene& gpuScene, const Scene& s
   params.background = scene.background;
   params.maxDepth = settings.maxDepth;
   params.lightCount = gpuScene.lightCount;
-  params.emitterCount = gpuScene.emitterCount;
+  params.punctualLightCount = gpuScene.punctualLightCount;
   params.environmentStrength = scene.environment.strength;
   params.environmentRotation = scene.environment.rotation;
   params.flags = settings.jitter ? gpu::kFrameJitter : 0u;
@@ -259,7 +260,8 @@ namespace {
 
 // Upper bound of the rays one sample of every pixel can trace; keeps the 32-bit ray counters from wrapping.
 std::uint64_t maxRaysPerSample(const gpu::FrameParams& params) {
-  const std::uint64_t perPath = std::uint64_t(params.maxDepth + 1) * (1 + params.lightCount);
+  // Per vertex: the continuation, and a shadow ray per punctual light (slides) or one (path).
+  const std::uint64_t perPath = std::uint64_t(params.maxDepth + 1) * (2 + params.punctualLightCount);
   return std::uint64_t(params.width) * params.height * perPath;
 }
 

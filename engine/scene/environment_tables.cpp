@@ -91,9 +91,10 @@ glm::vec3 environmentLookup(const Environment& environment, glm::vec3 d) {
          ty * ((1.0f - tx) * texel(x0, y0 + 1) + tx * texel(x0 + 1, y0 + 1));
 }
 
-std::vector<float> packEnvironment(const Environment& environment, const EnvironmentTables& tables) {
+std::vector<float> packEnvironment(const Environment& environment, const EnvironmentTables& tables, std::uint32_t light) {
   constexpr std::size_t kHeaderFloats = sizeof(gpu::EnvironmentHeader) / sizeof(float);
   gpu::EnvironmentHeader header{};
+  header.light = light;
   std::vector<float> data(kHeaderFloats);
   if (environment.hasImage()) {
     header.width = tables.width;

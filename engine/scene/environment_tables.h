@@ -23,13 +23,15 @@ struct EnvironmentTables {
 
 EnvironmentTables buildEnvironmentTables(const Environment& environment);
 
-// The density per unit solid angle with which the kernel's sampleEnvironment picks image-frame direction d.
+// The density per unit solid angle with which the kernel's environmentLightSample picks image-frame direction d.
 double environmentPdf(const EnvironmentTables& tables, glm::vec3 d);
 
 // The bilinear radiance of image-frame direction d (strength 1), as the kernel's environmentRadiance.
 glm::vec3 environmentLookup(const Environment& environment, glm::vec3 d);
 
-// EnvironmentHeader and the data the kernel reads (shaders/shared/scene_records.h), as floats.
-std::vector<float> packEnvironment(const Environment& environment, const EnvironmentTables& tables);
+// EnvironmentHeader and the data the kernel reads (shaders/shared/scene_records.h), as floats; `light` is the
+// LightRecord that samples the image (gpu::kNoLight: none).
+std::vector<float> packEnvironment(const Environment& environment, const EnvironmentTables& tables,
+                                   std::uint32_t light);
 
 }  // namespace raylab

@@ -11,15 +11,12 @@ gpu::MaterialRecord lambertMaterial(glm::vec3 rhoD, float delta) {
   return record;
 }
 
-gpu::LightRecord pointLight(glm::vec3 position, glm::vec3 intensity) {
-  gpu::LightRecord record{};
-  record.type = gpu::kLightPoint;
-  record.position = position;
-  record.intensity = intensity;
-  record.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-  record.cosInner = -1.0f;
-  record.cosOuter = -1.0f;
-  return record;
+PunctualLight pointLight(glm::vec3 position, glm::vec3 intensity) {
+  PunctualLight light;
+  light.type = gpu::kLightPoint;
+  light.position = position;
+  light.intensity = intensity;
+  return light;
 }
 
 std::uint64_t triangleCount(const Scene& scene) {
@@ -44,12 +41,7 @@ bool hasEmissiveGeometry(const Scene& scene) {
 }
 
 const char* lightTypeName(std::uint32_t type) {
-  switch (type) {
-    case gpu::kLightSpot: return "spot";
-    case gpu::kLightDirectional: return "directional";
-    case gpu::kLightHeadlight: return "headlight";
-    default: return "point";
-  }
+  return type < gpu::kLightKindCount ? gpu::kLightKindNames[type] : "unknown";
 }
 
 }  // namespace raylab

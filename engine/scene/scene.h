@@ -62,9 +62,20 @@ struct Texture {
   std::uint32_t wrapT = gpu::kWrapRepeat;
 };
 
+// A punctual light as a scene describes it (KHR_lights_punctual, or the headlight); the device sees it as one
+// gpu::LightRecord among all the lights (engine/render/light_records.h).
+struct PunctualLight {
+  std::uint32_t type = gpu::kLightPoint;  // gpu::kLightPoint, kLightSpot, kLightDirectional or kLightHeadlight
+  glm::vec3 position{0.0f};   // point, spot; the headlight: its offset along the camera's right, up and forward
+  glm::vec3 intensity{0.0f};  // RGB radiant intensity in W/sr (point, spot, headlight) or irradiance in W/m^2
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // spot, directional: the direction light travels, unit length
+  float cosInner = -1.0f;     // spot: full intensity inside this cone
+  float cosOuter = -1.0f;     // spot: no light outside this cone
+};
+
 struct Light {
   std::string name;
-  gpu::LightRecord record;
+  PunctualLight record;
 };
 
 struct Scene {
@@ -87,8 +98,9 @@ gpu::MaterialRecord lambertMaterial(glm::vec3 rhoD, float delta = 0.0f);
 bool emits(const Scene& scene, std::uint32_t material);
 bool hasEmissiveGeometry(const Scene& scene);
 
-gpu::LightRecord pointLight(glm::vec3 position, glm::vec3 intensity);
-// "point", "spot", "directional" or "headlight": the names `raylab info`, Python and the docs use.
+PunctualLight pointLight(glm::vec3 position, glm::vec3 intensity);
+// The registered name of a light kind (shaders/lights/lights.cmake): "point", "spot", "directional", "headlight",
+// ...; the names `raylab info`, Python and the docs use.
 const char* lightTypeName(std::uint32_t type);
 
 std::uint64_t triangleCount(const Scene& scene);

@@ -50,7 +50,7 @@ bool drawEnvironment(Scene& scene) {
 }
 
 bool drawLight(Light& light, float dragSpeed) {
-  gpu::LightRecord& record = light.record;
+  PunctualLight& record = light.record;
   bool changed = false;
   if (record.type == gpu::kLightDirectional) {
     if (ImGui::DragFloat3("direction", &record.direction.x, 0.01f, -1.0f, 1.0f)) {

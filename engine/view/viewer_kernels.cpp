@@ -1,4 +1,4 @@
-// Kernel rebuilds: a material switched to a model, or a feature turned on, that the specialised kernel lacks
+// Kernel rebuilds: a material switched to a model, a light to a kind, or a feature turned on, that the specialised kernel lacks
 // starts a background build (kernel_build.h), which is installed when it lands.
 #include "view/viewer_state.h"
 
@@ -10,7 +10,7 @@ namespace raylab {
 
 bool covers(const KernelFeatures& kernel, const KernelFeatures& needed) {
   return (needed.models & ~kernel.models) == 0 && (needed.features & ~kernel.features) == 0 &&
-         needed.integrator == kernel.integrator;
+         (needed.lightKinds & ~kernel.lightKinds) == 0 && needed.integrator == kernel.integrator;
 }
 
 void installKernel(Viewer& v) {
@@ -43,6 +43,7 @@ void ensureKernel(Viewer& v) {
   KernelFeatures wanted = v.needed;
   wanted.models |= v.renderer.kernel.models;
   wanted.features |= v.renderer.kernel.features;
+  wanted.lightKinds |= v.renderer.kernel.lightKinds;
   v.build = startKernelBuild(v.instance, v.device, v.renderer, wanted);
   if (v.automation) installKernel(v);  // automation is deterministic: the frame waits for its kernel
 }

@@ -68,7 +68,7 @@ py::tuple tupleOf(glm::vec3 v) { return py::make_tuple(v.x, v.y, v.z); }
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 py::dict lightDict(const Light& light) {
-  const gpu::LightRecord& r = light.record;
+  const PunctualLight& r = light.record;
   py::dict d;
   d["name"] = light.name;
   d["type"] = lightTypeName(r.type);
@@ -93,7 +93,7 @@ void setLight(Scene& scene, const std::string& name, const std::optional<Vec3>& 
               const std::optional<std::pair<float, float>>& cone) {
   const std::optional<glm::vec3> intensity = vec(intensityIn), position = vec(positionIn), direction = vec(directionIn);
   Light& light = lightNamed(scene, name);
-  gpu::LightRecord record = light.record;
+  PunctualLight record = light.record;
   const std::string where = "light '" + name + "'";
   if (intensity) {
     try {

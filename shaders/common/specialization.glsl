@@ -10,9 +10,11 @@ layout(constant_id = kSpecFeatures) const uint kFeatures = kAllFeatures;
 layout(constant_id = kSpecGlassFresnel) const uint kGlassFresnel = kFresnelExact;
 layout(constant_id = kSpecIntegrator) const uint kIntegrator = kIntegratorSlides;
 layout(constant_id = kSpecSampling) const uint kSampling = kSamplingMis;
+layout(constant_id = kSpecLightKinds) const uint kLightKinds = kAllLightKinds;
 
 // After specialization these fold to constants and the driver removes the code they guard.
 bool modelEnabled(uint model) { return (kEnabledModels & (1u << model)) != 0u; }
 bool featureEnabled(uint feature) { return (kFeatures & feature) != 0u; }
+bool lightKindEnabled(uint kind) { return (kLightKinds & (1u << kind)) != 0u; }
 
 #endif

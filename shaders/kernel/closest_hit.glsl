@@ -2,11 +2,14 @@
 //   L_o = delta L_i(x, w_r) + (1 - delta) sum_k f_r(w_k, w_o) E_k,   E_k = V_k I_k cos(theta_k) / r_k^2.
 // The delta term continues the path along the mirror direction. Glass splits into Fresnel-weighted
 // reflection and refraction (the delta lobes of bsdfDeltaLobes, brdf/bsdf.glsl). The raygen loops over the
-// continuations; nothing recurses. The hit preparation it shares with the path integrator is kernel/hit_common.glsl.
+// continuations; nothing recurses. The hit preparation it shares with the path integrator is kernel/hit_common.glsl,
+// its lights those of kernel/next_event.glsl. Needs a traceVisibility (kernel/trace_query.glsl or
+// kernel/trace_pipeline.glsl, by backend).
 #ifndef RAYLAB_KERNEL_CLOSEST_HIT_GLSL
 #define RAYLAB_KERNEL_CLOSEST_HIT_GLSL
 
 #include "kernel/hit_common.glsl"
+#include "kernel/next_event.glsl"
 
 // Sets the payload's next segment; false when the path should stop there.
 bool continuePath(inout Payload p, vec3 origin, vec3 direction, vec3 throughput) {

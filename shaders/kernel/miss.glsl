@@ -1,21 +1,23 @@
 // miss: the path leaves the scene and sees the environment (kernel/environment.glsl). In the path integrator
-// an environment image is also sampled by next event estimation, so what a BSDF-sampled continuation sees of
-// it is weighted against that (powerHeuristic); the uniform background is left to BSDF sampling alone, which
+// an environment image is also a light for next event estimation (lights/environment.glsl), so what a
+// BSDF-sampled continuation sees of it is weighted against that (misWeight); the uniform background is left to BSDF sampling alone, which
 // for constant radiance is the better strategy.
 #ifndef RAYLAB_KERNEL_MISS_GLSL
 #define RAYLAB_KERNEL_MISS_GLSL
 
 #include "kernel/environment.glsl"
+#include "kernel/light_sampling.glsl"
 #include "kernel/mis.glsl"
 #include "kernel/payload.glsl"
 
 // The weight of environment light that a continuation reached, against next event estimation of it.
 float environmentWeight(Payload p) {
-  if (kIntegrator != kIntegratorPath || p.path.lastSpecular != 0u || kSampling == kSamplingBsdf || !environmentSamplable()) {
+  if (kIntegrator != kIntegratorPath || p.path.lastSpecular != 0u || !hasEnvironmentImage() ||
+      environment.light == kNoLight) {
     return 1.0;
   }
-  if (kSampling == kSamplingLight) return 0.0;
-  return powerHeuristic(p.path.lastPdf, environmentPdf(p.path.direction));
+  const float lightPdfHere = lightPdf(environment.light, p.path.lastPosition, p.path.direction, vec3(0.0));
+  return misWeight(kSamplingBsdf, p.path.lastPdf, lightPdfHere);
 }
 
 void miss(inout Payload p) {

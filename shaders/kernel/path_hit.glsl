@@ -1,24 +1,21 @@
 // closestHit of the path integrator: one vertex of a path tracer that solves the rendering equation
 // (Kajiya 1986, equation 1 of the slides):
 //   L_o(x, wo) = L_e(x, wo) + integral f(wi, wo) L_i(x, wi) cos(theta_i) dwi.
-// At each vertex: the emission seen along the path, next event estimation of the punctual lights (delta
-// lights, so no MIS is needed for them), of the emitting triangles and spheres (sampleEmitterLight) and of the
-// environment image (sampleEnvironmentLight), then one continuation chosen by the BSDF's own sampler
-// (bsdfSample), with the mirror weight delta as a mixture f = (1 - delta) f_r + delta mirror; a specular-only
-// BSDF (glass, by its lobe flags) continues along one delta lobe (bsdfSampleSpecular). Emitters and the
-// environment image reached by a continuation are weighted against their light samples by multiple importance
-// sampling with the power heuristic (Veach 1997); kSampling selects one strategy alone for studies. The uniform
-// background is left to BSDF sampling. Russian roulette after kRouletteDepth bounces keeps the estimator
-// unbiased (docs/integrators.md).
+// At each vertex: the emission seen along the path, next event estimation (kernel/next_event.glsl) of every
+// punctual light (directLighting) and of one emitting triangle, sphere or the environment image drawn by power
+// (sampleOneLight), then one continuation chosen by the BSDF's own sampler (bsdfSample), with the
+// mirror weight delta as a mixture f = (1 - delta) f_r + delta mirror; a specular-only BSDF (glass, by its lobe
+// flags) continues along one delta lobe (bsdfSampleSpecular). Light samples and emission reached by a
+// continuation are weighted against each other by misWeight (kernel/mis.glsl: the power heuristic, Veach 1997,
+// or one strategy alone for studies); delta lights are light-sampled only. The uniform background is left to
+// BSDF sampling. Russian roulette after kRouletteDepth bounces keeps the estimator unbiased (docs/integrators.md).
 // Depth: --max-depth D allows D + 1 continuations after the camera ray, so a path has at most D + 2 segments
 // (Mitsuba 3's max_depth = D + 2); D = 0 is direct lighting only.
 #ifndef RAYLAB_KERNEL_PATH_HIT_GLSL
 #define RAYLAB_KERNEL_PATH_HIT_GLSL
 
 #include "kernel/hit_common.glsl"
-#include "kernel/emitters.glsl"
-#include "kernel/environment.glsl"
-#include "kernel/mis.glsl"
+#include "kernel/next_event.glsl"
 
 // Bounces before Russian roulette may end a path; after them a path survives with probability equal to its
 // largest throughput channel (at most kRouletteMax), and survivors are weighted up by its inverse.
@@ -27,44 +24,10 @@ const float kRouletteMax = 0.95;
 
 // The weight of emission that a continuation reached, against next event estimation of the same point.
 float emissionWeight(Hit hit, Surface s, Payload p) {
-  if (p.path.lastSpecular != 0u || kSampling == kSamplingBsdf || params.emitterCount == 0u) return 1.0;
-  if (kSampling == kSamplingLight) return 0.0;
-  const uint first = instances[hit.instance].firstEmitter;
-  if (first == kNoEmitter) return 1.0;
-  const float lightPdf = emitterPdf(first + hit.primitive, p.path.lastPosition, s.position, s.geometricNormal);
-  return powerHeuristic(p.path.lastPdf, lightPdf);
-}
-
-// What one light sample (direction wi, radiance arriving along it, solid-angle pdf, free distance) brings through
-// the (1 - delta) f_r part of the BSDF, MIS-weighted against sampling that part, if nothing blocks it.
-vec3 lightSampleContribution(vec3 wi, vec3 radiance, float pdf, float distance, Surface s, vec3 ng, ShadingFrame frame,
-                             vec3 woLocal, MaterialRecord material, float delta, inout Payload p) {
-  if (!(pdf > 0.0) || !(dot(wi, ng) > 0.0)) return vec3(0.0);
-  const vec3 wiLocal = toLocal(frame, wi);
-  const vec3 f = (1.0 - delta) * bsdfEval(material, wiLocal, woLocal);
-  const vec3 contribution = f * radiance * (max(wiLocal.z, 0.0) / pdf);
-  if (!(maxComponent(contribution) > 0.0)) return vec3(0.0);
-  const float weight =
-      kSampling == kSamplingMis ? powerHeuristic(pdf, (1.0 - delta) * bsdfPdf(material, wiLocal, woLocal)) : 1.0;
-  p.path.shadowRays += 1u;
-  if (!traceVisibility(offsetRayOrigin(s.position, ng), wi, distance)) return vec3(0.0);
-  return weight * contribution;
-}
-
-// Next event estimation of one emitter point.
-vec3 sampleEmitterLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material, float delta,
-                        inout Payload p) {
-  const EmitterSample e = sampleEmitter(s.position, rngNext4(p.path.rng).xyz);
-  // The shadow ray stops short of the emitter, which is scene geometry too.
-  return lightSampleContribution(e.wi, e.radiance, e.pdf, e.distance * (1.0 - 1e-4), s, ng, frame, woLocal, material,
-                                 delta, p);
-}
-
-// Next event estimation of the environment image.
-vec3 sampleEnvironmentLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material,
-                            float delta, inout Payload p) {
-  const EnvironmentSample e = sampleEnvironment(rngNext4(p.path.rng).xy);
-  return lightSampleContribution(e.wi, e.radiance, e.pdf, kRayTMax, s, ng, frame, woLocal, material, delta, p);
+  const uint first = instances[hit.instance].firstLight;
+  if (p.path.lastSpecular != 0u || first == kNoLight) return 1.0;
+  const float lightPdfHere = lightPdf(first + hit.primitive, p.path.lastPosition, p.path.direction, s.position);
+  return misWeight(kSamplingBsdf, p.path.lastPdf, lightPdfHere);
 }
 
 // Sets up the continuation (origin, direction, weight) or ends the path; applies Russian roulette.
@@ -124,15 +87,12 @@ void closestHitPath(Hit hit, inout Payload p) {
   const vec3 woLocal = toLocal(frame, wo);
   const float delta = featureEnabled(kFeatureMirror) ? material.delta : 0.0;
 
-  // Next event estimation of the punctual lights: the (1 - delta) f_r part of the mixture sees them.
-  if (delta < 1.0 && params.lightCount > 0u) {
+  // Next event estimation: the (1 - delta) f_r part of the mixture sees the lights.
+  if (delta < 1.0 && params.punctualLightCount > 0u) {
     p.path.radiance += p.path.throughput * (1.0 - delta) * directLighting(s.position, ng, frame, woLocal, material, p);
   }
-  if (kSampling != kSamplingBsdf && delta < 1.0 && params.emitterCount > 0u) {
-    p.path.radiance += p.path.throughput * sampleEmitterLight(s, ng, frame, woLocal, material, delta, p);
-  }
-  if (kSampling != kSamplingBsdf && delta < 1.0 && environmentSamplable()) {
-    p.path.radiance += p.path.throughput * sampleEnvironmentLight(s, ng, frame, woLocal, material, delta, p);
+  if (kSampling != kSamplingBsdf && delta < 1.0 && params.lightCount > params.punctualLightCount) {
+    p.path.radiance += p.path.throughput * sampleOneLight(s, ng, frame, woLocal, material, delta, p);
   }
   p.path.lastPosition = s.position;
 

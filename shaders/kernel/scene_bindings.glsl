@@ -16,7 +16,6 @@ layout(set = 0, binding = kBindingMaterials, scalar) readonly buffer MaterialBuf
 layout(set = 0, binding = kBindingLights, scalar) readonly buffer LightBuffer { LightRecord lights[]; };
 layout(set = 0, binding = kBindingTextures, scalar) readonly buffer TextureBuffer { TextureRecord textures[]; };
 layout(set = 0, binding = kBindingTexels, scalar) readonly buffer TexelBuffer { uint texels[]; };
-layout(set = 0, binding = kBindingEmitters, scalar) readonly buffer EmitterBuffer { EmitterRecord emitters[]; };
 layout(set = 0, binding = kBindingEnvironment, scalar) readonly buffer EnvironmentBuffer {
   EnvironmentHeader environment;
   float environmentData[];

@@ -15,10 +15,9 @@ RL_CONST uint kBindingUvs = 4;        // vec2[] TEXCOORD_0 (same indexing as pos
 RL_CONST uint kBindingIndices = 5;    // uint[] triangle indices, relative to InstanceRecord.firstVertex
 RL_CONST uint kBindingSpheres = 6;    // SphereRecord[]
 RL_CONST uint kBindingMaterials = 7;  // MaterialRecord[]
-RL_CONST uint kBindingLights = 8;     // LightRecord[]
+RL_CONST uint kBindingLights = 8;     // LightRecord[]: every light, with the light-selection cdf
 RL_CONST uint kBindingTextures = 13;  // TextureRecord[]
 RL_CONST uint kBindingTexels = 14;    // uint[] RGBA8 sRGB texels of every texture, concatenated
-RL_CONST uint kBindingEmitters = 17;  // EmitterRecord[]: emissive triangles and spheres, with their sampling CDF
 RL_CONST uint kBindingEnvironment = 18;  // EnvironmentHeader, then the image and its sampling tables
 
 // Per-kernel outputs.

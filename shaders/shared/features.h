@@ -13,16 +13,13 @@ RL_CONST uint kSpecFeatures = 1;       // kFeature... bits
 RL_CONST uint kSpecGlassFresnel = 2;   // kFresnel...: which Fresnel term glass uses
 RL_CONST uint kSpecIntegrator = 3;     // kIntegrator...: which estimator the raygen runs
 RL_CONST uint kSpecSampling = 4;       // kSampling...: how the path integrator estimates emitted light
+RL_CONST uint kSpecLightKinds = 5;     // bit (1 << kLight...) per kind of light compiled in (generated/light_kinds.h)
 
 // kSpecFeatures bits.
 RL_CONST uint kFeatureDeltaBsdf = 1;         // delta BSDFs (glass): reflection and refraction along delta lobes
 RL_CONST uint kFeatureMirror = 2;            // some delta > 0: the mirror-reflection loop
-RL_CONST uint kFeaturePointLights = 4;
-RL_CONST uint kFeatureSpotLights = 8;
-RL_CONST uint kFeatureDirectionalLights = 16;
 RL_CONST uint kFeatureTextures = 32;         // base-colour textures
 RL_CONST uint kFeatureEnvironment = 64;      // an environment image (else the background is uniform)
-RL_CONST uint kFeatureHeadlight = 128;       // a point light that moves with the camera (the default light)
 
 // kSpecGlassFresnel values. Exact is the contract's; Schlick trades accuracy for speed (docs/performance.md).
 RL_CONST uint kFresnelExact = 0;
@@ -32,14 +29,15 @@ RL_CONST uint kFresnelSchlick = 1;
 RL_CONST uint kIntegratorSlides = 0;  // equation 2 of the slides: delta-weighted mirror plus direct light
 RL_CONST uint kIntegratorPath = 1;    // the rendering equation: a path tracer
 
-// kSpecSampling values: multiple importance sampling of emitters by light and BSDF sampling (the default), or
-// one strategy alone, for studies. All three converge to the same image.
+// kSpecSampling values: multiple importance sampling of lights by light and BSDF sampling (the default), or
+// one strategy alone, for studies. All three converge to the same image. A delta light is always light-sampled.
 RL_CONST uint kSamplingMis = 0;
 RL_CONST uint kSamplingBsdf = 1;
 RL_CONST uint kSamplingLight = 2;
 
 RL_CONST uint kAllModels = 0xFFFFFFFFu;
 RL_CONST uint kAllFeatures = 0xFFFFFFFFu;
+RL_CONST uint kAllLightKinds = 0xFFFFFFFFu;
 
 RL_NAMESPACE_END
 

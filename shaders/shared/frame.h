@@ -26,12 +26,12 @@ struct FrameParams {
   uint sampleIndex;  // the first sample of every pixel this dispatch adds; keys the RNG
   vec3 background;   // radiance of rays that miss everything
   uint maxDepth;     // bounces after the primary hit
-  uint lightCount;
+  uint lightCount;  // LightRecords: the light-selection distribution's support
   uint flags;
   float throughputCutoff;  // a path whose throughput drops below this stops
   uvec2 tileOrigin;  // first pixel of this dispatch; tiles are multiples of the 8x8 workgroup
   uint sampleCount;  // samples sampleIndex, sampleIndex + 1, ... this dispatch adds to each pixel
-  uint emitterCount; // EmitterRecords the path integrator samples
+  uint punctualLightCount;  // the first LightRecords: the delta lights the slides' integrator sums
   float environmentStrength;  // multiplies the environment image
   float environmentRotation;  // radians about +Y: the image turned counter-clockwise seen from above
 };

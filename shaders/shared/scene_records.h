@@ -3,6 +3,7 @@
 #define RAYLAB_SHARED_SCENE_RECORDS_H
 
 #include "compat.h"
+#include "generated/light_kinds.h"
 
 RL_NAMESPACE_BEGIN
 
@@ -22,29 +23,11 @@ struct InstanceRecord {
   uint firstVertex;  // triangles: added to every index of this mesh
   uint firstSphere;  // spheres: record of primitive 0
   uint vertexFlags;
-  uint firstEmitter;  // EmitterRecord of primitive 0 when the instance emits, else kNoEmitter
+  uint firstLight;  // LightRecord of primitive 0 when the instance emits, else kNoLight
 };
 RL_CHECK_SIZE(InstanceRecord, 28);
 
-RL_CONST uint kNoEmitter = 0xFFFFFFFFu;
-
-// EmitterRecord.kind
-RL_CONST uint kEmitterTriangle = 0;
-RL_CONST uint kEmitterSphere = 1;
-
-// One emitting primitive in world space, for next event estimation: emitters are picked in proportion to
-// their power (luminance of L_e times area) by the inclusive `cdf`; `pmf` is the probability of this one.
-struct EmitterRecord {
-  vec3 p0;        // triangle: first vertex (counter-clockwise front); sphere: centre
-  uint kind;
-  vec3 p1;        // triangle: second vertex; sphere: (radius, 0, 0)
-  float pmf;
-  vec3 p2;        // triangle: third vertex
-  float cdf;
-  vec3 radiance;  // L_e
-  float area;
-};
-RL_CHECK_SIZE(EmitterRecord, 64);
+RL_CONST uint kNoLight = 0xFFFFFFFFu;
 
 // The environment image (binding kBindingEnvironment): this header, then `data`, floats in four arrays of the
 // image's texels, rows from the top: linear RGB (3 per texel), then the sampling density f (luminance times
@@ -55,7 +38,7 @@ struct EnvironmentHeader {
   uint width;   // 0: no image (the scene's uniform background)
   uint height;
   float fMean;  // mean of f over the texels; 0: nothing to sample
-  uint reserved;
+  uint light;   // the LightRecord that samples the image, or kNoLight
 };
 RL_CHECK_SIZE(EnvironmentHeader, 16);
 
@@ -97,23 +80,21 @@ struct TextureRecord {
 };
 RL_CHECK_SIZE(TextureRecord, 16);
 
-// LightRecord.type
-RL_CONST uint kLightPoint = 0;
-RL_CONST uint kLightSpot = 1;
-RL_CONST uint kLightDirectional = 2;
-// A point light carried with the camera: `position` is its offset along the camera's right, up and forward axes
-// (world units), so it lights whatever the camera sees. Files without lights get one (docs/scenes.md).
-RL_CONST uint kLightHeadlight = 3;
-
+// One light for next event estimation, of any kind (generated/light_kinds.h, from shaders/lights/lights.cmake):
+// punctual lights, emitting triangles and spheres in world space, the environment. What p0, p1, p2 and radiance
+// hold is each kind's (its file in shaders/lights/ says). Lights are picked in proportion to their power by the
+// inclusive `cdf` (the light-selection distribution, engine/render/light_records.cpp); `pmf` is this one's.
 struct LightRecord {
-  vec3 position;
-  uint type;
-  vec3 intensity;   // RGB radiant intensity in W/sr (point, spot) or irradiance in W/m^2 (directional)
-  float cosInner;   // spot: full intensity inside this cone
-  vec3 direction;   // spot, directional: the direction light travels, unit length
-  float cosOuter;   // spot: no light outside this cone
+  vec3 p0;
+  uint kind;
+  vec3 p1;
+  float pmf;
+  vec3 p2;
+  float cdf;
+  vec3 radiance;  // L_e, or a punctual light's intensity (W/sr) or irradiance (W/m^2)
+  float area;     // emitting surfaces: their area
 };
-RL_CHECK_SIZE(LightRecord, 48);
+RL_CHECK_SIZE(LightRecord, 64);
 
 RL_NAMESPACE_END
 

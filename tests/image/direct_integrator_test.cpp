@@ -139,7 +139,7 @@ TEST_F(DirectIntegratorTest, SpotLightConeEdgeFollowsTheDocumentedFalloff) {
   scene.materials.push_back({"floor", lambertMaterial(glm::vec3(0.5f))});
   scene.meshes.push_back(makeGroundPlane(20.0f, 0.0f));
   scene.instances.push_back({0, glm::mat4(1.0f), 0});
-  gpu::LightRecord spot = pointLight({0.0f, float(height), 0.0f}, glm::vec3(40.0f));
+  PunctualLight spot = pointLight({0.0f, float(height), 0.0f}, glm::vec3(40.0f));
   spot.type = gpu::kLightSpot;
   spot.direction = {0.0f, -1.0f, 0.0f};
   spot.cosInner = float(std::cos(inner));

@@ -121,7 +121,7 @@ TEST(GltfEnvironment, BadEnvironmentsAreRefusedNamingTheFieldOrFile) {
   EXPECT_NE(errorOf([&] { loadGltfFile(plain.string(), negative); }).find("--env-strength"), std::string::npos);
 }
 
-// The density of sampleEnvironment, integrated over the sphere by the midpoint rule on a fine (u, v) grid, is 1;
+// The density of environmentLightSample, integrated over the sphere by the midpoint rule on a fine (u, v) grid, is 1;
 // and it is positive wherever the bilinear radiance is, so light sampling alone misses nothing.
 TEST(EnvironmentTables, TheSamplingDensityIntegratesToOneAndCoversEveryLitDirection) {
   Environment environment;

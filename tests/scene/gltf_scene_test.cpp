@@ -160,7 +160,7 @@ TEST(GltfScene, WithoutLightsADefaultLightIsAddedWithOneWarning) {
   const Scene scene = b.load();
   ASSERT_EQ(scene.lights.size(), 1u);
   EXPECT_EQ(warnings.count("has no KHR_lights_punctual lights; added a default headlight"), 1);
-  const gpu::LightRecord& light = scene.lights[0].record;
+  const PunctualLight& light = scene.lights[0].record;
   // A headlight: its position is an offset along the camera's right, up and forward axes (above and left).
   EXPECT_EQ(light.type, gpu::kLightHeadlight);
   EXPECT_LT(light.position.x, 0.0f);
@@ -198,20 +198,20 @@ TEST(GltfScene, PunctualLightsTakeTheirNodesPositionAndMinusZ) {
   ASSERT_EQ(scene.lights.size(), 3u);
   EXPECT_TRUE(warnings.messages().empty()) << warnings.messages()[0];
 
-  const gpu::LightRecord& p = scene.lights[0].record;
+  const PunctualLight& p = scene.lights[0].record;
   EXPECT_EQ(scene.lights[0].name, "bulb");
   EXPECT_EQ(p.type, gpu::kLightPoint);
   expectNear(p.position, {1, 2, 3}, "point position");
   expectNear(p.intensity, {40, 20, 10}, "point intensity times colour (W/sr); range ignored");
 
-  const gpu::LightRecord& s = scene.lights[1].record;
+  const PunctualLight& s = scene.lights[1].record;
   EXPECT_EQ(s.type, gpu::kLightSpot);
   expectNear(s.position, {0, 5, 0}, "spot position under its parent");
   expectNear(s.direction, {0, -1, 0}, "spot direction");
   EXPECT_NEAR(s.cosInner, std::cos(0.2f), 1e-6f);
   EXPECT_NEAR(s.cosOuter, std::cos(0.5f), 1e-6f);
 
-  const gpu::LightRecord& d = scene.lights[2].record;
+  const PunctualLight& d = scene.lights[2].record;
   EXPECT_EQ(d.type, gpu::kLightDirectional);
   expectNear(d.direction, {-1, 0, 0}, "directional direction");
   expectNear(d.intensity, {2, 2, 1.8f}, "irradiance times colour (W/m^2)");

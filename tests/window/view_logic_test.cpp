@@ -247,10 +247,10 @@ TEST(ScriptTest, ErrorsNameTheFileAndLine) {
 // light has no such property.
 TEST(ScriptTest, LightDirectionAndConeChangeSpotAndDirectionalLights) {
   Scene scene;
-  gpu::LightRecord spot{};
+  PunctualLight spot{};
   spot.type = gpu::kLightSpot;
   spot.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-  gpu::LightRecord point{};
+  PunctualLight point{};
   point.type = gpu::kLightPoint;
   scene.lights = {{"spot", spot}, {"bulb", point}};
   const std::vector<ScriptEvent> events = parseScript(

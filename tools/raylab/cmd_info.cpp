@@ -48,7 +48,7 @@ int info(const SceneRequest& request) {
   }
   std::printf("lights (%zu):\n", scene.lights.size());
   for (const Light& light : scene.lights) {
-    const gpu::LightRecord& r = light.record;
+    const PunctualLight& r = light.record;
     std::printf("  '%s': %s", light.name.c_str(), lightTypeName(r.type));
     if (r.type == gpu::kLightHeadlight) {
       std::printf(" carried with the camera, offset %s (right, up, forward)", formatVector(r.position).c_str());

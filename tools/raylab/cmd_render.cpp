@@ -87,7 +87,7 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
       {"driver", device.report.driver},
       {"triangles", gpuScene.triangleCount},
       {"spheres", gpuScene.sphereCount},
-      {"lights", gpuScene.lightCount},
+      {"lights", gpuScene.punctualLightCount},
       {"acceleration_build_s", r.accelerationSeconds},
       {"first_sample_s", r.firstSampleSeconds},
       {"steady_samples", o.spp - 1},
@@ -227,7 +227,8 @@ void render(RenderOptions o) {
     std::printf("scene: %s, %ux%u, %u spp, %llu triangles, %u sphere%s, %u light%s\n", scene.name.c_str(),
                 o.settings.width, o.settings.height, o.spp,
                 static_cast<unsigned long long>(gpuScene.triangleCount), gpuScene.sphereCount,
-                gpuScene.sphereCount == 1 ? "" : "s", gpuScene.lightCount, gpuScene.lightCount == 1 ? "" : "s");
+                gpuScene.sphereCount == 1 ? "" : "s", gpuScene.punctualLightCount,
+                gpuScene.punctualLightCount == 1 ? "" : "s");
     std::printf("acceleration structures: %s\n", formatSeconds(gpuScene.accelerationBuildSeconds).c_str());
     if (o.stats) {
       std::printf("kernel: %s\n", describe(renderer.kernel).c_str());

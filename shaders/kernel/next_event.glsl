@@ -1,0 +1,60 @@
+// Next event estimation, both integrators' (docs/integrators.md, "Lights"): every light is a LightRecord of
+// one family (kernel/light_sampling.glsl, shaders/lights/). The light-selection distribution takes every delta
+// light with probability 1, as the slides' equation sums them (directLighting), and one of the other lights by
+// power (sampleOneLight, the path integrator's). Needs a traceVisibility (kernel/trace_query.glsl or
+// kernel/trace_pipeline.glsl, by backend).
+#ifndef RAYLAB_KERNEL_NEXT_EVENT_GLSL
+#define RAYLAB_KERNEL_NEXT_EVENT_GLSL
+
+#include "brdf/bsdf.glsl"
+#include "common/ray_offset.glsl"
+#include "kernel/light_sampling.glsl"
+#include "kernel/mis.glsl"
+#include "kernel/surface.glsl"
+
+// sum_k f_r(w_k, w_o) E_k over the delta lights (the first params.punctualLightCount LightRecords, each selected
+// with probability 1; sampleLight gives their irradiance E_k with density 1), a shadow ray each: equation 2 of
+// the slides, and the path integrator's estimate of the same lights. ng faces the viewer's side.
+vec3 directLighting(vec3 position, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material,
+                    inout Payload p) {
+  vec3 sum = vec3(0.0);
+  const vec3 shadowOrigin = offsetRayOrigin(position, ng);
+  for (uint k = 0u; k < params.punctualLightCount; ++k) {
+    const LightSample light = sampleLight(k, position, vec3(0.5));
+    // Light below the geometric surface cannot reach this side, whatever the shading normal says.
+    if (dot(light.wi, ng) <= 0.0) continue;
+    const vec3 wiLocal = toLocal(frame, light.wi);
+    const vec3 contribution = bsdfEval(material, wiLocal, woLocal) * light.radiance * wiLocal.z;
+    // Only light that would contribute is worth a shadow ray.
+    if (!(maxComponent(contribution) > 0.0)) continue;
+    p.path.shadowRays += 1u;
+    if (traceVisibility(shadowOrigin, light.wi, light.distance)) sum += contribution;
+  }
+  return sum;
+}
+
+// The path integrator's estimate of the lights that are not delta lights: one drawn from the light-selection
+// distribution (selectLight), one direction towards it, and what it brings through the (1 - delta) f_r part of
+// the BSDF if nothing blocks it, weighted against BSDF sampling by misWeight. Draws its random numbers whatever
+// happens next, so that the vertex's later dimensions mean the same in every sample of a scene.
+vec3 sampleOneLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material, float delta,
+                    inout Payload p) {
+  const vec4 u = rngNext4(p.path.rng);
+  const LightChoice choice = selectLight(u.x);
+  if (!(choice.pmf > 0.0)) return vec3(0.0);
+  const LightSample light = sampleLight(choice.index, s.position, u.yzw);
+  if (!(light.pdf > 0.0) || !(dot(light.wi, ng) > 0.0)) return vec3(0.0);
+  const vec3 wiLocal = toLocal(frame, light.wi);
+  const float pdf = choice.pmf * light.pdf;
+  const float weight =
+      misWeight(kSamplingLight, pdf, light.delta ? 0.0 : (1.0 - delta) * bsdfPdf(material, wiLocal, woLocal));
+  if (!(weight > 0.0)) return vec3(0.0);
+  const vec3 f = (1.0 - delta) * bsdfEval(material, wiLocal, woLocal);
+  const vec3 contribution = f * light.radiance * (max(wiLocal.z, 0.0) / pdf);
+  if (!(maxComponent(contribution) > 0.0)) return vec3(0.0);
+  p.path.shadowRays += 1u;
+  if (!traceVisibility(offsetRayOrigin(s.position, ng), light.wi, light.distance)) return vec3(0.0);
+  return weight * contribution;
+}
+
+#endif
