@@ -13,3 +13,5 @@ raylab_brdf_model(ward_gmd PREFIX wardGmd GLSL brdf/ward_gmd.glsl REFERENCE ${re
 raylab_brdf_model(ashikhmin_shirley PREFIX ashikhminShirley GLSL brdf/ashikhmin_shirley.glsl
                   REFERENCE ${reference}/ashikhmin_shirley.cpp)
 raylab_brdf_model(glass PREFIX glass GLSL brdf/glass.glsl REFERENCE ${reference}/glass.cpp)
+raylab_brdf_model(oren_nayar PREFIX orenNayar GLSL brdf/oren_nayar.glsl REFERENCE ${reference}/oren_nayar.cpp)
+raylab_brdf_model(eon PREFIX eon GLSL brdf/eon.glsl REFERENCE ${reference}/eon.cpp)
