@@ -15,3 +15,5 @@ raylab_brdf_model(ashikhmin_shirley PREFIX ashikhminShirley GLSL brdf/ashikhmin_
 raylab_brdf_model(glass PREFIX glass GLSL brdf/glass.glsl REFERENCE ${reference}/glass.cpp)
 raylab_brdf_model(oren_nayar PREFIX orenNayar GLSL brdf/oren_nayar.glsl REFERENCE ${reference}/oren_nayar.cpp)
 raylab_brdf_model(eon PREFIX eon GLSL brdf/eon.glsl REFERENCE ${reference}/eon.cpp)
+raylab_brdf_model(gltf_pbr PREFIX gltfPbr GLSL brdf/gltf_pbr.glsl REFERENCE ${reference}/gltf_pbr.cpp)
+raylab_brdf_model(ggx_conductor PREFIX ggxConductor GLSL brdf/ggx_conductor.glsl REFERENCE ${reference}/ggx_conductor.cpp)

@@ -50,6 +50,12 @@ std::vector<SamplingCase> samplingCases() {
       {"ward_gmd", {{"rho_d", 0.4}, {"rho_s", 0.6}, {"alpha_x", 0.1}, {"alpha_y", 0.4}}},
       {"ashikhmin_shirley", {{"Rd", 0.4}, {"Rs", 0.6}, {"nu", 20}, {"nv", 200}}},
       {"ashikhmin_shirley", {{"Rd", 0}, {"Rs", 1}, {"nu", 100}, {"nv", 100}}},
+      {"oren_nayar", {{"rho_d", 0.8}, {"sigma", 1.0}}},
+      {"eon", {{"rho_d", 0.8}, {"r", 1.0}}},
+      {"gltf_pbr", {{"base_color", 0.6}, {"metallic", 0}, {"roughness", 0.5}, {"ior", 1.5}}},
+      {"gltf_pbr", {{"base_color", 0.9}, {"metallic", 1}, {"roughness", 0.3}}},
+      {"ggx_conductor", {{"alpha_x", 0.3}, {"alpha_y", 0.3}}},
+      {"ggx_conductor", {{"alpha_x", 0.1}, {"alpha_y", 0.5}, {"eta", 1.5}, {"k", 0}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;

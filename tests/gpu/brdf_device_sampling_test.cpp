@@ -8,6 +8,7 @@
 // Regenerate the p-values: ctest --test-dir build/release -R brdf_device_sampling -V
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <cstdio>
@@ -57,6 +58,12 @@ std::vector<SamplingCase> samplingCases() {
       {"ward_gmd", {{"rho_d", 0.4f}, {"rho_s", 0.6f}, {"alpha_x", 0.4f}, {"alpha_y", 0.1f}}},
       {"ashikhmin_shirley", {{"Rd", 0.4f}, {"Rs", 0.6f}, {"nu", 20.0f}, {"nv", 200.0f}}},
       {"ashikhmin_shirley", {{"Rd", 0.0f}, {"Rs", 1.0f}, {"nu", 100.0f}, {"nv", 100.0f}}},
+      {"oren_nayar", {{"rho_d", 0.8f}, {"sigma", 1.0f}}},
+      {"eon", {{"rho_d", 0.8f}, {"r", 1.0f}}},
+      {"gltf_pbr", {{"base_color", 0.6f}, {"metallic", 0.0f}, {"roughness", 0.5f}, {"ior", 1.5f}}},
+      {"gltf_pbr", {{"base_color", 0.9f}, {"metallic", 1.0f}, {"roughness", 0.3f}}},
+      {"ggx_conductor", {{"alpha_x", 0.3f}, {"alpha_y", 0.3f}}},
+      {"ggx_conductor", {{"alpha_x", 0.1f}, {"alpha_y", 0.5f}, {"eta", 1.5f}, {"k", 0.0f}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;
@@ -206,7 +213,9 @@ TEST_F(BrdfDeviceSamplingRobustness, DegenerateInputsGiveFiniteSamplesOrNone) {
       {},  // the defaults (and the only set for lambert and glass)
       {{"s", 1.0f}}, {{"s", 10000.0f}}, {{"m", 0.001f}}, {{"m", 1.0f}, {"eta", 10.0f}},
       {{"alpha_x", 0.001f}, {"alpha_y", 1.0f}}, {{"alpha_x", 0.001f}, {"alpha_y", 0.001f}}, {{"alpha_x", 1.0f}, {"alpha_y", 1.0f}},
-      {{"nu", 1.0f}, {"nv", 10000.0f}}, {{"nu", 10000.0f}, {"nv", 10000.0f}}, {{"nu", 1.0f}, {"nv", 1.0f}}};
+      {{"nu", 1.0f}, {"nv", 10000.0f}}, {{"nu", 10000.0f}, {"nv", 10000.0f}}, {{"nu", 1.0f}, {"nv", 1.0f}},
+      {{"sigma", 1.5f}}, {{"r", 1.0f}}, {{"roughness", 0.0f}, {"metallic", 1.0f}}, {{"roughness", 1.0f}, {"ior", 1.0f}},
+      {{"alpha_x", 0.001f}, {"alpha_y", 0.001f}, {"eta", 0.01f}, {"k", 20.0f}}};
   const float last = 1.0f - 0x1p-24f;
   std::vector<vec3> u;
   for (float x : {0.0f, 0.5f, last}) {
@@ -228,9 +237,13 @@ TEST_F(BrdfDeviceSamplingRobustness, DegenerateInputsGiveFiniteSamplesOrNone) {
         for (const Param& p : scalars) applies = applies && findParam(model, p.name) != nullptr;
         if (!applies) continue;
         for (const Param& p : scalars) setParam(record, p.name, glm::vec3(p.value), std::string(model.name));
-        // The diffuse colour d, the model's other colours (a specular lobe's weight or F0) sp.
+        // The diffuse colour d, the model's other colours (a specular lobe's weight or F0, an index) sp, within
+        // their ranges.
         for (const ParamInfo& p : model.params) {
-          if (p.rgb && !isDeltaOnly(model)) setParam(record, p.name, glm::vec3(p.role == "diffuse" ? d : sp), "test");
+          if (p.rgb && !isDeltaOnly(model) && findParam(model, p.name) != nullptr &&
+              std::none_of(scalars.begin(), scalars.end(), [&](const Param& s) { return p.name == s.name; })) {
+            setParam(record, p.name, glm::vec3(std::clamp(p.role == "diffuse" ? d : sp, p.min, p.max)), "test");
+          }
         }
         for (const vec3& wo : wos) {
           const std::vector<gpu::BrdfSampleValue> samples = drawBrdfSamples(device(), sampler, record, wo, u);
