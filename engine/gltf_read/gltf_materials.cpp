@@ -13,6 +13,7 @@
 #include "gltf_read/gltf_files.h"
 #include "scene/radiance_limits.h"
 #include "util/error.h"
+#include "util/log.h"
 
 namespace raylab::gltf {
 
@@ -22,17 +23,6 @@ using nlohmann::json;
 
 constexpr float kMaxEta = 10.0f;  // the contract's range of eta, [1, 10]
 constexpr glm::vec3 kDefaultGrey{0.8f};
-
-float schlickF0(float eta) {
-  const float r = (eta - 1.0f) / (eta + 1.0f);
-  return r * r;
-}
-
-// The eta whose Schlick F0 is `f0` (the inverse of schlickF0 on [1, inf)).
-float etaFromF0(float f0) {
-  const float s = std::sqrt(std::clamp(f0, 0.0f, 0.999f));
-  return (1.0f + s) / (1.0f - s);
-}
 
 // A glTF factor must lie in [low, high]; the error names the material and the property.
 float checkedFactor(double value, double low, double high, const std::string& where, const std::string& property) {
@@ -183,21 +173,19 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
     setParam(record, "tint", input.baseColor, where + " (base colour as glass tint)");
     return record;
   }
-  gpu::MaterialRecord record = defaultRecord(modelId("cooktorrance"));
-  // glTF's specular reflectance at normal incidence: F0 of the ior for dielectrics, the base colour for metals.
-  const glm::vec3 f0 = glm::mix(glm::vec3(schlickF0(input.ior)), input.baseColor, input.metallic);
-  const float f0Max = std::max({f0.r, f0.g, f0.b});
-  // One scalar eta carries the largest channel; rho_s scales the others down. F0 above F0(10) = 0.67 cannot
-  // be reached: such metals keep their hue but lose up to a third of their reflectance.
-  const float eta = std::clamp(etaFromF0(std::min(f0Max, schlickF0(kMaxEta))), 1.0f, kMaxEta);
-  const float f0Eta = schlickF0(eta);
-  const glm::vec3 rhoS = f0Eta > 0.0f ? glm::clamp(f0 / f0Eta, 0.0f, 1.0f) : glm::vec3(0.0f);
-  const float m = std::clamp(input.roughness * input.roughness, 0.001f, 1.0f);
-  const std::string mapped = where + " (metallic-roughness mapping)";
-  setParam(record, "rho_d", input.baseColor * (1.0f - input.metallic), mapped);
-  setParam(record, "rho_s", rhoS, mapped);
-  setParam(record, "m", glm::vec3(m), mapped);
-  setParam(record, "eta", glm::vec3(eta), mapped);
+  // glTF's own BRDF (Appendix B): the factors as they are, nothing approximated.
+  gpu::MaterialRecord record = defaultRecord(modelId("gltf_pbr"));
+  const std::string mapped = where + " (metallic-roughness)";
+  setParam(record, "base_color", input.baseColor, mapped);
+  setParam(record, "metallic", glm::vec3(input.metallic), mapped);
+  setParam(record, "roughness", glm::vec3(input.roughness), mapped);
+  // The model's f0 formula holds for any ior; its table stops at 3 (f0 = 0.25), beyond any common dielectric.
+  const float iorMax = findParam(modelInfo(record.model), "ior")->max;
+  if (input.ior > iorMax) {
+    warn(where + ": KHR_materials_ior.ior = " + formatNumber(input.ior) + " is above gltf_pbr's " +
+         formatNumber(iorMax) + "; using " + formatNumber(iorMax));
+  }
+  setParam(record, "ior", glm::vec3(std::min(input.ior, iorMax)), where + " (KHR_materials_ior)");
   return record;
 }
 

@@ -24,9 +24,8 @@ struct MetallicRoughness {
   float transmission = 0.0f;
 };
 
-// glass (eta = ior, tint = base colour) when transmission is 1, else cooktorrance with
-// rho_d = base colour (1 - metallic), m = roughness², and eta and rho_s chosen so that rho_s F0(eta) is the
-// glTF F0 = mix(F0(ior), base colour, metallic) wherever eta <= 10 allows. `where` starts error messages.
+// glass (eta = ior, tint = base colour) when transmission is 1, else gltf_pbr, glTF's own BRDF, with the factors
+// as they are (an ior above gltf_pbr's 3 is used as 3, with a warning). `where` starts error messages.
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where);
 
 // Applies an extras.raylab material object to `record`: "model" (optional) restarts from that model's

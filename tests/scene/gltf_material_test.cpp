@@ -31,7 +31,6 @@ void expectNear(glm::vec3 actual, glm::vec3 expected, const std::string& what, f
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(actual[i], expected[i], tolerance) << what << " component " << i;
 }
 
-float schlickF0(float eta) { return std::pow((eta - 1.0f) / (eta + 1.0f), 2.0f); }
 
 // A scene with one quad using the given material.
 Scene loadMaterial(const json& material) {
@@ -105,42 +104,41 @@ TEST(GltfMaterial, NonFiniteValuesAreRejected) {
   EXPECT_NE(inf.find("s = inf is outside [1, 10000]"), std::string::npos) << inf;
 }
 
-TEST(GltfMaterial, DielectricMetallicRoughnessMapsToLambertPlusCookTorrance) {
+// A material without extras.raylab is glTF's own BRDF (Appendix B), its factors unchanged, glTF's defaults
+// (metallic 1, roughness 1, ior 1.5) where the file says nothing.
+TEST(GltfMaterial, MetallicRoughnessIsGltfPbrWithTheFactorsAsTheyAre) {
   const Scene scene = loadMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.1, 1.0}},
-                                                              {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}});
+                                                              {"metallicFactor", 0.25}, {"roughnessFactor", 0.5}}}});
   const gpu::MaterialRecord& r = scene.materials[0].record;
-  EXPECT_EQ(r.model, modelId("cooktorrance"));
-  expectNear(getParam(r, "rho_d"), {0.8f, 0.2f, 0.1f}, "rho_d = base colour (1 - metallic)");
-  expectNear(getParam(r, "rho_s"), glm::vec3(1.0f), "rho_s: white, the Fresnel term carries F0");
-  EXPECT_NEAR(getParam(r, "eta").x, 1.5f, 1e-5f) << "glTF's default ior";
-  EXPECT_NEAR(getParam(r, "m").x, 0.25f, 1e-6f) << "m = roughness^2";
+  EXPECT_EQ(r.model, modelId("gltf_pbr"));
+  expectNear(getParam(r, "base_color"), {0.8f, 0.2f, 0.1f}, "base_color");
+  EXPECT_FLOAT_EQ(getParam(r, "metallic").x, 0.25f);
+  EXPECT_FLOAT_EQ(getParam(r, "roughness").x, 0.5f);
+  EXPECT_NEAR(getParam(r, "ior").x, 1.5f, 1e-6f) << "glTF's default ior";
   EXPECT_FLOAT_EQ(r.delta, 0.0f);
+
+  const Scene defaults = loadMaterial({{"pbrMetallicRoughness", json::object()}});
+  const gpu::MaterialRecord& d = defaults.materials[0].record;
+  expectNear(getParam(d, "base_color"), glm::vec3(1.0f), "glTF's default base colour");
+  EXPECT_FLOAT_EQ(getParam(d, "metallic").x, 1.0f) << "glTF's default metallic";
+  EXPECT_FLOAT_EQ(getParam(d, "roughness").x, 1.0f) << "glTF's default roughness";
 }
 
-TEST(GltfMaterial, MetalsKeepTheirF0WhereEtaAllowsIt) {
-  const glm::vec3 copper(0.6f, 0.4f, 0.3f);
-  const Scene scene = loadMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {copper.r, copper.g, copper.b, 1.0}},
-                                                              {"metallicFactor", 1.0}, {"roughnessFactor", 0.2}}}});
-  const gpu::MaterialRecord& r = scene.materials[0].record;
-  expectNear(getParam(r, "rho_d"), glm::vec3(0.0f), "no diffuse term for a metal");
-  expectNear(getParam(r, "rho_s") * schlickF0(getParam(r, "eta").x), copper, "rho_s F0(eta) = the base colour", 1e-5f);
-  EXPECT_FLOAT_EQ(std::max({getParam(r, "rho_s").r, getParam(r, "rho_s").g, getParam(r, "rho_s").b}), 1.0f);
-  EXPECT_NEAR(getParam(r, "m").x, 0.04f, 1e-6f);
-
-  // Brighter than F0(10) = 0.669: eta saturates and the reflectance is scaled down, hue kept.
-  const Scene silver = loadMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {0.97, 0.96, 0.91, 1.0}},
-                                                               {"metallicFactor", 1.0}}}});
-  const gpu::MaterialRecord& s = silver.materials[0].record;
-  EXPECT_FLOAT_EQ(getParam(s, "eta").x, 10.0f);
-  expectNear(getParam(s, "rho_s"), glm::vec3(1.0f), "rho_s saturates at 1");
-  EXPECT_NEAR(getParam(s, "m").x, 1.0f, 1e-6f) << "glTF's default roughness is 1";
+// gltf_pbr's f0 formula holds for any ior, but its table stops at 3: a valid file beyond it still loads, with the
+// ior used as 3 and a warning that says so.
+TEST(GltfMaterial, AnIorAboveGltfPbrsRangeIsUsedAsItsMaximumWithAWarning) {
+  WarningCapture warnings;
+  const Scene scene = loadMaterial({{"name", "rutile"}, {"extensions", {{"KHR_materials_ior", {{"ior", 4.0}}}}},
+                                    {"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}});
+  EXPECT_FLOAT_EQ(getParam(scene.materials[0].record, "ior").x, 3.0f);
+  EXPECT_EQ(warnings.count("KHR_materials_ior.ior = 4 is above gltf_pbr's 3; using 3"), 1);
 }
 
 TEST(GltfMaterial, IorSetsEtaAndFullTransmissionMakesGlass) {
   const Scene water = loadMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 1.33}}}}},
                                     {"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}});
-  EXPECT_EQ(water.materials[0].record.model, modelId("cooktorrance"));
-  EXPECT_NEAR(getParam(water.materials[0].record, "eta").x, 1.33f, 1e-5f);
+  EXPECT_EQ(water.materials[0].record.model, modelId("gltf_pbr"));
+  EXPECT_NEAR(getParam(water.materials[0].record, "ior").x, 1.33f, 1e-5f);
 
   const Scene glass = loadMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 1.7}}},
                                                     {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}},
@@ -152,7 +150,7 @@ TEST(GltfMaterial, IorSetsEtaAndFullTransmissionMakesGlass) {
 
   WarningCapture warnings;
   const Scene partial = loadMaterial({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}}}});
-  EXPECT_EQ(partial.materials[0].record.model, modelId("cooktorrance"));
+  EXPECT_EQ(partial.materials[0].record.model, modelId("gltf_pbr"));
   EXPECT_EQ(warnings.count("transmission factors between 0 and 1"), 1);
 
   const std::string error = materialError({{"name", "gem"}, {"extensions", {{"KHR_materials_ior", {{"ior", 0.5}}}}}});
@@ -168,7 +166,7 @@ TEST(GltfMaterial, CoreFactorsOutOfRangeAreErrors) {
 TEST(GltfMaterial, ExtrasWithoutAModelAdjustTheMappedMaterial) {
   const Scene scene = loadMaterial({{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
                                     {"extras", {{"raylab", {{"delta", 0.5}}}}}});
-  EXPECT_EQ(scene.materials[0].record.model, modelId("cooktorrance"));
+  EXPECT_EQ(scene.materials[0].record.model, modelId("gltf_pbr"));
   EXPECT_FLOAT_EQ(scene.materials[0].record.delta, 0.5f);
 }
 
