@@ -11,6 +11,7 @@ The scenes:
   cornell   a Lambert Cornell box (white, red and green walls, two white spheres) lit by a quad light
   spheres   a Lambert, a mirror and a glass sphere on a Lambert floor, lit by an HDR environment
             (Blender's CC0 `courtyard` world, copied to assets/scenes/environments by tools/setup.sh)
+  metals    three GGX conductors (gold, aluminium, and k = 0) on the same floor under the same environment
 
 Agreement: both images are averaged over blocks of BLOCK x BLOCK pixels and relMAE = sum |raylab - mitsuba| /
 sum mitsuba over the blocks and the R, G, B channels. The noise floor is the same figure between two raylab
@@ -64,9 +65,12 @@ TARGET_RELMSE = 1e-3
 @dataclass(frozen=True)
 class Material:
     name: str
-    kind: str  # diffuse, mirror or glass
+    kind: str  # diffuse, mirror, glass or conductor (GGX: raylab's ggx_conductor, Mitsuba's roughconductor)
     rgb: tuple[float, float, float] = (0.0, 0.0, 0.0)  # diffuse reflectance
     emission: tuple[float, float, float] | None = None  # radiance of an area light
+    alpha: float = 0.0  # conductor: GGX roughness (isotropic)
+    eta: tuple[float, float, float] = (1.0, 1.0, 1.0)  # conductor: complex index of refraction eta + i k
+    k: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
 
 @dataclass(frozen=True)
@@ -125,7 +129,22 @@ def spheres() -> Case:
                 environment="courtyard.exr")
 
 
-CASES = {"cornell": cornell, "spheres": spheres}
+def metals() -> Case:
+    """GGX conductors (gold-like and aluminium-like indices at 650, 550 and 450 nm, and a rough dielectric index
+    with k = 0, whose F0 is 4%) on a Lambert floor under the environment: the second library's ggx_conductor
+    against Mitsuba's roughconductor with distribution=ggx."""
+    materials = [Material("floor", "diffuse", (0.5, 0.5, 0.5)),
+                 Material("gold", "conductor", alpha=0.1, eta=(0.18, 0.42, 1.37), k=(3.42, 2.35, 1.77)),
+                 Material("aluminium", "conductor", alpha=0.3, eta=(1.66, 0.96, 0.62), k=(8.07, 6.69, 5.31)),
+                 Material("low", "conductor", alpha=0.05, eta=(1.5, 1.5, 1.5))]
+    quads = [Quad("floor", (-4.0, 0.0, 4.0), (8.0, 0.0, 0.0), (0.0, 0.0, -8.0), "floor")]
+    balls = [Ball("gold", (-1.3, 0.6, 0.0), 0.6, "gold"), Ball("aluminium", (0.0, 0.6, -0.4), 0.6, "aluminium"),
+             Ball("low", (1.3, 0.6, 0.0), 0.6, "low")]
+    return Case("metals", materials, quads, balls, ((0.0, 1.6, 5.0), (0.0, 0.5, 0.0), 35.0),
+                environment="courtyard.exr")
+
+
+CASES = {"cornell": cornell, "spheres": spheres, "metals": metals}
 
 
 def write_gltf(case: Case, directory: Path) -> Path:
@@ -136,6 +155,9 @@ def write_gltf(case: Case, directory: Path) -> Path:
             raylab = {"model": "lambert", "rho_d": list(m.rgb)}
         elif m.kind == "mirror":
             raylab = {"model": "lambert", "rho_d": [0.0, 0.0, 0.0], "delta": 1.0}
+        elif m.kind == "conductor":
+            raylab = {"model": "ggx_conductor", "alpha_x": m.alpha, "alpha_y": m.alpha, "eta": list(m.eta),
+                      "k": list(m.k), "rho_s": [1.0, 1.0, 1.0]}
         else:
             raylab = {"model": "glass", "eta": 1.5, "tint": [1.0, 1.0, 1.0]}
         index[m.name] = g.material(m.name, raylab)
@@ -180,6 +202,9 @@ def mitsuba_scene(case: Case, directory: Path, width: int, height: int, spp: int
             bsdfs[m.name] = {"type": "diffuse", "reflectance": {"type": "rgb", "value": list(m.rgb)}}
         elif m.kind == "mirror":
             bsdfs[m.name] = {"type": "conductor", "material": "none"}
+        elif m.kind == "conductor":
+            bsdfs[m.name] = {"type": "roughconductor", "distribution": "ggx", "alpha": m.alpha,
+                             "eta": {"type": "rgb", "value": list(m.eta)}, "k": {"type": "rgb", "value": list(m.k)}}
         else:
             bsdfs[m.name] = {"type": "dielectric", "int_ior": 1.5, "ext_ior": 1.0}
     emission = {m.name: m.emission for m in case.materials}
