@@ -71,6 +71,7 @@ class Material:
     alpha: float = 0.0  # conductor: GGX roughness (isotropic)
     eta: tuple[float, float, float] = (1.0, 1.0, 1.0)  # conductor: complex index of refraction eta + i k
     k: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    metal: str | None = None  # conductor: a named metal of both renderers instead of eta and k
 
 
 @dataclass(frozen=True)
@@ -130,11 +131,11 @@ def spheres() -> Case:
 
 
 def metals() -> Case:
-    """GGX conductors (gold-like and aluminium-like indices at 650, 550 and 450 nm, and a rough dielectric index
-    with k = 0, whose F0 is 4%) on a Lambert floor under the environment: the second library's ggx_conductor
-    against Mitsuba's roughconductor with distribution=ggx."""
+    """GGX conductors (gold named on both sides, an aluminium-like index at 650, 550 and 450 nm, and a rough
+    dielectric index with k = 0, whose F0 is 4%) on a Lambert floor under the environment: the second library's
+    ggx_conductor against Mitsuba's roughconductor with distribution=ggx."""
     materials = [Material("floor", "diffuse", (0.5, 0.5, 0.5)),
-                 Material("gold", "conductor", alpha=0.1, eta=(0.18, 0.42, 1.37), k=(3.42, 2.35, 1.77)),
+                 Material("gold", "conductor", alpha=0.1, metal="Au"),
                  Material("aluminium", "conductor", alpha=0.3, eta=(1.66, 0.96, 0.62), k=(8.07, 6.69, 5.31)),
                  Material("low", "conductor", alpha=0.05, eta=(1.5, 1.5, 1.5))]
     quads = [Quad("floor", (-4.0, 0.0, 4.0), (8.0, 0.0, 0.0), (0.0, 0.0, -8.0), "floor")]
@@ -156,8 +157,8 @@ def write_gltf(case: Case, directory: Path) -> Path:
         elif m.kind == "mirror":
             raylab = {"model": "lambert", "rho_d": [0.0, 0.0, 0.0], "delta": 1.0}
         elif m.kind == "conductor":
-            raylab = {"model": "ggx_conductor", "alpha_x": m.alpha, "alpha_y": m.alpha, "eta": list(m.eta),
-                      "k": list(m.k), "rho_s": [1.0, 1.0, 1.0]}
+            raylab = {"model": "ggx_conductor", "alpha_x": m.alpha, "alpha_y": m.alpha, "rho_s": [1.0, 1.0, 1.0]}
+            raylab.update({"metal": m.metal} if m.metal else {"eta": list(m.eta), "k": list(m.k)})
         else:
             raylab = {"model": "glass", "eta": 1.5, "tint": [1.0, 1.0, 1.0]}
         index[m.name] = g.material(m.name, raylab)
@@ -203,8 +204,9 @@ def mitsuba_scene(case: Case, directory: Path, width: int, height: int, spp: int
         elif m.kind == "mirror":
             bsdfs[m.name] = {"type": "conductor", "material": "none"}
         elif m.kind == "conductor":
-            bsdfs[m.name] = {"type": "roughconductor", "distribution": "ggx", "alpha": m.alpha,
-                             "eta": {"type": "rgb", "value": list(m.eta)}, "k": {"type": "rgb", "value": list(m.k)}}
+            bsdfs[m.name] = {"type": "roughconductor", "distribution": "ggx", "alpha": m.alpha}
+            bsdfs[m.name].update({"material": m.metal} if m.metal else {
+                "eta": {"type": "rgb", "value": list(m.eta)}, "k": {"type": "rgb", "value": list(m.k)}})
         else:
             bsdfs[m.name] = {"type": "dielectric", "int_ior": 1.5, "ext_ior": 1.0}
     emission = {m.name: m.emission for m in case.materials}

@@ -52,6 +52,25 @@ bool isDeltaOnly(const ModelInfo& model) {
 
 bool isDeltaOnly(std::uint32_t model) { return isDeltaOnly(modelInfo(model)); }
 
+bool isPresetKey(const ModelInfo& model, std::string_view key) {
+  return std::any_of(model.presets.begin(), model.presets.end(), [&](const Preset& p) { return p.key == key; });
+}
+
+void applyPreset(gpu::MaterialRecord& record, std::string_view key, std::string_view name, const std::string& where) {
+  const ModelInfo& model = modelInfo(record.model);
+  std::string names;
+  for (const Preset& preset : model.presets) {
+    if (preset.key != key) continue;
+    if (preset.name == name) {
+      for (const PresetValue& v : preset.values) setParam(record, v.param, v.value, where);
+      return;
+    }
+    names += (names.empty() ? "" : ", ") + std::string(preset.name);
+  }
+  throw Error(where + ": " + std::string(key) + " '" + std::string(name) + "' is not one of " + std::string(model.name) +
+              "'s (" + (names.empty() ? std::string("it has none") : names) + ")");
+}
+
 const ParamInfo* findRole(const ModelInfo& model, std::string_view role) {
   for (const ParamInfo& param : model.params) {
     if (param.role == role) return &param;
@@ -174,7 +193,9 @@ bool parseNumber(std::string_view text, float& value) {
 }  // namespace
 
 void applyParamList(gpu::MaterialRecord& record, std::string_view text, const std::string& where) {
+  const ModelInfo& model = modelInfo(record.model);
   std::set<std::string, std::less<>> seen;
+  std::vector<std::pair<std::string, std::string_view>> numbers;  // after the presets, which they refine
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t end = std::min(text.find_first_of(",;", start), text.size());
@@ -187,9 +208,19 @@ void applyParamList(gpu::MaterialRecord& record, std::string_view text, const st
     }
     const std::string name(trimmed(entry.substr(0, equals)));
     const std::string_view valueText = trimmed(entry.substr(equals + 1));
-    const ParamInfo* param = findParam(modelInfo(record.model), name);
-    if (param == nullptr) setParam(record, name, glm::vec3(0.0f), where);  // its message lists the parameters
+    const bool preset = isPresetKey(model, name);
+    if (!preset && findParam(model, name) == nullptr) {
+      setParam(record, name, glm::vec3(0.0f), where);  // its message lists the parameters
+    }
     if (!seen.insert(name).second) throw Error(where + ": '" + name + "' is given twice");
+    if (preset) {
+      applyPreset(record, name, valueText, where);
+    } else {
+      numbers.emplace_back(name, valueText);
+    }
+  }
+  for (const auto& [name, valueText] : numbers) {
+    const ParamInfo* param = findParam(model, name);
     glm::vec3 value(0.0f);
     int channels = 0;
     bool valid = true;

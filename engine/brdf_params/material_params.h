@@ -33,6 +33,18 @@ struct ParamInfo {
   std::uint32_t slot;     // first float in MaterialRecord::params
 };
 
+// A named set of parameter values a model's file declares (`// preset: metal=Au eta=... k=...`): `key` = `name`
+// in a parameter list, glTF's extras.raylab or Python sets them.
+struct PresetValue {
+  std::string_view param;
+  glm::vec3 value;  // each channel; a scalar parameter's in x
+};
+struct Preset {
+  std::string_view key;   // "metal"
+  std::string_view name;  // "Au"
+  std::vector<PresetValue> values;
+};
+
 struct ModelInfo {
   std::string_view name;  // "cooktorrance"
   std::uint32_t id;       // the registry's order
@@ -41,6 +53,7 @@ struct ModelInfo {
   std::string_view sweepBase;     // a parameter list a sweep starts from (empty: the defaults)
   std::string_view glslFile;      // relative to the source tree
   std::string_view referenceFile;
+  std::vector<Preset> presets;    // in the file's order
 };
 
 // The registry's table (generated: brdf_model_table.cpp), in id order.
@@ -51,6 +64,10 @@ std::string modelNames();
 // True for a model of delta lobes only (glass): no f, no density; the integrators follow its DeltaEvent.
 bool isDeltaOnly(const ModelInfo& model);
 bool isDeltaOnly(std::uint32_t model);
+// True when `key` names presets of `model` ("metal" for ggx_conductor).
+bool isPresetKey(const ModelInfo& model, std::string_view key);
+// Sets the values of preset `key` = `name`; an unknown name throws Error naming `where` and the known names.
+void applyPreset(gpu::MaterialRecord& record, std::string_view key, std::string_view name, const std::string& where);
 // The parameter of `model` with `role`, or null.
 const ParamInfo* findRole(const ModelInfo& model, std::string_view role);
 const ModelInfo* findModel(std::string_view name);
@@ -71,7 +88,8 @@ glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name);
 // The one grammar of a parameter list, on every command line, in CSV files and in Python strings: `k=v` entries
 // separated by ',' or ';' (either; a CSV field uses ';' since ',' separates its columns), spaces around them
 // ignored, RGB values as r/g/b (one number: grey). Sets each on `record` (whose model is set) with setParam's
-// checks; a name given twice or a malformed value throws Error starting with `where`.
+// checks; a name given twice or a malformed value throws Error starting with `where`. A preset (`metal=Au`) is
+// applied first, whatever its place in the list, so that the other entries refine it.
 void applyParamList(gpu::MaterialRecord& record, std::string_view text, const std::string& where);
 
 // The colour a material shows at a glance (glTF viewers, a Lambert stand-in): its model's diffuse colour, else

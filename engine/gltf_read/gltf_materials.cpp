@@ -200,8 +200,14 @@ void applyRaylabMaterial(gpu::MaterialRecord& record, const json& raylab, const 
     record = defaultRecord(info->id);
   }
   const ModelInfo& model = modelInfo(record.model);
+  // Presets first ("metal": "Au"), so that the object's other values refine them.
   for (const auto& [key, value] : raylab.items()) {
-    if (key == "model") continue;
+    if (!isPresetKey(model, key)) continue;
+    if (!value.is_string()) throw Error(extras + "." + key + ": expected a name, found " + quote(value));
+    applyPreset(record, key, value.get<std::string>(), extras);
+  }
+  for (const auto& [key, value] : raylab.items()) {
+    if (key == "model" || isPresetKey(model, key)) continue;
     const ParamInfo* param = findParam(model, key);
     if (param == nullptr) {
       setParam(record, key, glm::vec3(0.0f), extras);  // throws, listing the model's parameters

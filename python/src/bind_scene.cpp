@@ -191,9 +191,21 @@ glm::vec3 paramValue(const py::handle& value, const std::string& where) {
 }
 
 void applyParams(gpu::MaterialRecord& record, const py::dict& params, const std::string& where) {
+  const ModelInfo& model = modelInfo(record.model);
+  // Presets first (metal="Au"), so that the other keywords refine them.
   for (const auto& [key, value] : params) {
     const std::string name = key.cast<std::string>();
-    if (name == "model") continue;
+    if (!isPresetKey(model, name)) continue;
+    if (!py::isinstance<py::str>(value)) usage(where + ": " + name + ": expected a name");
+    try {
+      applyPreset(record, name, value.cast<std::string>(), where);
+    } catch (const Error& error) {
+      usage(error.what());
+    }
+  }
+  for (const auto& [key, value] : params) {
+    const std::string name = key.cast<std::string>();
+    if (name == "model" || isPresetKey(model, name)) continue;
     const glm::vec3 v = paramValue(value, where + ": " + name);
     if (!finite(v)) usage(where + ": " + name + " must be finite");
     try {

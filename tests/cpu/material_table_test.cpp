@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "brdf_params/material_params.h"
+#include "util/error.h"
 
 namespace raylab::test {
 namespace {
@@ -163,6 +164,33 @@ TEST(MaterialTable, EveryGlslModelFileOpensWithTheCodesTable) {
   std::vector<const ModelInfo*> all;
   for (const ModelInfo& model : allModels()) all.push_back(&model);
   expectSameAsCode(glslTable(), "the models' GLSL files", all);
+}
+
+// A named metal sets ggx_conductor's eta and k from its file's preset lines, before the list's other entries,
+// which refine it; an unknown name lists the known ones; a preset is not a number.
+TEST(MaterialTable, NamedMetalsSetEtaAndKAndTheOtherEntriesRefineThem) {
+  const ModelInfo& conductor = *findModel("ggx_conductor");
+  ASSERT_TRUE(isPresetKey(conductor, "metal"));
+  EXPECT_FALSE(isPresetKey(conductor, "eta"));
+  EXPECT_EQ(conductor.presets.size(), 5u);
+  gpu::MaterialRecord record = defaultRecord(conductor.id);
+  applyParamList(record, "k=1, metal=Au, alpha_x=0.3", "test");
+  EXPECT_FLOAT_EQ(getParam(record, "eta").x, 0.143036f);
+  EXPECT_FLOAT_EQ(getParam(record, "eta").z, 1.44205f);
+  EXPECT_EQ(getParam(record, "k"), glm::vec3(1.0f)) << "the explicit k refines the preset";
+  EXPECT_FLOAT_EQ(getParam(record, "alpha_x").x, 0.3f);
+
+  std::string message;
+  try {
+    applyParamList(record, "metal=Unobtainium", "scene.gltf: material 2 'ring'");
+  } catch (const Error& error) {
+    message = error.what();
+  }
+  EXPECT_NE(message.find("scene.gltf: material 2 'ring': metal 'Unobtainium' is not one of ggx_conductor's "
+                         "(Ag, Al, Au, Cr, Cu)"), std::string::npos) << message;
+  EXPECT_THROW(applyParamList(record, "metal=Au,metal=Cu", "test"), Error) << "given twice";
+  gpu::MaterialRecord lambert = defaultRecord(findModel("lambert")->id);
+  EXPECT_THROW(applyParamList(lambert, "metal=Au", "test"), Error) << "lambert has no metals";
 }
 
 }  // namespace

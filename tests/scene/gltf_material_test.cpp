@@ -88,6 +88,20 @@ TEST(GltfMaterial, ExtrasRaylabErrorsNameTheMaterial) {
   EXPECT_NE(delta.find("delta = 1.5 is outside [0, 1]"), std::string::npos) << delta;
 }
 
+// extras.raylab names a metal as the CLI does; the object's other values refine it (JSON objects are unordered).
+TEST(GltfMaterial, ExtrasRaylabNamesAMetal) {
+  gpu::MaterialRecord record = defaultRecord(modelId("lambert"));
+  gltf::applyRaylabMaterial(record, {{"model", "ggx_conductor"}, {"metal", "Cu"}, {"alpha_x", 0.05}},
+                            "file: material 1 'pipe'");
+  EXPECT_FLOAT_EQ(getParam(record, "eta").y, 0.92375f);
+  EXPECT_FLOAT_EQ(getParam(record, "alpha_x").x, 0.05f);
+  const std::string error = errorOf([&] {
+    gltf::applyRaylabMaterial(record, {{"model", "ggx_conductor"}, {"metal", 79}}, "file: material 1 'pipe'");
+  });
+  EXPECT_NE(error.find("file: material 1 'pipe': extras.raylab.metal: expected a name, found 79"), std::string::npos)
+      << error;
+}
+
 TEST(GltfMaterial, NonFiniteValuesAreRejected) {
   // JSON text cannot hold NaN: such a file fails to parse, naming the line and column.
   const std::string text = R"({"asset": {"version": "2.0"},

@@ -28,8 +28,8 @@ class RegistryError(Exception):
 
 
 def parse_model(name, prefix, include, path):
-    """The lobes, parameter table and sweep line of the comment a model's GLSL file opens with."""
-    lobes, params, sweep, slot = None, [], "", 0
+    """The lobes, parameter table, sweep line and presets of the comment a model's GLSL file opens with."""
+    lobes, params, sweep, slot, preset_lines = None, [], "", 0, []
     with open(path, encoding="utf-8") as f:
         for number, line in enumerate(f, 1):
             if not line.startswith("//"):
@@ -44,6 +44,8 @@ def parse_model(name, prefix, include, path):
                 lobes = sum(LOBES[w] for w in words)
             elif body.startswith("sweep:"):
                 sweep = body[len("sweep:"):].strip()
+            elif body.startswith("preset:"):
+                preset_lines.append((where, body[len("preset:"):].split()))
             elif line.lstrip("/ ").startswith("|") and not set(body) <= set("|- "):
                 match = ROW.match(line.rstrip("\n"))
                 if match is None:
@@ -69,7 +71,30 @@ def parse_model(name, prefix, include, path):
     names = [p["name"] for p in params]
     if len(set(names)) != len(names):
         raise RegistryError(f"{path}: a parameter is listed twice")
-    return dict(name=name, prefix=prefix, include=include, path=path, lobes=lobes, params=params, sweep=sweep)
+    presets = [parse_preset(where, words, params) for where, words in preset_lines]
+    return dict(name=name, prefix=prefix, include=include, path=path, lobes=lobes, params=params, sweep=sweep,
+                presets=presets)
+
+
+def parse_preset(where, words, params):
+    """`// preset: metal=Au eta=0.14/0.38/1.44 k=3.98/2.39/1.60`: a named set of parameter values, in range."""
+    if len(words) < 2 or any(w.count("=") != 1 for w in words):
+        raise RegistryError(f"{where}: a preset is 'key=Name param=value ...' (values r/g/b or one number)")
+    key, name = words[0].split("=")
+    values = []
+    by_name = {p["name"]: p for p in params}
+    for word in words[1:]:
+        pname, text = word.split("=")
+        param = by_name.get(pname)
+        if param is None or key in by_name:
+            raise RegistryError(f"{where}: '{pname}' is not a parameter, or the key '{key}' is one")
+        channels = [float(c) for c in text.split("/")]
+        if len(channels) not in (1, 3) or (len(channels) == 3 and not param["rgb"]):
+            raise RegistryError(f"{where}: {pname} takes {'r/g/b or ' if param['rgb'] else ''}one number")
+        if not all(param["min"] <= c <= param["max"] for c in channels):
+            raise RegistryError(f"{where}: {pname} = {text} is outside [{param['min']}, {param['max']}]")
+        values.append((pname, channels * 3 if len(channels) == 1 else channels))
+    return dict(key=key, name=name, values=values)
 
 
 def is_delta(model):
@@ -137,8 +162,13 @@ def cpp_table(models, source_dir):
                              cpp_string(p["meaning"]), cpp_string(p["role"]), f"{p['slot']}u"]) + "}"
             for p in m["params"])
         glsl = os.path.relpath(m["path"], source_dir)
+        presets = ", ".join(
+            "{" + f"{cpp_string(p['key'])}, {cpp_string(p['name'])}, {{" + ", ".join(
+                "{" + f"{cpp_string(param)}, glm::vec3({', '.join(cpp_float(c) for c in channels)})" + "}"
+                for param, channels in p["values"]) + "}}"
+            for p in m["presets"])
         out.append(f"      {{{cpp_string(m['name'])}, {i}u, {m['lobes']}u, {{{params}}}, {cpp_string(m['sweep'])}, "
-                   f"{cpp_string(glsl)}, {cpp_string(m['reference'])}}},")
+                   f"{cpp_string(glsl)}, {cpp_string(m['reference'])}, {{{presets}}}}},")
     out += ["  };", "  return table;", "}", "", "}  // namespace raylab", ""]
     return "\n".join(out)
 
