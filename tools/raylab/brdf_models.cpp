@@ -40,11 +40,18 @@ int listModels(bool json) {
       nlohmann::ordered_json params = nlohmann::ordered_json::array();
       for (const ParamInfo& p : model.params) params.push_back(paramJson(p));
       params.push_back(paramJson(deltaParam()));
+      nlohmann::ordered_json presets = nlohmann::ordered_json::array();
+      for (const Preset& preset : model.presets) {
+        nlohmann::ordered_json values = nlohmann::ordered_json::object();
+        for (const PresetValue& v : preset.values) values[std::string(v.param)] = {v.value.x, v.value.y, v.value.z};
+        presets.push_back({{"key", preset.key}, {"name", preset.name}, {"values", values}});
+      }
       models.push_back({{"name", model.name},
                         {"lobes", lobeNames(model.lobes)},
                         {"delta_only", isDeltaOnly(model)},
                         {"params", params},
                         {"sweep_base", model.sweepBase},
+                        {"presets", presets},
                         {"glsl", model.glslFile},
                         {"reference", model.referenceFile}});
     }
@@ -58,6 +65,11 @@ int listModels(bool json) {
       std::printf("  %-8s %-3s [%g, %g] default %g%s  %s\n", std::string(p.name).c_str(), p.rgb ? "rgb" : "",
                   p.min, p.max, p.defaultValue, p.logScale ? ", log scale" : "", std::string(p.meaning).c_str());
     }
+    std::string presets;
+    for (const Preset& preset : model.presets) {
+      presets += (presets.empty() ? std::string(preset.key) + " = " : ", ") + std::string(preset.name);
+    }
+    if (!presets.empty()) std::printf("  presets: %s\n", presets.c_str());
   }
   const ParamInfo& delta = deltaParam();
   std::printf("every model also has %s [%g, %g] default %g: the %s\n", std::string(delta.name).c_str(), delta.min,
@@ -74,7 +86,7 @@ void addBrdfModelsCommand(CLI::App& brdf) {
       "list the BRDF models and their parameters (names, ranges, defaults, roles)\n"
       "Lists every model of the registry (shaders/brdf/models.cmake) with its lobes and parameters, as text or, "
       "with --json, as an array of {name, lobes, delta_only, params: [{name, type, min, max, default, scale, role, "
-      "meaning}], sweep_base, glsl, reference} for scripts. docs/extending.md says how a model is added.",
+      "meaning}], sweep_base, presets: [{key, name, values}], glsl, reference} for scripts. docs/extending.md says how a model is added.",
       [json] { return listModels(*json); });
   addFlag(command, "--json", *json, "print JSON instead of text");
 }
