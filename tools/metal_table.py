@@ -8,16 +8,12 @@ projection), printed as the `// preset:` lines of shaders/brdf/ggx_conductor.gls
 from __future__ import annotations
 
 import argparse
-import os
 import sys
 from pathlib import Path
 
-from raylab_tools import run_main, venv_hint
+from raylab_tools import point_mitsuba_at_libllvm, run_main, venv_hint
 
-# Mitsuba's LLVM backend needs libLLVM >= 16; the scalar variant used here does not, but importing is the same.
-LIBLLVM = Path("/usr/lib/x86_64-linux-gnu/libLLVM-19.so")
-if LIBLLVM.exists():
-    os.environ.setdefault("DRJIT_LIBLLVM_PATH", str(LIBLLVM))
+point_mitsuba_at_libllvm()
 
 try:
     import mitsuba as mi

@@ -40,15 +40,13 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from raylab_tools import REPO, ToolError, add_raylab_option, check_raylab, run_main, run_raylab, venv_hint
+from raylab_tools import (REPO, ToolError, add_raylab_option, check_raylab, point_mitsuba_at_libllvm, run_main,
+                          run_raylab, venv_hint)
 
 sys.path.insert(0, str(REPO / "tools" / "scenes"))
 import make_scenes  # noqa: E402  (the committed scenes' glTF writer)
 
-# Mitsuba's LLVM backend needs libLLVM >= 16; Debian bookworm's libllvm19 (tools/setup.sh) provides it.
-LIBLLVM = Path("/usr/lib/x86_64-linux-gnu/libLLVM-19.so")
-if LIBLLVM.exists():
-    os.environ.setdefault("DRJIT_LIBLLVM_PATH", str(LIBLLVM))
+point_mitsuba_at_libllvm()
 
 try:
     import numpy as np

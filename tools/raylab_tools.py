@@ -26,6 +26,14 @@ def venv_hint(missing: str) -> str:
             f"tools/requirements.txt into .venv), then run this script with .venv/bin/python")
 
 
+def point_mitsuba_at_libllvm() -> None:
+    """Mitsuba's LLVM backend needs libLLVM >= 16; Debian bookworm's libllvm19 (tools/setup.sh) provides it. Call
+    before importing mitsuba."""
+    libllvm = Path("/usr/lib/x86_64-linux-gnu/libLLVM-19.so")
+    if libllvm.exists():
+        os.environ.setdefault("DRJIT_LIBLLVM_PATH", str(libllvm))
+
+
 def add_raylab_option(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--raylab", type=Path, default=DEFAULT_RAYLAB, metavar="PATH",
                         help=f"the raylab executable (default: {DEFAULT_RAYLAB.relative_to(REPO)})")
