@@ -11,6 +11,9 @@
 
 namespace raylab {
 
+// The luminance of a linear RGB colour (Rec. 709 / sRGB primaries, as every image here is).
+inline float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
 // The largest image side raylab renders, shows or reads as a texture; a render's pixel count is further bounded by
 // the device (maxImagePixels in render/renderer.h).
 inline constexpr std::uint32_t kMaxImageSide = 16384;

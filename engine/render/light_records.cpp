@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "image/image.h"
 #include "scene/camera_pivot.h"
 #include "util/error.h"
 
@@ -11,7 +12,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double luminance(glm::vec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 // A punctual light's record. Its kind must be a delta light's: the selection takes every one of them.
 gpu::LightRecord punctualRecord(const PunctualLight& light) {
@@ -29,7 +29,7 @@ gpu::LightRecord punctualRecord(const PunctualLight& light) {
 
 // Powers (SceneLights.powers) are in watts of luminance, so that lights of different kinds compare (pbrt-v4's
 // Light::Phi). A one-sided Lambertian emitter of radiance L_e and area A emits pi L_e A.
-double surfacePower(const gpu::LightRecord& record) { return kPi * luminance(record.radiance) * record.area; }
+double surfacePower(const gpu::LightRecord& record) { return kPi * double(luminance(record.radiance)) * record.area; }
 
 void addTriangleLights(const Scene& scene, const MeshInstance& instance, SceneLights& lights) {
   const Mesh& mesh = scene.meshes[instance.mesh];

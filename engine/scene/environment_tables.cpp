@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "image/image.h"
 #include "shared/scene_records.h"
 
 namespace raylab {
@@ -12,7 +13,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
 // Texel (x, y) of the image with its addressing: wrapped around in u, clamped at the poles (as the kernel's
 // environmentTexel).

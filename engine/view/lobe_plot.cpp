@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "brdf_params/material_params.h"
+#include "image/image.h"
 
 namespace raylab {
 
@@ -23,7 +24,6 @@ bool sameMaterial(const gpu::MaterialRecord& a, const gpu::MaterialRecord& b) {
   return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
-float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
 LobeCurves evaluate(const Device& device, BrdfEvaluator& evaluator, const gpu::MaterialRecord& material, float theta,
                     const LobeCurves* previous) {
