@@ -52,6 +52,10 @@ bool isDeltaOnly(const ModelInfo& model) {
 
 bool isDeltaOnly(std::uint32_t model) { return isDeltaOnly(modelInfo(model)); }
 
+bool isTwoSided(const ModelInfo& model) {
+  return (model.lobes & gpu::kLobeTransmission) != 0 && (model.lobes & (gpu::kLobeDiffuse | gpu::kLobeGlossy)) != 0;
+}
+
 bool isPresetKey(const ModelInfo& model, std::string_view key) {
   return std::any_of(model.presets.begin(), model.presets.end(), [&](const Preset& p) { return p.key == key; });
 }

@@ -64,6 +64,8 @@ std::string modelNames();
 // True for a model of delta lobes only (glass): no f, no density; the integrators follow its DeltaEvent.
 bool isDeltaOnly(const ModelInfo& model);
 bool isDeltaOnly(std::uint32_t model);
+// Transmission with a density (rough glass): f and its sampler take wi and wo on either side of the normal.
+bool isTwoSided(const ModelInfo& model);
 // True when `key` names presets of `model` ("metal" for ggx_conductor).
 bool isPresetKey(const ModelInfo& model, std::string_view key);
 // Sets the values of preset `key` = `name`; an unknown name throws Error naming `where` and the known names.

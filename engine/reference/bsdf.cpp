@@ -38,9 +38,16 @@ bool hasDensity(const Material& material) {
   return (lobeFlags(material) & (gpu::kLobeDiffuse | gpu::kLobeGlossy)) != 0;
 }
 
+bool finiteAndOffTheSurface(const dvec3& w) {
+  return w.z != 0.0 && std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z);
+}
+
 }  // namespace
 
 double pdf(const Material& material, const dvec3& wi, const dvec3& wo) {
+  if (const std::optional<double> twoSided = pdfTwoSided(material, wi, wo)) {
+    return finiteAndOffTheSurface(wi) && finiteAndOffTheSurface(wo) ? *twoSided : 0.0;
+  }
   if (!hasDensity(material) || !aboveHorizon(wi, wo)) return 0.0;
   const double pSpec = specularProbability(material);
   double density = (1.0 - pSpec) * pdfCosineHemisphere(wi);
@@ -49,6 +56,14 @@ double pdf(const Material& material, const dvec3& wi, const dvec3& wo) {
 }
 
 Sample sample(const Material& material, const dvec3& wo, const dvec3& u) {
+  if (finiteAndOffTheSurface(wo)) {
+    if (const std::optional<dvec3> wi = sampleTwoSided(material, wo, u)) {
+      // A sample is valid only in the hemisphere of the lobe it chose; the model returns zero otherwise.
+      const double density = pdf(material, *wi, wo);
+      if (!finiteAndOffTheSurface(*wi) || !(density > 0.0)) return {};
+      return {*wi, eval(material, *wi, wo), density};
+    }
+  }
   // aboveHorizon(wo, wo): wo alone must be finite and above the horizon.
   if (!hasDensity(material) || !aboveHorizon(wo, wo)) return {};
   // u.x only picks the lobe; the direction uses (u.y, u.z), so that both lobes see uniform numbers.

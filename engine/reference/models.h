@@ -6,7 +6,8 @@
 // eval() of brdf_reference.h is their sum.
 //
 // Every function here works in the local shading frame (z = n) on unit wi, wo; the <prefix>Eval functions
-// return exactly zero unless wi.z > 0 and wo.z > 0 (and both are finite).
+// return exactly zero unless wi.z > 0 and wo.z > 0 (and both are finite), except a two-sided model's (below),
+// which is zero only when a cosine is 0 or a component not finite.
 #pragma once
 
 #include <cstdint>
@@ -50,5 +51,10 @@ double pdfSpecular(const Material& material, const dvec3& wi, const dvec3& wo);
 std::optional<SpecularLobe> specularLobe(const Material& material);
 std::optional<DielectricEvent> deltaEvent(const Material& material, const dvec3& wi, const dvec3& n);
 std::uint32_t lobeFlags(const Material& material);
+// A two-sided model (transmission with a density: rough glass) takes wi and wo on either side of the normal and
+// samples both hemispheres itself, u.x choosing the lobe: its direction (zero when the sample fails) and density.
+// Empty for every other model.
+std::optional<dvec3> sampleTwoSided(const Material& material, const dvec3& wo, const dvec3& u);
+std::optional<double> pdfTwoSided(const Material& material, const dvec3& wi, const dvec3& wo);
 
 }  // namespace raylab::reference

@@ -17,3 +17,4 @@ raylab_brdf_model(oren_nayar PREFIX orenNayar GLSL brdf/oren_nayar.glsl REFERENC
 raylab_brdf_model(eon PREFIX eon GLSL brdf/eon.glsl REFERENCE ${reference}/eon.cpp)
 raylab_brdf_model(gltf_pbr PREFIX gltfPbr GLSL brdf/gltf_pbr.glsl REFERENCE ${reference}/gltf_pbr.cpp)
 raylab_brdf_model(ggx_conductor PREFIX ggxConductor GLSL brdf/ggx_conductor.glsl REFERENCE ${reference}/ggx_conductor.cpp)
+raylab_brdf_model(ggx_dielectric PREFIX ggxDielectric GLSL brdf/ggx_dielectric.glsl REFERENCE ${reference}/ggx_dielectric.cpp)

@@ -2,7 +2,7 @@
 // manner of pbrt-v4 and Mitsuba 3: 10^6 samples per case from std::mt19937_64, a 20 x 40 grid in
 // (cos theta, phi), cells expecting fewer than 5 samples pooled, failed samples as one more cell, alpha = 0.01
 // with Šidák's correction over all the cases below. Incident directions normal, oblique (45 deg) and grazing
-// (85 deg); moderate parameters, with the diffuse lobe mixed in or not. Each case also checks that a sample
+// (85 deg), and from inside for rough glass; moderate parameters, with the diffuse lobe mixed in or not. Each case also checks that a sample
 // carries eval() and pdf() of its direction and that the pdf integrates to at most 1.
 // Regenerate the p-values: ctest --test-dir build/release -R brdf_sampling -V
 #include <gtest/gtest.h>
@@ -56,12 +56,14 @@ std::vector<SamplingCase> samplingCases() {
       {"gltf_pbr", {{"base_color", 0.9}, {"metallic", 1}, {"roughness", 0.3}}},
       {"ggx_conductor", {{"alpha_x", 0.3}, {"alpha_y", 0.3}}},
       {"ggx_conductor", {{"alpha_x", 0.1}, {"alpha_y", 0.5}, {"eta", 1.5}, {"k", 0}}},
+      {"ggx_dielectric", {{"alpha_x", 0.3}, {"alpha_y", 0.3}, {"eta", 1.5}}},
+      {"ggx_dielectric", {{"alpha_x", 0.1}, {"alpha_y", 0.4}, {"eta", 1.33}, {"tint", 0.5}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;
   for (const auto& [model, params] : materials) {
     covered.insert(model);
-    for (double theta : {0.0, 45.0, 85.0}) cases.push_back({model, params, theta});
+    for (double theta : samplingAngles(model)) cases.push_back({model, params, theta});
   }
   for (const GenericMaterial& generic : uncoveredModelMaterials(covered)) {
     std::vector<ParamValue> params;

@@ -149,7 +149,7 @@ ParityCase leaningFrameCase(const gpu::MaterialRecord& material, Random& random,
 void addRandomCases(std::uint32_t model, int count, Random& random, std::vector<ParityCase>& cases) {
   for (int i = 0; i < count; ++i) {
     const gpu::MaterialRecord material = randomMaterial(model, random);
-    const dvec3 wo = spherical(random.cosine(), random.uniform(0.0, 2.0 * M_PI));
+    dvec3 wo = spherical(random.cosine(), random.uniform(0.0, 2.0 * M_PI));
     dvec3 wi = spherical(random.cosine(), random.uniform(0.0, 2.0 * M_PI));
     if (i % 2 == 1) {
       // Off the mirror direction by up to three lobe widths.
@@ -158,9 +158,22 @@ void addRandomCases(std::uint32_t model, int count, Random& random, std::vector<
       wi = glm::normalize(mirror + offset);
       if (wi.z <= 0.0) wi = glm::normalize(dvec3(wi.x, wi.y, -wi.z));
     }
+    if (isTwoSided(modelInfo(model)) && i % 3 != 0) {
+      // Rough glass: two cases in three across the surface, wi near the direction wo refracts to (up to three lobe
+      // widths off it; beyond the critical angle the straight-through direction), from either side.
+      if (random.uniform() < 0.5) wo.z = -wo.z;
+      const double eta = getParam(material, "eta").x;
+      const double ratio = wo.z > 0.0 ? 1.0 / eta : eta;  // eta_o / eta_t
+      const double sin2T = ratio * ratio * (1.0 - wo.z * wo.z);
+      const dvec3 n(0.0, 0.0, wo.z > 0.0 ? 1.0 : -1.0);
+      const dvec3 refracted = sin2T < 1.0 ? -ratio * wo + (ratio * std::abs(wo.z) - std::sqrt(1.0 - sin2T)) * n : -wo;
+      wi = glm::normalize(refracted + random.unitVector() * (lobeWidth(material) * 3.0 * random.uniform()));
+      if (wi.z * wo.z > 0.0) wi.z = -wi.z;
+    }
     cases.push_back(i % 4 == 3 ? framedCase(material, wi, wo, random) : canonicalCase(material, wi, wo));
   }
 }
+
 
 // The values of a scalar parameter a corner takes: a log-scale parameter its ends and a decade inside each
 // (s of 1, 10, 1000 and 10^4; m and alpha of 0.001, 0.01, 0.1 and 1), an index of refraction 1, 1.0001, 1.5 and
@@ -246,6 +259,27 @@ void addHardCases(std::uint32_t model, Random& random, std::vector<ParityCase>& 
   }
 }
 
+// A two-sided model (rough glass): every pair of the hard cosines with wi and wo on each side of the surface,
+// reflection inside included (beyond the critical angle at cos 0.5 for eta 1.5, and at grazing for every eta),
+// and transmission both ways.
+void addTwoSidedHardCases(std::uint32_t model, std::vector<ParityCase>& cases) {
+  const double cosines[] = {1e-15, 1e-7, 1e-4, 0.2, 0.5, 0.745, 1.0};
+  const double azimuths[] = {M_PI, 0.0, 0.5 * M_PI, M_PI - 1e-3};
+  for (const gpu::MaterialRecord& material : cornerMaterials(model)) {
+    for (double si : {1.0, -1.0}) {
+      for (double so : {1.0, -1.0}) {
+        for (double ci : cosines) {
+          for (double co : cosines) {
+            for (double phi : azimuths) {
+              cases.push_back(canonicalCase(material, spherical(si * ci, 0.0), spherical(so * co, phi)));
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
 double maxRelative(const dvec3& value, const dvec3& reference, double floor) {
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(value[c] - reference[c]) / std::max(std::abs(reference[c]), floor));
@@ -315,6 +349,7 @@ TEST_F(BrdfParityTest, EveryModelMatchesTheReferenceAndIsNeverNanInfOrNegative) 
     firstOfModel.push_back(cases.size());
     addRandomCases(model, 2000, random, cases);
     addHardCases(model, random, cases);
+    if (isTwoSided(modelInfo(model))) addTwoSidedHardCases(model, cases);
   }
   firstOfModel.push_back(cases.size());
 
@@ -336,7 +371,9 @@ TEST_F(BrdfParityTest, EveryModelMatchesTheReferenceAndIsNeverNanInfOrNegative) 
         ADD_FAILURE() << name << ": f = " << f.x << " " << f.y << " " << f.z << " for " << describe(c.input);
         continue;
       }
-      if (c.canonicalFrame && (c.input.wi.z <= 0.0f || c.input.wo.z <= 0.0f) && f != vec3(0.0f)) {
+      const bool offTheHorizon = isTwoSided(modelInfo(kBrdfModels[m])) ? c.input.wi.z != 0.0f && c.input.wo.z != 0.0f
+                                                                         : c.input.wi.z > 0.0f && c.input.wo.z > 0.0f;
+      if (c.canonicalFrame && !offTheHorizon && f != vec3(0.0f)) {
         ++horizonNonZero;
         ADD_FAILURE() << name << ": f is not 0 below the horizon for " << describe(c.input);
       }
@@ -378,7 +415,7 @@ TEST_F(BrdfParityTest, EveryModelMatchesTheReferenceAndIsNeverNanInfOrNegative) 
 
 // Inputs no parity can be asked of: cosines below the library's 1e-15 (down to the smallest denormal), signed
 // zeros, wi = -wo and wi = wo on the horizon, infinite and NaN components. f must still be finite and
-// non-negative, and exactly 0 unless both directions are strictly above the horizon.
+// non-negative, and exactly 0 unless both directions are strictly above the horizon (a two-sided model's: off it).
 TEST_F(BrdfParityTest, DegenerateInputsGiveFiniteNonNegativeValues) {
   const float tiny[] = {1e-20f, 1e-30f, 1e-38f, 1e-45f, 0.0f, -0.0f, -1e-30f};
   const float inf = std::numeric_limits<float>::infinity();
@@ -399,7 +436,7 @@ TEST_F(BrdfParityTest, DegenerateInputsGiveFiniteNonNegativeValues) {
     for (const gpu::MaterialRecord& material : cornerMaterials(model)) {
       for (float zi : tiny) {
         for (float zo : {1e-20f, 1e-45f, 0.5f, 0.0f}) {
-          const bool zero = !(zi > 0.0f && zo > 0.0f);
+          const bool zero = isTwoSided(modelInfo(model)) ? zi == 0.0f || zo == 0.0f : !(zi > 0.0f && zo > 0.0f);
           add(material, vec3(1.0f, 0.0f, zi), vec3(-1.0f, 0.0f, zo), zero);  // mirror plane
           add(material, vec3(1.0f, 0.0f, zi), vec3(1.0f, 0.0f, zo), zero);   // wi = wo
           add(material, vec3(0.6f, 0.8f, zi), vec3(-0.8f, 0.6f, zo), zero);  // perpendicular

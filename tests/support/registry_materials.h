@@ -36,4 +36,13 @@ inline std::vector<GenericMaterial> uncoveredModelMaterials(const std::set<std::
   return materials;
 }
 
+// The viewer's polar angles (degrees from the normal) a sampling test draws from: normal, oblique and grazing, and
+// for a two-sided model (rough glass) from inside too: 120 deg (beyond the critical angle of many microfacets) and
+// 160 deg.
+inline std::vector<double> samplingAngles(std::string_view model) {
+  const ModelInfo* info = findModel(model);
+  if (info != nullptr && isTwoSided(*info)) return {0.0, 45.0, 85.0, 120.0, 160.0};
+  return {0.0, 45.0, 85.0};
+}
+
 }  // namespace raylab::test
