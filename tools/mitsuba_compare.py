@@ -11,7 +11,10 @@ The scenes:
   cornell   a Lambert Cornell box (white, red and green walls, two white spheres) lit by a quad light
   spheres   a Lambert, a mirror and a glass sphere on a Lambert floor, lit by an HDR environment
             (Blender's CC0 `courtyard` world, copied to assets/scenes/environments by tools/setup.sh)
-  metals    three GGX conductors (gold, aluminium, and k = 0) on the same floor under the same environment
+  metals    three GGX conductors (gold, a brushed anisotropic aluminium, and k = 0) on the same floor under the
+            same environment and a point light
+  glass     rough glass (ggx_dielectric against Mitsuba's roughdielectric) at three roughnesses on the same
+            floor under the same environment and a point light
 
 Agreement: both images are averaged over blocks of BLOCK x BLOCK pixels and relMAE = sum |raylab - mitsuba| /
 sum mitsuba over the blocks and the R, G, B channels. The noise floor is the same figure between two raylab
@@ -63,10 +66,13 @@ TARGET_RELMSE = 1e-3
 @dataclass(frozen=True)
 class Material:
     name: str
-    kind: str  # diffuse, mirror, glass or conductor (GGX: raylab's ggx_conductor, Mitsuba's roughconductor)
+    # diffuse, mirror, glass, conductor (GGX: raylab's ggx_conductor, Mitsuba's roughconductor) or roughglass
+    # (raylab's ggx_dielectric, Mitsuba's roughdielectric)
+    kind: str
     rgb: tuple[float, float, float] = (0.0, 0.0, 0.0)  # diffuse reflectance
     emission: tuple[float, float, float] | None = None  # radiance of an area light
-    alpha: float = 0.0  # conductor: GGX roughness (isotropic)
+    alpha: float = 0.0  # conductor, roughglass: GGX roughness along the tangent
+    alpha_v: float | None = None  # along the bitangent, when anisotropic (the tangent runs along latitudes)
     eta: tuple[float, float, float] = (1.0, 1.0, 1.0)  # conductor: complex index of refraction eta + i k
     k: tuple[float, float, float] = (0.0, 0.0, 0.0)
     metal: str | None = None  # conductor: a named metal of both renderers instead of eta and k
@@ -98,6 +104,7 @@ class Case:
     balls: list[Ball]
     camera: tuple[tuple[float, float, float], tuple[float, float, float], float]  # position, target, yfov (deg)
     environment: str | None = None  # a file of ENVIRONMENTS
+    point_light: tuple[tuple[float, float, float], float] | None = None  # position, intensity (W/sr, white)
     max_depth: int = 6  # raylab's D
     notes: dict = field(default_factory=dict)
 
@@ -128,22 +135,43 @@ def spheres() -> Case:
                 environment="courtyard.exr")
 
 
+# A point light beside the environment, up and to the right of the camera (W/sr).
+POINT_LIGHT = ((2.5, 3.5, 3.0), 6.0)
+
+
 def metals() -> Case:
-    """GGX conductors (gold named on both sides, an aluminium-like index at 650, 550 and 450 nm, and a rough
-    dielectric index with k = 0, whose F0 is 4%) on a Lambert floor under the environment: the second library's
-    ggx_conductor against Mitsuba's roughconductor with distribution=ggx."""
+    """GGX conductors (gold named on both sides, a brushed aluminium-like index at 650, 550 and 450 nm with
+    anisotropic roughness, and a rough dielectric index with k = 0, whose F0 is 4%) on a Lambert floor under the
+    environment and a point light: the second library's ggx_conductor against Mitsuba's roughconductor with
+    distribution=ggx."""
     materials = [Material("floor", "diffuse", (0.5, 0.5, 0.5)),
                  Material("gold", "conductor", alpha=0.1, metal="Au"),
-                 Material("aluminium", "conductor", alpha=0.3, eta=(1.66, 0.96, 0.62), k=(8.07, 6.69, 5.31)),
+                 Material("aluminium", "conductor", alpha=0.05, alpha_v=0.4, eta=(1.66, 0.96, 0.62),
+                          k=(8.07, 6.69, 5.31)),
                  Material("low", "conductor", alpha=0.05, eta=(1.5, 1.5, 1.5))]
     quads = [Quad("floor", (-4.0, 0.0, 4.0), (8.0, 0.0, 0.0), (0.0, 0.0, -8.0), "floor")]
     balls = [Ball("gold", (-1.3, 0.6, 0.0), 0.6, "gold"), Ball("aluminium", (0.0, 0.6, -0.4), 0.6, "aluminium"),
              Ball("low", (1.3, 0.6, 0.0), 0.6, "low")]
     return Case("metals", materials, quads, balls, ((0.0, 1.6, 5.0), (0.0, 0.5, 0.0), 35.0),
-                environment="courtyard.exr")
+                environment="courtyard.exr", point_light=POINT_LIGHT)
 
 
-CASES = {"cornell": cornell, "spheres": spheres, "metals": metals}
+def glass() -> Case:
+    """Rough glass spheres (eta 1.5; GGX alpha 0.05, 0.2 and 0.5) on a Lambert floor under the environment and a
+    point light: ggx_dielectric against Mitsuba's roughdielectric with distribution=ggx, light refracted in and out
+    of each sphere (max depth 8)."""
+    materials = [Material("floor", "diffuse", (0.5, 0.5, 0.5)),
+                 Material("frosted 0.05", "roughglass", alpha=0.05), Material("frosted 0.2", "roughglass", alpha=0.2),
+                 Material("frosted 0.5", "roughglass", alpha=0.5)]
+    quads = [Quad("floor", (-4.0, 0.0, 4.0), (8.0, 0.0, 0.0), (0.0, 0.0, -8.0), "floor")]
+    balls = [Ball("frosted 0.05", (-1.3, 0.6, 0.0), 0.6, "frosted 0.05"),
+             Ball("frosted 0.2", (0.0, 0.6, -0.4), 0.6, "frosted 0.2"),
+             Ball("frosted 0.5", (1.3, 0.6, 0.0), 0.6, "frosted 0.5")]
+    return Case("glass", materials, quads, balls, ((0.0, 1.6, 5.0), (0.0, 0.5, 0.0), 35.0),
+                environment="courtyard.exr", point_light=POINT_LIGHT, max_depth=8)
+
+
+CASES = {"cornell": cornell, "spheres": spheres, "metals": metals, "glass": glass}
 
 
 def write_gltf(case: Case, directory: Path) -> Path:
@@ -155,8 +183,11 @@ def write_gltf(case: Case, directory: Path) -> Path:
         elif m.kind == "mirror":
             raylab = {"model": "lambert", "rho_d": [0.0, 0.0, 0.0], "delta": 1.0}
         elif m.kind == "conductor":
-            raylab = {"model": "ggx_conductor", "alpha_x": m.alpha, "alpha_y": m.alpha, "rho_s": [1.0, 1.0, 1.0]}
+            raylab = {"model": "ggx_conductor", "alpha_x": m.alpha, "alpha_y": m.alpha_v or m.alpha,
+                      "rho_s": [1.0, 1.0, 1.0]}
             raylab.update({"metal": m.metal} if m.metal else {"eta": list(m.eta), "k": list(m.k)})
+        elif m.kind == "roughglass":
+            raylab = {"model": "ggx_dielectric", "alpha_x": m.alpha, "alpha_y": m.alpha_v or m.alpha, "eta": 1.5}
         else:
             raylab = {"model": "glass", "eta": 1.5, "tint": [1.0, 1.0, 1.0]}
         index[m.name] = g.material(m.name, raylab)
@@ -173,6 +204,8 @@ def write_gltf(case: Case, directory: Path) -> Path:
         g.sphere(b.name, list(b.center), b.radius, index[b.material])
     position, target, yfov = case.camera
     g.camera("camera", list(position), list(target), yfov)
+    if case.point_light:
+        g.point_light("point light", list(case.point_light[0]), case.point_light[1])
     if case.environment:
         (directory / "environments").mkdir(parents=True, exist_ok=True)
         link = directory / "environments" / case.environment
@@ -202,9 +235,13 @@ def mitsuba_scene(case: Case, directory: Path, width: int, height: int, spp: int
         elif m.kind == "mirror":
             bsdfs[m.name] = {"type": "conductor", "material": "none"}
         elif m.kind == "conductor":
-            bsdfs[m.name] = {"type": "roughconductor", "distribution": "ggx", "alpha": m.alpha}
+            bsdfs[m.name] = {"type": "roughconductor", "distribution": "ggx"}
+            bsdfs[m.name].update({"alpha_u": m.alpha, "alpha_v": m.alpha_v} if m.alpha_v else {"alpha": m.alpha})
             bsdfs[m.name].update({"material": m.metal} if m.metal else {
                 "eta": {"type": "rgb", "value": list(m.eta)}, "k": {"type": "rgb", "value": list(m.k)}})
+        elif m.kind == "roughglass":
+            bsdfs[m.name] = {"type": "roughdielectric", "distribution": "ggx", "int_ior": 1.5, "ext_ior": 1.0}
+            bsdfs[m.name].update({"alpha_u": m.alpha, "alpha_v": m.alpha_v} if m.alpha_v else {"alpha": m.alpha})
         else:
             bsdfs[m.name] = {"type": "dielectric", "int_ior": 1.5, "ext_ior": 1.0}
     emission = {m.name: m.emission for m in case.materials}
@@ -228,7 +265,13 @@ def mitsuba_scene(case: Case, directory: Path, width: int, height: int, spp: int
             shape["emitter"] = {"type": "area", "radiance": {"type": "rgb", "value": list(emission[q.material])}}
         scene[f"quad{i}"] = shape
     for i, b in enumerate(case.balls):
-        scene[f"ball{i}"] = {"type": "sphere", "center": list(b.center), "radius": b.radius, "bsdf": bsdfs[b.material]}
+        # Turned so that the sphere's own pole axis z is the world's y: its dp/du, the tangent of anisotropic
+        # roughness, then runs along latitudes around y, as raylab's sphere tangent does.
+        to_world = T().translate(list(b.center)) @ T().rotate([1.0, 0.0, 0.0], -90.0) @ T().scale(b.radius)
+        scene[f"ball{i}"] = {"type": "sphere", "to_world": to_world, "bsdf": bsdfs[b.material]}
+    if case.point_light:
+        scene["point light"] = {"type": "point", "position": list(case.point_light[0]),
+                                "intensity": {"type": "rgb", "value": [case.point_light[1]] * 3}}
     if case.environment:
         scene["environment"] = {"type": "envmap", "filename": str(ENVIRONMENTS / case.environment), "scale": 1.0}
     return scene

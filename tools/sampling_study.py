@@ -62,6 +62,12 @@ LOOKS = {
                  "alpha_y": 0.15},
     "ashikhmin_shirley": {"model": "ashikhmin_shirley", "Rd": [0.6, 0.3, 0.5], "Rs": [0.05, 0.05, 0.05],
                           "nu": 1000, "nv": 40},
+    # The second library: a named metal, frosted glass (the light through it: transmission with MIS), rough diffuse.
+    "ggx_conductor": {"model": "ggx_conductor", "metal": "Au", "alpha_x": 0.12, "alpha_y": 0.12},
+    "ggx_dielectric": {"model": "ggx_dielectric", "alpha_x": 0.1, "alpha_y": 0.1, "eta": 1.5},
+    "gltf_pbr": {"model": "gltf_pbr", "base_color": [0.9, 0.6, 0.2], "metallic": 0.5, "roughness": 0.4},
+    "oren_nayar": {"model": "oren_nayar", "rho_d": [0.8, 0.45, 0.3], "sigma": 1.0},
+    "eon": {"model": "eon", "rho_d": [0.8, 0.45, 0.3], "r": 1.0},
 }
 
 

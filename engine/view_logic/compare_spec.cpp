@@ -68,7 +68,11 @@ CompareSpec parseCompareSpec(const std::string& text, const Scene& scene, const 
   spec.record = scene.materials[spec.material].record;
   switchModel(spec.record, model->id);
   try {
-    if (paramsAt < text.size()) applyParamList(spec.record, std::string_view(text).substr(paramsAt + 1), where);
+    // Name the material and the model: a command line may carry several overrides.
+    if (paramsAt < text.size()) {
+      applyParamList(spec.record, std::string_view(text).substr(paramsAt + 1),
+                     where + " '" + materialName + "' (" + std::string(model->name) + ")");
+    }
   } catch (const Error& error) {
     throw Error(error.what(), kExitUsage);
   }

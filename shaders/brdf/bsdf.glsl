@@ -1,7 +1,7 @@
 // The one dispatch over the BRDF library, in the local shading frame (z = shading normal; wi towards the
-// light, wo towards the viewer). f excludes the cosine: the caller multiplies by cos_i. Every model is
-// one-sided (0 when wi.z <= 0 or wo.z <= 0) and never NaN, Inf or negative for parameters in the ranges of its
-// table. A delta BSDF (glass) is 0 here: see bsdfSampleSpecular and the lobe flags (bsdfFlags) below.
+// light, wo towards the viewer). f excludes the cosine: the caller multiplies by |cos_i|. Every model is
+// one-sided (0 when wi.z <= 0 or wo.z <= 0) except the two-sided ones (isTwoSided: rough glass), and never NaN,
+// Inf or negative for parameters in the ranges of its table. A delta BSDF (glass) is 0 here: see bsdfSampleSpecular and the lobe flags (bsdfFlags) below.
 // The per-model branches are generated from the model registry (generated/bsdf_models.glsl, written by
 // tools/cmake/brdf_registry.py from shaders/brdf/models.cmake and each model's parameter table).
 #ifndef RAYLAB_BRDF_BSDF_GLSL
@@ -35,6 +35,10 @@ uint bsdfFlags(MaterialRecord m) { return modelFlags(m.model); }
 
 // True for a BSDF of delta lobes only (glass): bsdfEval, bsdfPdf and light sampling see nothing of it.
 bool isSpecularOnly(uint flags) { return (flags & (kLobeDiffuse | kLobeGlossy)) == 0u; }
+
+// True for transmission with a density (rough glass): wi and wo may lie on either side of the normal, and f,
+// its density and its samples are defined on both (the integrators shade it in the outward normal's frame).
+bool isTwoSided(uint flags) { return (flags & kLobeTransmission) != 0u && !isSpecularOnly(flags); }
 
 struct SpecularSample {
   vec3 wi;       // unit; zero when there is none

@@ -79,18 +79,21 @@ void closestHit(Hit hit, inout Payload p) {
     return;
   }
   applyTextures(material, s);
-  const ShadingSide side = shadingSide(s, wo);
+  const ShadingSide side = shadingSide(s, wo, bsdfFlags(material));
   const vec3 ng = side.ng;
   const vec3 ns = side.ns;
   const ShadingFrame frame = side.frame;
 
+  // Rough glass (two-sided) sees the lights on both sides of its surface.
   const float delta = featureEnabled(kFeatureMirror) ? material.delta : 0.0;
   if (delta < 1.0) {
     p.path.radiance += p.path.throughput * (1.0 - delta) * directLighting(s.position, ng, frame, toLocal(frame, wo), material, p);
   }
   if (delta > 0.0 && p.path.depth < params.maxDepth) {
-    const vec3 mirror = reflect(p.path.direction, ns);
-    if (dot(mirror, ng) > 0.0 && continuePath(p, offsetRayOrigin(s.position, ng), mirror, p.path.throughput * delta)) {
+    const vec3 viewerSide = leavingSide(ng, wo);
+    const vec3 mirror = reflect(p.path.direction, dot(ns, viewerSide) > 0.0 ? ns : -ns);
+    if (dot(mirror, viewerSide) > 0.0 &&
+        continuePath(p, offsetRayOrigin(s.position, viewerSide), mirror, p.path.throughput * delta)) {
       p.path.depth += 1u;
       p.done = false;
     }

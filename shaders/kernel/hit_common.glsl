@@ -21,22 +21,34 @@ void applyTextures(inout MaterialRecord material, Surface s) {
   }
 }
 
-// The side of the surface the ray arrived on, which the one-sided BRDFs shade: its geometric normal ng, the
-// shading normal ns and the local frame around ns.
+// The side of the surface a BSDF is shaded on, and its frame. A one-sided BRDF is shaded on the side the ray
+// arrived on: ng and ns face the viewer. A two-sided BSDF (rough glass, isTwoSided) sees both sides in the frame
+// of the outward normal: ng and ns are the outward ones, and woLocal.z < 0 means the viewer is inside.
+// Either way a direction w is usable only where the geometric and the shading normal agree on its side
+// (seesSameSide), and a ray towards w leaves from the side w points to (leavingSide).
 struct ShadingSide {
   vec3 ng;
   vec3 ns;
   ShadingFrame frame;
 };
 
-ShadingSide shadingSide(Surface s, vec3 wo) {
+ShadingSide shadingSide(Surface s, vec3 wo, uint flags) {
   ShadingSide side;
-  side.ng = s.frontFace ? s.geometricNormal : -s.geometricNormal;
-  side.ns = s.frontFace ? s.shadingNormal : -s.shadingNormal;
-  // Interpolated normals can face away from the viewer near silhouettes; the true surface cannot.
-  if (dot(side.ns, wo) <= 0.0) side.ns = side.ng;
+  const bool flip = !isTwoSided(flags) && !s.frontFace;
+  side.ng = flip ? -s.geometricNormal : s.geometricNormal;
+  side.ns = flip ? -s.shadingNormal : s.shadingNormal;
+  // Interpolated normals can put the viewer on the other side of the shading normal near silhouettes; the true
+  // surface cannot.
+  if (dot(side.ns, wo) * dot(side.ng, wo) <= 0.0) side.ns = side.ng;
   side.frame = makeShadingFrame(side.ns, s.tangent);
   return side;
 }
+
+// True when w lies on the same side of the geometric normal ng as its local z (wLocal.z) says it does of the
+// shading normal: light the geometric surface blocks, or a sample that would leak through it, is refused.
+bool seesSameSide(vec3 w, vec3 ng, float wLocalZ) { return dot(w, ng) * wLocalZ > 0.0; }
+
+// The geometric normal on the side w points to: where a ray towards w starts (offsetRayOrigin).
+vec3 leavingSide(vec3 ng, vec3 w) { return dot(w, ng) > 0.0 ? ng : -ng; }
 
 #endif

@@ -8,27 +8,28 @@
 
 #include "brdf/bsdf.glsl"
 #include "common/ray_offset.glsl"
+#include "kernel/hit_common.glsl"
 #include "kernel/light_sampling.glsl"
 #include "kernel/mis.glsl"
 #include "kernel/surface.glsl"
 
 // sum_k f_r(w_k, w_o) E_k over the delta lights (the first params.punctualLightCount LightRecords, each selected
 // with probability 1; sampleLight gives their irradiance E_k with density 1), a shadow ray each: equation 2 of
-// the slides, and the path integrator's estimate of the same lights. ng faces the viewer's side.
+// the slides, and the path integrator's estimate of the same lights. ng and frame are those of shadingSide
+// (kernel/hit_common.glsl): a one-sided BRDF sees the lights on the viewer's side, a two-sided one those on both.
 vec3 directLighting(vec3 position, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material,
                     inout Payload p) {
   vec3 sum = vec3(0.0);
-  const vec3 shadowOrigin = offsetRayOrigin(position, ng);
   for (uint k = 0u; k < params.punctualLightCount; ++k) {
     const LightSample light = sampleLight(k, position, vec3(0.5));
-    // Light below the geometric surface cannot reach this side, whatever the shading normal says.
-    if (dot(light.wi, ng) <= 0.0) continue;
     const vec3 wiLocal = toLocal(frame, light.wi);
-    const vec3 contribution = bsdfEval(material, wiLocal, woLocal) * light.radiance * wiLocal.z;
+    // Light the geometric surface blocks cannot arrive, whatever the shading normal says.
+    if (!seesSameSide(light.wi, ng, wiLocal.z)) continue;
+    const vec3 contribution = bsdfEval(material, wiLocal, woLocal) * light.radiance * abs(wiLocal.z);
     // Only light that would contribute is worth a shadow ray.
     if (!(maxComponent(contribution) > 0.0)) continue;
     p.path.shadowRays += 1u;
-    if (traceVisibility(shadowOrigin, light.wi, light.distance)) sum += contribution;
+    if (traceVisibility(offsetRayOrigin(position, leavingSide(ng, light.wi)), light.wi, light.distance)) sum += contribution;
   }
   return sum;
 }
@@ -43,17 +44,18 @@ vec3 sampleOneLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, Materi
   const LightChoice choice = selectLight(u.x);
   if (!(choice.pmf > 0.0)) return vec3(0.0);
   const LightSample light = sampleLight(choice.index, s.position, u.yzw);
-  if (!(light.pdf > 0.0) || !(dot(light.wi, ng) > 0.0)) return vec3(0.0);
+  if (!(light.pdf > 0.0)) return vec3(0.0);
   const vec3 wiLocal = toLocal(frame, light.wi);
+  if (!seesSameSide(light.wi, ng, wiLocal.z)) return vec3(0.0);
   const float pdf = choice.pmf * light.pdf;
   const float weight =
       misWeight(kSamplingLight, pdf, light.delta ? 0.0 : (1.0 - delta) * bsdfPdf(material, wiLocal, woLocal));
   if (!(weight > 0.0)) return vec3(0.0);
   const vec3 f = (1.0 - delta) * bsdfEval(material, wiLocal, woLocal);
-  const vec3 contribution = f * light.radiance * (max(wiLocal.z, 0.0) / pdf);
+  const vec3 contribution = f * light.radiance * (abs(wiLocal.z) / pdf);
   if (!(maxComponent(contribution) > 0.0)) return vec3(0.0);
   p.path.shadowRays += 1u;
-  if (!traceVisibility(offsetRayOrigin(s.position, ng), light.wi, light.distance)) return vec3(0.0);
+  if (!traceVisibility(offsetRayOrigin(s.position, leavingSide(ng, light.wi)), light.wi, light.distance)) return vec3(0.0);
   return weight * contribution;
 }
 

@@ -5,7 +5,8 @@
 // punctual light (directLighting) and of one emitting triangle, sphere or the environment image drawn by power
 // (sampleOneLight), then one continuation chosen by the BSDF's own sampler (bsdfSample), with the
 // mirror weight delta as a mixture f = (1 - delta) f_r + delta mirror; a specular-only BSDF (glass, by its lobe
-// flags) continues along one delta lobe (bsdfSampleSpecular). Light samples and emission reached by a
+// flags) continues along one delta lobe (bsdfSampleSpecular), and a two-sided one (rough glass) is shaded on both
+// sides, its lights and its continuation on either (kernel/hit_common.glsl, shadingSide). Light samples and emission reached by a
 // continuation are weighted against each other by misWeight (kernel/mis.glsl: the power heuristic, Veach 1997,
 // or one strategy alone for studies); delta lights are light-sampled only. The uniform background is left to
 // BSDF sampling. Russian roulette after kRouletteDepth bounces keeps the estimator unbiased (docs/integrators.md).
@@ -80,7 +81,8 @@ void closestHitPath(Hit hit, inout Payload p) {
     return;
   }
   applyTextures(material, s);
-  const ShadingSide side = shadingSide(s, wo);
+  const uint flags = bsdfFlags(material);
+  const ShadingSide side = shadingSide(s, wo, flags);
   const vec3 ng = side.ng;
   const vec3 ns = side.ns;
   const ShadingFrame frame = side.frame;
@@ -96,22 +98,23 @@ void closestHitPath(Hit hit, inout Payload p) {
   }
   p.path.lastPosition = s.position;
 
-  // The continuation: the mirror with probability delta, else a sample of f_r (weight f cos / pdf).
+  // The continuation: the mirror with probability delta, else a sample of f_r (weight f |cos| / pdf).
   const vec4 u = rngNext4(p.path.rng);
   if (u.w < delta) {
-    const vec3 mirror = reflect(p.path.direction, ns);
+    const vec3 viewerSide = leavingSide(ng, wo);
+    const vec3 mirror = reflect(p.path.direction, dot(ns, viewerSide) > 0.0 ? ns : -ns);
     p.path.lastSpecular = 1u;
-    if (dot(mirror, ng) > 0.0) continueOrEnd(p, offsetRayOrigin(s.position, ng), mirror, p.path.throughput);
+    if (dot(mirror, viewerSide) > 0.0) continueOrEnd(p, offsetRayOrigin(s.position, viewerSide), mirror, p.path.throughput);
     return;
   }
   const BsdfSample b = bsdfSample(material, woLocal, u.xyz);
   if (!(b.pdf > 0.0)) return;
   const vec3 wi = toWorld(frame, b.wi);
-  // A shading-normal sample below the geometric surface cannot leave this side.
-  if (!(dot(wi, ng) > 0.0)) return;
+  // A shading-normal sample on the other side of the geometric surface than its lobe meant cannot go there.
+  if (!seesSameSide(wi, ng, b.wi.z)) return;
   p.path.lastSpecular = 0u;
   p.path.lastPdf = (1.0 - delta) * b.pdf;
-  continueOrEnd(p, offsetRayOrigin(s.position, ng), wi, p.path.throughput * b.f * (b.wi.z / b.pdf));
+  continueOrEnd(p, offsetRayOrigin(s.position, leavingSide(ng, wi)), wi, p.path.throughput * b.f * (abs(b.wi.z) / b.pdf));
 }
 
 #endif

@@ -72,6 +72,37 @@ TEST(CliTest, UsageErrorsExitTwoAndNameTheOption) {
   }
 }
 
+// Bad parameters of the second library's models in a --material override (the default scene's material
+// 'phong'): exit 2, a message naming the material, the model, the parameter and its range, and nothing written.
+TEST(CliTest, BadModelParametersNameTheMaterialParameterAndRangeAndWriteNothing) {
+  const std::filesystem::path dir = std::filesystem::path(scratchDir()) / "bad_parameters";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string out = (dir / "image.exr").string();
+  const std::string png = (dir / "image.png").string();
+  struct Case {
+    std::string material;
+    std::string mentions;
+  };
+  const Case cases[] = {
+      {"phong=ggx_dielectric:eta=1", "'phong' (ggx_dielectric): eta = 1 is outside [1.001, 10]"},
+      {"phong=ggx_dielectric:eta=0.5", "'phong' (ggx_dielectric): eta = 0.5 is outside [1.001, 10]"},
+      {"phong=ggx_dielectric:alpha_x=nan", "'phong' (ggx_dielectric): alpha_x: expected a number, got 'nan'"},
+      {"phong=ggx_conductor:k=-1", "'phong' (ggx_conductor): k = -1 is outside [0, 20]"},
+      {"phong=ggx_conductor:metal=Unobtainium", "metal 'Unobtainium' is not one of ggx_conductor's (Ag, Al, Au, Cr, Cu)"},
+      {"phong=gltf_pbr:ior=4", "'phong' (gltf_pbr): ior = 4 is outside [1, 3]"},
+      {"phong=eon:r=2", "'phong' (eon): r = 2 is outside [0, 1]"},
+  };
+  for (const Case& c : cases) {
+    const CommandResult result =
+        runRaylab({"render", "--material", c.material, "--out", out, "--png", png, "--spp", "1", "--width", "8", "--height", "8"});
+    EXPECT_EQ(result.exitCode, 2) << c.material << ": " << result.output;
+    EXPECT_NE(result.output.find(c.mentions), std::string::npos) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(out)) << c.material;
+    EXPECT_FALSE(std::filesystem::exists(png)) << c.material;
+  }
+}
+
 // A missing, unreadable or non-finite environment image: exit 1, a message naming the file, and no output.
 TEST(CliTest, ABadEnvironmentImageExitsOneNamingItAndWritesNothing) {
   const std::filesystem::path dir = std::filesystem::path(scratchDir()) / "environment";

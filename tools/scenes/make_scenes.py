@@ -402,6 +402,42 @@ def showcase_hdri():
     return g
 
 
+def showcase_modern():
+    """The second library under an HDR environment (the path integrator): the named metals and a brushed
+    anisotropic one in the back row; rough glass at three roughnesses and Lambert, Oren-Nayar and EON side by side
+    in the middle; a gltf_pbr metallic x roughness grid in front."""
+    g = Gltf("showcase_modern")
+    light = g.material("checker light", {"model": "lambert", "rho_d": [0.7, 0.7, 0.68]}, (0.7, 0.7, 0.68))
+    dark = g.material("checker dark", {"model": "lambert", "rho_d": [0.18, 0.18, 0.2]}, (0.18, 0.18, 0.2))
+    add_checker(g, "floor", (-10.0, 10.0), (-8.0, 8.0), 0.0, 1.0, (light, dark))
+    radius = 0.5
+    back = [(metal, {"model": "ggx_conductor", "metal": metal, "alpha_x": 0.12, "alpha_y": 0.12})
+            for metal in ("Au", "Ag", "Cu", "Al", "Cr")]
+    back.append(("brushed", {"model": "ggx_conductor", "metal": "Al", "alpha_x": 0.03, "alpha_y": 0.35}))
+    for i, (name, params) in enumerate(back):
+        g.sphere(name, [(i - 2.5) * 1.25, radius, -2.0], radius, g.material(name, params, (0.8, 0.8, 0.8)))
+    middle = [("rough glass 0.02", {"model": "ggx_dielectric", "alpha_x": 0.02, "alpha_y": 0.02, "eta": 1.5}),
+              ("rough glass 0.1", {"model": "ggx_dielectric", "alpha_x": 0.1, "alpha_y": 0.1, "eta": 1.5}),
+              ("rough glass 0.3", {"model": "ggx_dielectric", "alpha_x": 0.3, "alpha_y": 0.3, "eta": 1.5}),
+              ("lambert", {"model": "lambert", "rho_d": [0.8, 0.45, 0.3]}),
+              ("oren_nayar", {"model": "oren_nayar", "rho_d": [0.8, 0.45, 0.3], "sigma": 1.0}),
+              ("eon", {"model": "eon", "rho_d": [0.8, 0.45, 0.3], "r": 1.0})]
+    for i, (name, params) in enumerate(middle):
+        preview = params.get("rho_d", [0.9, 0.9, 0.9])
+        g.sphere(name, [(i - 2.5) * 1.25, radius, -0.4], radius, g.material(name, params, preview))
+    small = 0.3
+    for row, metallic in enumerate((0.0, 0.5, 1.0)):
+        for column, roughness in enumerate((0.1, 0.4, 0.8)):
+            name = "gltf_pbr metallic %g roughness %g" % (metallic, roughness)
+            params = {"model": "gltf_pbr", "base_color": [0.9, 0.6, 0.2], "metallic": metallic,
+                      "roughness": roughness, "ior": 1.5}
+            g.sphere(name, [(column - 1) * 0.8, small, 0.9 + 0.75 * row], small,
+                     g.material(name, params, (0.9, 0.6, 0.2)))
+    g.camera("camera", [0.0, 4.0, 8.0], [0.0, 0.2, -0.3], 36.0)
+    g.environment("environments/%s.exr" % SHOWCASE_HDRI)
+    return g
+
+
 # The world of showcase_hdri.gltf, from /usr/share/blender/datafiles/studiolights/world (Debian blender-data).
 SHOWCASE_HDRI = "sunrise"
 
@@ -522,7 +558,7 @@ def main():
         return
     os.makedirs(options.directory, exist_ok=True)
     sweeps = [sweep_scene(options.raylab, *sweep) for sweep in SWEEPS]
-    for scene in sweeps + [showcase(), showcase_hdri(), cornell_box(), cornell_box_area(), minimal()]:
+    for scene in sweeps + [showcase(), showcase_hdri(), showcase_modern(), cornell_box(), cornell_box_area(), minimal()]:
         path = scene.write(options.directory)
         print("wrote %s (%d bytes)" % (os.path.relpath(path), os.path.getsize(path)))
 
