@@ -168,7 +168,17 @@ bool hasDiffuseColour(std::uint32_t model) { return findRole(modelInfo(model), "
 
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where) {
   if (input.transmission >= 1.0f) {
-    gpu::MaterialRecord record = defaultRecord(modelId("glass"));
+    // Glass: smooth up to a roughness of 0.001, rough (ggx_dielectric, alpha = roughness^2 as glTF's own BRDF)
+    // beyond, unless the index is too close to 1 for an interface, where smooth glass is as invisible as both.
+    const gpu::MaterialRecord smooth = defaultRecord(modelId("glass"));
+    const ModelInfo& rough = modelInfo(modelId("ggx_dielectric"));
+    const bool isRough = input.roughness > 0.001f && input.ior >= findParam(rough, "eta")->min;
+    gpu::MaterialRecord record = isRough ? defaultRecord(rough.id) : smooth;
+    if (isRough) {
+      const float alpha = std::max(input.roughness * input.roughness, findParam(rough, "alpha_x")->min);
+      setParam(record, "alpha_x", glm::vec3(alpha), where + " (roughness squared)");
+      setParam(record, "alpha_y", glm::vec3(alpha), where + " (roughness squared)");
+    }
     setParam(record, "eta", glm::vec3(input.ior), where + " (KHR_materials_ior)");
     setParam(record, "tint", input.baseColor, where + " (base colour as glass tint)");
     return record;

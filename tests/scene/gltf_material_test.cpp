@@ -156,11 +156,30 @@ TEST(GltfMaterial, IorSetsEtaAndFullTransmissionMakesGlass) {
 
   const Scene glass = loadMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 1.7}}},
                                                     {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}},
-                                    {"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 1.0, 0.95, 1.0}}}}});
+                                    {"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 1.0, 0.95, 1.0}},
+                                                              {"roughnessFactor", 0.0}}}});
   const gpu::MaterialRecord& g = glass.materials[0].record;
   EXPECT_EQ(g.model, modelId("glass"));
   EXPECT_NEAR(getParam(g, "eta").x, 1.7f, 1e-6f);
   expectNear(getParam(g, "tint"), {0.9f, 1.0f, 0.95f}, "tint = base colour");
+
+  // Rough transmission is rough glass with alpha = roughness^2; glTF's default roughness is 1.
+  const Scene frosted = loadMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 1.45}}},
+                                                      {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}},
+                                      {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.9, 1.0, 1.0}},
+                                                                {"roughnessFactor", 0.3}}}});
+  const gpu::MaterialRecord& f = frosted.materials[0].record;
+  EXPECT_EQ(f.model, modelId("ggx_dielectric"));
+  EXPECT_NEAR(getParam(f, "alpha_x").x, 0.09f, 1e-6f);
+  EXPECT_NEAR(getParam(f, "alpha_y").x, 0.09f, 1e-6f);
+  EXPECT_NEAR(getParam(f, "eta").x, 1.45f, 1e-6f);
+  expectNear(getParam(f, "tint"), {0.8f, 0.9f, 1.0f}, "tint = base colour");
+  const Scene byDefault = loadMaterial({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}});
+  EXPECT_EQ(byDefault.materials[0].record.model, modelId("ggx_dielectric"));
+  EXPECT_NEAR(getParam(byDefault.materials[0].record, "alpha_x").x, 1.0f, 1e-6f);
+  const Scene noInterface = loadMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 1.0}}},
+                                                          {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}});
+  EXPECT_EQ(noInterface.materials[0].record.model, modelId("glass")) << "ior 1: no interface, smooth or rough";
 
   WarningCapture warnings;
   const Scene partial = loadMaterial({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}}}});
