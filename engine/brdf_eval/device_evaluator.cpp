@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "brdf_tables/brdf_tables.h"
 #include "shared/bindings.h"
 #include "util/error.h"
 #include "util/timer.h"
@@ -35,7 +36,8 @@ BatchKernel createBatchKernel(const Device& device, const BatchLayout& layout, s
   BatchKernel batch;
   batch.capacity = capacity;
   const DescriptorBinding bindings[] = {{layout.inputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                        {layout.outputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+                                        {layout.outputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                        {gpu::kBindingBrdfTables, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
   batch.kernel = createComputeKernel(device, layout.shader, bindings, layout.pushBytes);
   batch.inputs = createBuffer(device, VkDeviceSize(capacity) * layout.inputStride,
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kDevice,
@@ -45,12 +47,15 @@ BatchKernel createBatchKernel(const Device& device, const BatchLayout& layout, s
                                MemoryUse::kDevice, layout.outputName);
   writeStorageBuffer(device, batch.kernel.descriptors.set, layout.inputBinding, batch.inputs.handle);
   writeStorageBuffer(device, batch.kernel.descriptors.set, layout.outputBinding, batch.outputs.handle);
+  batch.tables = createBrdfTables(device);
+  writeStorageBuffer(device, batch.kernel.descriptors.set, gpu::kBindingBrdfTables, batch.tables.handle);
   return batch;
 }
 
 }  // namespace
 
 void destroyBatchKernel(const Device& device, BatchKernel& batch) {
+  destroyBuffer(device, batch.tables);
   destroyBuffer(device, batch.outputs);
   destroyBuffer(device, batch.inputs);
   destroyComputeKernel(device, batch.kernel);

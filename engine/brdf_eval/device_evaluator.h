@@ -18,6 +18,7 @@ struct BatchKernel {
   ComputeKernel kernel;
   Buffer inputs;
   Buffer outputs;
+  Buffer tables;  // the BRDF library's tables (brdf_tables/brdf_tables.h)
   std::uint32_t capacity = 0;
 };
 void destroyBatchKernel(const Device& device, BatchKernel& batch);

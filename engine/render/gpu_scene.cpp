@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "brdf_tables/brdf_tables.h"
 #include "scene/environment_tables.h"
 #include "shared/bindings.h"
 #include "util/error.h"
@@ -286,6 +287,7 @@ void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) 
   gpuScene.texels = createBufferWithData<std::uint32_t>(device, texels, kStorage, "texels");
   const std::vector<float> environment = packEnvironment(scene.environment, environmentTables, lights.environmentLight);
   gpuScene.environment = createBufferWithData<float>(device, environment, kStorage, "environment");
+  gpuScene.brdfTables = createBrdfTables(device);
 }
 
 }  // namespace
@@ -295,7 +297,8 @@ void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
   for (AccelerationStructure& blas : gpuScene.blases) destroyAccelerationStructure(device, blas);
   for (Buffer* buffer : {&gpuScene.instances, &gpuScene.positions, &gpuScene.normals, &gpuScene.uvs,
                          &gpuScene.indices, &gpuScene.spheres, &gpuScene.sphereAabbs, &gpuScene.materials,
-                         &gpuScene.lights, &gpuScene.textures, &gpuScene.texels, &gpuScene.environment}) {
+                         &gpuScene.lights, &gpuScene.textures, &gpuScene.texels, &gpuScene.environment,
+                         &gpuScene.brdfTables}) {
     destroyBuffer(device, *buffer);
   }
   gpuScene = {};
@@ -328,6 +331,7 @@ std::vector<DescriptorBinding> sceneBindings() {
       {gpu::kBindingTextures, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingTexels, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingEnvironment, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingBrdfTables, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   };
 }
 
@@ -344,6 +348,7 @@ void writeSceneDescriptors(const Device& device, VkDescriptorSet set, const GpuS
   writeStorageBuffer(device, set, gpu::kBindingTextures, gpuScene.textures.handle);
   writeStorageBuffer(device, set, gpu::kBindingTexels, gpuScene.texels.handle);
   writeStorageBuffer(device, set, gpu::kBindingEnvironment, gpuScene.environment.handle);
+  writeStorageBuffer(device, set, gpu::kBindingBrdfTables, gpuScene.brdfTables.handle);
 }
 
 }  // namespace raylab

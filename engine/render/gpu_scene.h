@@ -28,6 +28,7 @@ struct GpuScene {
   Buffer textures;  // TextureRecord[]
   Buffer texels;    // RGBA8 sRGB texels of every texture
   Buffer environment;  // EnvironmentHeader, the environment image and its sampling tables
+  Buffer brdfTables;   // the BRDF library's tables (brdf_tables/brdf_tables.h)
   std::vector<AccelerationStructure> blases;
   AccelerationStructure tlas;
   // gpu::kGeometry... of each TLAS instance, in instance order: instance i's custom index and SBT record

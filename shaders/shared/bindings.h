@@ -19,6 +19,8 @@ RL_CONST uint kBindingLights = 8;     // LightRecord[]: every light, with the li
 RL_CONST uint kBindingTextures = 13;  // TextureRecord[]
 RL_CONST uint kBindingTexels = 14;    // uint[] RGBA8 sRGB texels of every texture, concatenated
 RL_CONST uint kBindingEnvironment = 18;  // EnvironmentHeader, then the image and its sampling tables
+// The BRDF library's tables (shared/brdf_tables.h), bound for every kernel that evaluates BRDFs.
+RL_CONST uint kBindingBrdfTables = 24;
 
 // Per-kernel outputs.
 RL_CONST uint kBindingAccumulation = 9;  // vec4[] running sum of radiance samples per pixel
