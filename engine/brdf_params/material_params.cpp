@@ -142,9 +142,13 @@ glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name) {
 
 glm::vec3 previewColour(const gpu::MaterialRecord& record) {
   const ModelInfo& model = modelInfo(record.model);
-  if (const ParamInfo* diffuse = findRole(model, "diffuse")) return getParam(record, diffuse->name);
+  // A colour in [0, 1]: the diffuse colour, else the specular one, else the first RGB parameter that is a colour
+  // (not an index of refraction like a conductor's eta, which glTF's baseColorFactor could not hold).
+  const auto colour = [&](const ParamInfo& param) { return glm::clamp(getParam(record, param.name), 0.0f, 1.0f); };
+  if (const ParamInfo* diffuse = findRole(model, "diffuse"); diffuse && diffuse->rgb) return colour(*diffuse);
+  if (const ParamInfo* specular = findRole(model, "specular"); specular && specular->rgb) return colour(*specular);
   for (const ParamInfo& param : model.params) {
-    if (param.rgb) return getParam(record, param.name);
+    if (param.rgb && param.min >= 0.0f && param.max <= 1.0f) return colour(param);
   }
   return glm::vec3(0.5f);
 }

@@ -94,8 +94,8 @@ glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name);
 // applied first, whatever its place in the list, so that the other entries refine it.
 void applyParamList(gpu::MaterialRecord& record, std::string_view text, const std::string& where);
 
-// The colour a material shows at a glance (glTF viewers, a Lambert stand-in): its model's diffuse colour, else
-// its first colour (glass's tint), else grey.
+// The colour a material shows at a glance (glTF viewers, a Lambert stand-in), in [0, 1]: its model's diffuse
+// colour, else its specular colour, else its first RGB parameter ranging within [0, 1] (glass's tint), else grey.
 glm::vec3 previewColour(const gpu::MaterialRecord& record);
 
 // A record of `model` with every parameter at its default.

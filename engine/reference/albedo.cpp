@@ -61,6 +61,33 @@ dvec3 specularIntegrand(const Material& material, const SpecularLobe& lobe, cons
   return evalLobes(material, wi, wo).specular * (wi.z * extra * jacobian);
 }
 
+// The transmission term of a two-sided model (rough glass) for wo outside, in the same polar gnomonic coordinates of
+// the transmission half vector H (the whole plane: every H with H_z > 0 refracts wo to some wi inside, unless that
+// wi comes out on the outside, where the integrand is 0). wi = refract(wo, H) and dwi = (eta wi.H + wo.H)^2 /
+// (eta^2 |wi.H|) dH (Walter et al. 2007, eq. 17). The integrand is weighted by eta_i^2 / eta_o^2 = eta^2, which by
+// generalised reciprocity turns the viewer's integral over wi into the fraction of light arriving from wo that
+// is transmitted.
+dvec3 transmissionIntegrand(const Material& material, const SpecularLobe& lobe, double eta, const dvec3& wo, double v,
+                            double psi) {
+  const double a = lobe.widths.x * std::cos(psi);
+  const double b = lobe.widths.y * std::sin(psi);
+  const double tauMax = 0.5 * kPi;
+  const double rho = std::tan(v * tauMax);
+  const double secant2 = 1.0 + rho * rho * (a * a + b * b);
+  const double jacobian = lobe.widths.x * lobe.widths.y * rho * (1.0 + rho * rho) * tauMax / (secant2 * std::sqrt(secant2));
+  const dvec3 H = dvec3(rho * a, rho * b, 1.0) / std::sqrt(secant2);
+  const double c = glm::dot(wo, H);
+  if (!(c > 0.0)) return dvec3(0.0);
+  const double ratio = 1.0 / eta;
+  const double sin2T = ratio * ratio * (1.0 - c * c);
+  const dvec3 wi = -ratio * wo + (ratio * c - std::sqrt(1.0 - sin2T)) * H;  // sin2T < 1 from outside
+  if (!(wi.z < 0.0)) return dvec3(0.0);
+  const double wiH = glm::dot(wi, H);
+  const double denominator = eta * wiH + c;
+  const double dwi = denominator * denominator / (eta * eta * std::abs(wiH));
+  return evalLobes(material, wi, wo).specular * (-wi.z * dwi * jacobian * eta * eta);
+}
+
 }  // namespace
 
 dvec3 directionFromAngles(double theta, double phi) {
@@ -93,12 +120,21 @@ Albedo directionalAlbedo(const Material& material, const dvec3& wo, const Albedo
         [&](double v, double psi) { return specularIntegrand(material, *lobe, wo, mirrorFrame, v, psi); },
         dvec2(0.0, 0.0), dvec2(1.0, 2.0 * kPi), cubature);
   }
+  CubatureResult transmission;
+  transmission.converged = true;
+  const std::optional<double> eta = transmissionEta(material);
+  if (const std::optional<SpecularLobe> lobe = specularLobe(material); lobe && eta) {
+    transmission = integrate2d(
+        [&](double v, double psi) { return transmissionIntegrand(material, *lobe, *eta, wo, v, psi); },
+        dvec2(0.0, 0.0), dvec2(1.0, 2.0 * kPi), cubature);
+  }
   albedo.diffuse = diffuse.value;
   albedo.specular = specular.value;
-  albedo.value = diffuse.value + specular.value;
-  albedo.errorEstimate = diffuse.errorEstimate + specular.errorEstimate;
-  albedo.evaluations = diffuse.evaluations + specular.evaluations;
-  albedo.converged = diffuse.converged && specular.converged;
+  albedo.transmission = transmission.value;
+  albedo.value = diffuse.value + specular.value + transmission.value;
+  albedo.errorEstimate = diffuse.errorEstimate + specular.errorEstimate + transmission.errorEstimate;
+  albedo.evaluations = diffuse.evaluations + specular.evaluations + transmission.evaluations;
+  albedo.converged = diffuse.converged && specular.converged && transmission.converged;
   return albedo;
 }
 

@@ -8,6 +8,9 @@
 // along each angle, so that the horizon is an edge of the domain instead of a cut through it:
 //   - a lobe around the mirror direction of wo (SpecularLobe::aroundMirror): in wi space;
 //   - any other lobe: around n in half-vector space, wi = reflect(wo, H), dwi = 4 (wo.H) dH.
+// A two-sided model (rough glass) adds its transmission, integrated over its refraction half vector in the same
+// coordinates and weighted by eta^2 (generalised reciprocity): for it, the albedo is the fraction of the light
+// arriving from wo that is reflected or transmitted, at most 1 (docs/brdfs.md, "ggx_dielectric").
 #pragma once
 
 #include "reference/brdf_reference.h"
@@ -20,9 +23,10 @@ struct AlbedoOptions {
 };
 
 struct Albedo {
-  dvec3 value{0.0};           // diffuse + specular
+  dvec3 value{0.0};           // diffuse + specular + transmission
   dvec3 diffuse{0.0};
-  dvec3 specular{0.0};
+  dvec3 specular{0.0};        // reflected by the glossy lobe
+  dvec3 transmission{0.0};    // a two-sided model's: transmitted, as a fraction of the light arriving from wo
   double errorEstimate = 0.0; // absolute, largest channel (the cubature's estimate; pessimistic)
   long long evaluations = 0;  // calls of the model
   bool converged = false;

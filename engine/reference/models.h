@@ -56,5 +56,7 @@ std::uint32_t lobeFlags(const Material& material);
 // Empty for every other model.
 std::optional<dvec3> sampleTwoSided(const Material& material, const dvec3& wo, const dvec3& u);
 std::optional<double> pdfTwoSided(const Material& material, const dvec3& wi, const dvec3& wo);
+// A two-sided model's index of refraction, inside over outside (its parameter of kind eta); empty for the others.
+std::optional<double> transmissionEta(const Material& material);
 
 }  // namespace raylab::reference

@@ -100,6 +100,24 @@ SweepSpec validatedSpec(const SweepOptions& o) {
     if (equals == std::string::npos || equals == 0) usage("--set: expected K=V, got '" + set + "'");
     const std::string name = set.substr(0, equals);
     const std::string option = "--set " + name;
+    if (isPresetKey(*model, name)) {
+      // A named set (metal=Au): its parameters, in the order the model's file lists them.
+      try {
+        gpu::MaterialRecord preset = sweepBaseMaterial(model->id);
+        applyPreset(preset, name, set.substr(equals + 1), option);
+        for (const Preset& candidate : model->presets) {
+          if (candidate.key != name || candidate.name != set.substr(equals + 1)) continue;
+          for (const PresetValue& v : candidate.values) {
+            if (v.param == o.param) usage(option + " sets " + std::string(v.param) + ", the swept parameter");
+            setParam(scratch, v.param, v.value, option);
+            spec.fixed.emplace_back(std::string(v.param), v.value);
+          }
+        }
+      } catch (const Error& error) {
+        usage(error.what());
+      }
+      continue;
+    }
     const ParamInfo* fixed = findParam(*model, name);
     if (fixed == nullptr) {
       usage("--set: '" + name + "' is not a parameter of " + o.model + " (it has " + paramNames(*model) + ")");
@@ -146,7 +164,8 @@ void addSweepOptions(CLI::App* command, SweepOptions& o) {
   addFlag(command, "--log", o.log, "geometric steps (default for exponents and roughnesses)");
   addFlag(command, "--linear", o.linear, "linear steps (default for the others)");
   addTextList(command, "--set", o.sets, "K=V",
-              "another parameter of the model, RGB as r/g/b (repeatable), e.g. --set rho_d=0.2/0.1/0.05");
+              "another parameter of the model, RGB as r/g/b, or a named set of them (repeatable), e.g. --set "
+              "rho_d=0.2/0.1/0.05, --set metal=Au");
   addText(command, "--out", o.exrPath, "FILE.exr",
           "the linear contact sheet (default out/sweep_<model>_<param>.exr; a .png name here is taken as --png)");
   addText(command, "--png", o.pngPath, "FILE.png", "the labelled, tone-mapped contact sheet (default: beside --out)");

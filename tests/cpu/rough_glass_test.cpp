@@ -8,7 +8,8 @@
 //     concentrated by eta^2), which the test shows happens;
 //   - total internal reflection: seen from inside beyond the critical angle, a nearly smooth surface reflects
 //     everything (albedo 1 within its single-scattering loss) and transmits nothing;
-//   - eta -> 1: the interface vanishes, reflection goes to 0 and transmission to straight through.
+//   - eta -> 1: the interface vanishes, reflection goes to 0 and transmission to straight through;
+//   - the albedo quadrature (reflection plus transmission of light arriving from outside) agrees with sampling.
 // Regenerate the printed figures: ctest --test-dir build/release -R rough_glass -V
 #include <gtest/gtest.h>
 
@@ -16,6 +17,7 @@
 #include <cstdio>
 #include <random>
 
+#include "reference/albedo.h"
 #include "reference/terms.h"
 #include "reference_materials.h"
 #include "support/chi2.h"
@@ -112,6 +114,29 @@ TEST(RoughGlass, ReflectionPlusTransmissionOfAFixedLightDirectionIsAtMostOne) {
     }
   }
   std::printf("reflection + transmission for a fixed light direction: largest %.4f\n", largest);
+}
+
+TEST(RoughGlass, TheAlbedoQuadratureAgreesWithSampling) {
+  // reference::directionalAlbedo integrates reflection and (weighted by eta^2, generalised reciprocity)
+  // transmission over half vectors; the sampling estimate above integrates over outgoing directions. Two independent
+  // computations of the light arriving from outside that leaves again, to within 4.5 sigma plus the cubature's error.
+  std::mt19937_64 rng(15);
+  for (double alpha : {0.1, 0.5}) {
+    for (double eta : {1.33, 2.4}) {
+      const Material glass = makeMaterial("ggx_dielectric", {{"alpha_x", alpha}, {"alpha_y", alpha}, {"eta", eta}});
+      for (double c : {1.0, 0.5, 0.15}) {
+        const dvec3 w = direction(c, 0.4);
+        const reference::Albedo quadrature = reference::directionalAlbedo(glass, w, {1e-6, 20000});
+        const EnergyEstimate sampled = lightEnergy(glass, w, 400000, rng);
+        std::printf("alpha %.2g eta %.3g cos %.2g: quadrature %.5f (reflected %.5f, transmitted %.5f), sampled "
+                    "%.5f +- %.5f\n", alpha, eta, c, quadrature.value.x, quadrature.specular.x,
+                    quadrature.transmission.x, sampled.mean, sampled.standardError);
+        EXPECT_TRUE(quadrature.converged);
+        EXPECT_NEAR(quadrature.value.x, sampled.mean, 4.5 * sampled.standardError + quadrature.errorEstimate + 1e-4);
+        EXPECT_LE(quadrature.value.x, 1.0 + 1e-6);
+      }
+    }
+  }
 }
 
 TEST(RoughGlass, SeenFromInsideTheIntegralExceedsOne) {

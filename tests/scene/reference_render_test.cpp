@@ -17,7 +17,8 @@
 // run either passes or fails, every time.
 //
 // RAYLAB_UPDATE_REFERENCES=1 renders the references instead (after a change that alters images on purpose), then
-// the test runs against them; commit the files with the change.
+// the test runs against them; commit the files with the change. RAYLAB_UPDATE_REFERENCES=missing renders only those
+// of scenes that have none yet.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -139,14 +140,18 @@ BatchStatistics renderBatches(const Device& device, const Scene& scene, std::uin
 void expectMatchesReference(const Device& device, const Scene& scene, const std::string& name) {
   SCOPED_TRACE(name);
   {
-    if (std::getenv("RAYLAB_UPDATE_REFERENCES") != nullptr) {
+    // RAYLAB_UPDATE_REFERENCES=missing writes the references of new scenes only, leaving every committed one as
+    // it is; any other value rewrites them all.
+    const char* update = std::getenv("RAYLAB_UPDATE_REFERENCES");
+    const bool missing = !fs::exists(referencePath(name, "mean"));
+    if (update != nullptr && (std::string(update) != "missing" || missing)) {
       const BatchStatistics reference =
           renderBatches(device, scene, kReferenceBatches, kReferenceSpp, kFirstReferenceSeed);
       writeExr(referencePath(name, "mean").string(), reference.mean);
       writeExr(referencePath(name, "variance").string(), reference.variance);
     }
     ASSERT_TRUE(fs::exists(referencePath(name, "mean")))
-        << "no reference for " << name << ": run this test with RAYLAB_UPDATE_REFERENCES=1 and commit "
+        << "no reference for " << name << ": run this test with RAYLAB_UPDATE_REFERENCES=missing and commit "
         << referencePath(name, "mean").parent_path();
     const Image mean = readExr(referencePath(name, "mean").string());
     const Image variance = readExr(referencePath(name, "variance").string());

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -36,6 +37,9 @@ constexpr std::size_t kMinDiscPixels = 500;
 constexpr float kStepTolerance = 0.01f;
 constexpr float kAreaTolerancePixels = 2.0f;
 constexpr float kMinChange = 0.2f;
+// A "steady" row (a parameter that changes the look but not the statistic, like EON's roughness, which keeps the
+// energy): every sphere within this fraction of the row's mean.
+constexpr float kSteadyTolerance = 0.02f;
 
 Image render(const Device& device, const Scene& scene, std::uint32_t width, std::uint32_t height, std::uint32_t spp) {
   RenderSettings settings;
@@ -160,7 +164,7 @@ TEST_F(SceneRenderTest, SweepsShowTheirStatedTrendAlongTheRow) {
         << name << ": extras.sweep must state a statistic, its trend and why (tools/scenes/make_scenes.py)";
     const std::string statistic = sweep["statistic"].get<std::string>();
     const std::string trend = sweep["trend"].get<std::string>();
-    ASSERT_TRUE(trend == "increasing" || trend == "decreasing") << name << ": trend '" << trend << "'";
+    ASSERT_TRUE(trend == "increasing" || trend == "decreasing" || trend == "steady") << name << ": trend '" << trend << "'";
     const bool increasing = trend == "increasing";
     SCOPED_TRACE(name + " (" + statistic + " " + trend + ": " + sweep["why"].get<std::string>() + ")");
 
@@ -185,6 +189,14 @@ TEST_F(SceneRenderTest, SweepsShowTheirStatedTrendAlongTheRow) {
     }
     const float largest = *std::max_element(values.begin(), values.end());
     ASSERT_GT(largest, 0.0f) << "the statistic is 0 for every sphere:" << row;
+    if (trend == "steady") {
+      // The parameter changes the look, not the statistic: every sphere within kSteadyTolerance of the row's mean.
+      const float mean = std::accumulate(values.begin(), values.end(), 0.0f) / float(values.size());
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        EXPECT_NEAR(values[i], mean, kSteadyTolerance * mean) << "sphere " << i << " departs from the row; row:" << row;
+      }
+      continue;
+    }
     const float tolerance =
         std::max(kStepTolerance * largest, statistic == "highlight_area" ? kAreaTolerancePixels : 0.0f);
     for (std::size_t i = 1; i < values.size(); ++i) {

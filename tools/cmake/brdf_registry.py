@@ -71,6 +71,10 @@ def parse_model(name, prefix, include, path):
     names = [p["name"] for p in params]
     if len(set(names)) != len(names):
         raise RegistryError(f"{path}: a parameter is listed twice")
+    two_sided = lobes & LOBES["transmission"] and lobes & (LOBES["diffuse"] | LOBES["glossy"])
+    if two_sided and [p["role"] for p in params if not p["rgb"]].count("eta") != 1:
+        raise RegistryError(f"{path}: a model with transmission and a density needs one scalar parameter of kind eta "
+                            "(the index inside over outside)")
     presets = [parse_preset(where, words, params) for where, words in preset_lines]
     return dict(name=name, prefix=prefix, include=include, path=path, lobes=lobes, params=params, sweep=sweep,
                 presets=presets)
@@ -240,6 +244,9 @@ def reference_dispatch(models):
            lambda m: f"{m['prefix']}Sample({params(m)}, wo, u)", "std::nullopt", is_two_sided)
     switch("std::optional<double> pdfTwoSided(const Material& material, const dvec3& wi, const dvec3& wo)",
            lambda m: f"{m['prefix']}Pdf({params(m)}, wi, wo)", "std::nullopt", is_two_sided)
+    eta_name = lambda m: next(p["name"] for p in m["params"] if p["role"] == "eta" and not p["rgb"])
+    switch("std::optional<double> transmissionEta(const Material& material)",
+           lambda m: f"{params(m)}.{eta_name(m)}", "std::nullopt", is_two_sided)
     switch("std::optional<SpecularLobe> specularLobe(const Material& material)",
            lambda m: f"{m['prefix']}SpecularLobe({params(m)})", "std::nullopt", glossy)
     switch("std::optional<DielectricEvent> deltaEvent(const Material& material, const dvec3& wi, const dvec3& n)",

@@ -338,6 +338,37 @@ SWEEPS = [
      "with eta at every angle) and bends rays further, and both send more of each pixel's paths to the dark "
      "background in front of the spheres. The line from the camera through each centre meets the wall at a tile "
      "corner, so each lens shows as much of the light tiles as of the dark ones at any magnification"),
+    # The second library.
+    ("sweep_oren_nayar_sigma", ["--model", "oren_nayar", "--param", "sigma", "--from", "0", "--to", "1.5",
+                                "--set", "rho_d=0.8/0.45/0.3"],
+     "mean", "decreasing",
+     "A = 1 - sigma^2 / (2 (sigma^2 + 0.33)) scales the whole surface down as sigma grows; the B term, which adds "
+     "light back only where the light and the viewer are on the same side at grazing, cannot make up for it"),
+    ("sweep_eon_r", ["--model", "eon", "--param", "r", "--from", "0", "--to", "1", "--set", "rho_d=0.8/0.45/0.3"],
+     "mean", "steady",
+     "EON keeps the energy as r grows: its single scattering flattens the sphere's shading (A_F (1 + r s/t)) and "
+     "its multiple scattering returns the light that takes, so the mean stays put while the look changes"),
+    ("sweep_gltf_pbr_roughness", ["--model", "gltf_pbr", "--param", "roughness", "--from", "0.1", "--to", "1",
+                                  "--set", "metallic=1", "--set", "base_color=0.9/0.6/0.2"],
+     "highlight_area", "increasing",
+     "GGX's D with alpha = roughness^2 is half its peak within a half-vector angle that grows with alpha, so the "
+     "metal's highlight widens"),
+    ("sweep_ggx_conductor_alpha_x", ["--model", "ggx_conductor", "--param", "alpha_x", "--from", "0.02", "--to",
+                                     "0.6", "--log", "--set", "alpha_y=0.05", "--set", "metal=Au"],
+     "highlight_area", "increasing",
+     "anisotropic GGX is half its peak on an ellipse of half-vector slopes whose area grows like alpha_x alpha_y: "
+     "brushed gold's highlight stretches along the tangent"),
+    ("sweep_ggx_conductor_multiscatter", ["--model", "ggx_conductor", "--param", "multiscatter", "--from", "0",
+                                          "--to", "1", "--set", "alpha_x=0.8", "--set", "alpha_y=0.8",
+                                          "--set", "metal=Ag"],
+     "mean", "increasing",
+     "Kulla and Conty's term adds back, in proportion to multiscatter, the light single scattering loses between "
+     "the facets of a rough surface: a third of it at alpha 0.8"),
+    ("sweep_ggx_dielectric_alpha_x", ["--model", "ggx_dielectric", "--param", "alpha_x", "--from", "0.02", "--to",
+                                      "0.6", "--log", "--set", "alpha_y=0.05"],
+     "highlight_area", "increasing",
+     "the reflected highlight of rough glass, GGX's D on an ellipse of half-vector slopes whose area grows like "
+     "alpha_x alpha_y, stretches along the tangent"),
 ]
 
 
