@@ -6,10 +6,10 @@
 // (sampleOneLight), then one continuation chosen by the BSDF's own sampler (bsdfSample), with the
 // mirror weight delta as a mixture f = (1 - delta) f_r + delta mirror; a specular-only BSDF (glass, by its lobe
 // flags) continues along one delta lobe (bsdfSampleSpecular), and a two-sided one (rough glass) is shaded on both
-// sides, its lights and its continuation on either (kernel/hit_common.glsl, shadingSide). Light samples and emission reached by a
-// continuation are weighted against each other by misWeight (kernel/mis.glsl: the power heuristic, Veach 1997,
-// or one strategy alone for studies); delta lights are light-sampled only. The uniform background is left to
-// BSDF sampling. Russian roulette after kRouletteDepth bounces keeps the estimator unbiased (docs/integrators.md).
+// sides, its lights and its continuation on either (kernel/hit_common.glsl, shadingSide). Light samples and
+// emission reached by a continuation are weighted against each other by misWeight (kernel/mis.glsl: the power
+// heuristic, Veach 1997, or one strategy alone for studies); delta lights are light-sampled only. The uniform
+// background is left to BSDF sampling. Russian roulette after kRouletteDepth bounces keeps the estimator unbiased (docs/integrators.md).
 // Depth: --max-depth D allows D + 1 continuations after the camera ray, so a path has at most D + 2 segments
 // (Mitsuba 3's max_depth = D + 2); D = 0 is direct lighting only.
 #ifndef RAYLAB_KERNEL_PATH_HIT_GLSL

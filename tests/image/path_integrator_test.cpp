@@ -58,6 +58,11 @@ std::vector<FurnaceCase> furnaceCases() {
       {"ward_gmd 0.3", material("ward_gmd", {{"rho_d", 0.0f}, {"rho_s", 1.0f}, {"alpha_x", 0.3f}, {"alpha_y", 0.3f}})},
       {"ashikhmin_shirley 100", material("ashikhmin_shirley", {{"Rd", 0.0f}, {"Rs", 1.0f}, {"nu", 100.0f}, {"nv", 100.0f}})},
       {"lambert+cooktorrance", material("cooktorrance", {{"rho_d", 0.5f}, {"rho_s", 0.5f}, {"m", 0.1f}})},
+      // The second library's energy-preserving models: white EON's albedo is 1 at every angle, and so, within
+      // its tables, is a white GGX conductor's with Kulla & Conty's compensation.
+      {"eon r=1", material("eon", {{"rho_d", 1.0f}, {"r", 1.0f}})},
+      {"ggx_conductor 0.5 multiscatter", material("ggx_conductor", {{"alpha_x", 0.5f}, {"alpha_y", 0.5f}, {"eta", 0.01f},
+                                                                   {"k", 20.0f}, {"multiscatter", 1.0f}})},
   };
 }
 
