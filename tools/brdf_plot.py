@@ -11,6 +11,9 @@ Right: the directional albedo against the angle (`raylab brdf albedo`: the doubl
 adaptive cubature as lines, the device sampler's Monte Carlo estimate as dots). The models are reciprocal, so
 this is also the fraction of the light arriving from that angle that is reflected.
 
+A two-sided model (rough glass: transmission with a density) is drawn over the whole plane, inside the surface
+too, as f |cos(theta_o)|; its albedo is what it reflects and transmits of the light arriving from that angle.
+
 Glass, a delta BSDF, gets its own figure: where the light goes (reflected and refracted rays, drawn as long as
 the energy they carry) and the Fresnel reflectance against the angle of incidence, from outside and inside,
 exact against Schlick's approximations.
@@ -28,7 +31,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from raylab_tools import ToolError, add_raylab_option, check_raylab, run_main, run_raylab, venv_hint
+from raylab_tools import ToolError, add_raylab_option, check_raylab, registered_models, run_main, run_raylab, venv_hint
 
 try:
     import matplotlib
@@ -97,13 +100,23 @@ def in_plane(theta_deg: float, phi_deg: float) -> tuple[float, float, float]:
     return math.sin(theta) * math.cos(phi), math.sin(theta) * math.sin(phi), math.cos(theta)
 
 
-def lobe_angles(theta_i: float) -> np.ndarray:
+def lobe_angles(theta_i: float, two_sided: bool = False) -> np.ndarray:
     """theta_o: every 0.1 degree, and every 0.005 degree within 1 degree of the mirror direction, where the
-    sharpest lobes of the contract (m = 0.001, about 0.1 degree wide) live."""
-    uniform = np.arange(-899, 900) / 10.0
+    sharpest lobes of the contract (m = 0.001, about 0.1 degree wide) live; over the whole plane for a two-sided
+    model (|theta_o| > 90: inside), less 0.05 degree either side of the horizon."""
+    uniform = np.arange(-1799, 1800) / 10.0 if two_sided else np.arange(-899, 900) / 10.0
     mirror = theta_i + np.linspace(-1.0, 1.0, 401)
     angles = np.unique(np.concatenate([uniform, mirror]))
-    return angles[np.abs(angles) < 89.95]
+    return angles[np.abs(np.abs(angles) - 90.0) > 0.05] if two_sided else angles[np.abs(angles) < 89.95]
+
+
+def is_two_sided(raylab: Path, model: str) -> bool:
+    """Transmission with a density, as the registry's lobe flags say (`raylab brdf models --json`)."""
+    for entry in registered_models(raylab):
+        if entry["name"] == model:
+            lobes = entry["lobes"].split()
+            return "transmission" in lobes and ("glossy" in lobes or "diffuse" in lobes)
+    raise ToolError(f"--model: '{model}' is not a model of `raylab brdf models`")
 
 
 def evaluate(raylab: Path, rows: list[list[str]], workdir: Path) -> dict[str, list[tuple[str, str]]]:
@@ -133,7 +146,7 @@ def lobes(raylab: Path, args: argparse.Namespace, incident: list[float], phis: l
     rows, layout = [], []
     for phi in phis:
         for theta_i in incident:
-            angles = lobe_angles(theta_i)
+            angles = lobe_angles(theta_i, args.two_sided)
             wi = vector(*in_plane(-theta_i, phi))
             for k, theta_o in enumerate(angles):
                 rows.append([f"{phi}/{theta_i}/{k}", args.model, args.params, wi,
@@ -144,7 +157,7 @@ def lobes(raylab: Path, args: argparse.Namespace, incident: list[float], phis: l
     for theta_i, phi, angles in layout:
         f = np.array([mean_rgb(values[f"{phi}/{theta_i}/{k}"][0][1]) for k in range(len(angles))])
         if args.quantity == "fcos":
-            f = f * np.cos(np.radians(angles))
+            f = f * np.abs(np.cos(np.radians(angles)))
         result.append(Lobe(theta_i, phi, angles, f))
     return result
 
@@ -208,7 +221,7 @@ def plot_lobe(ax, group: list[Lobe], args: argparse.Namespace) -> None:
         rmax = args.decades
         rings = [float(d) for d in range(1, int(args.decades) + 1)]
         labels = [f"1e-{int(args.decades) - int(d)}" if d < args.decades else "peak" for d in rings]
-    polar_grid(ax, rmax, rings, labels)
+    polar_grid(ax, rmax, rings, labels, full=args.two_sided)
     ax.set_title(f"θi = {group[0].theta_i:g}°   peak {symbol} = {peak:.3g}", fontsize=9, pad=1)
     for lobe in group:
         style = "-" if lobe.phi == group[0].phi else "--"
@@ -349,6 +362,7 @@ def main() -> None:
         raise ToolError(f"--params: '{args.params}' has a comma: separate parameters with ';' and RGB channels "
                         f"with '/' (e.g. 'rho_d=0.5/0.2/0.1;s=50')")
     with tempfile.TemporaryDirectory(prefix="brdf_plot_") as temp:
+        args.two_sided = is_two_sided(raylab, args.model)
         make = glass_figure if args.model == "glass" else brdf_figure
         figure = make(raylab, args, Path(temp))
     figure.suptitle(args.title or f"{args.model}   {args.params or '(defaults)'}", fontsize=11, y=0.99)

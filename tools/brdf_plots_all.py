@@ -40,6 +40,11 @@ CHOSEN = [
     Figure("ward_gmd", "ward_gmd", "rho_d=0;rho_s=1;alpha_x=0.1;alpha_y=0.4", ANISOTROPIC),
     Figure("ashikhmin_shirley", "ashikhmin_shirley", "Rd=0.5;Rs=0.5;nu=10;nv=1000", ANISOTROPIC),
     Figure("glass", "glass", "eta=1.5"),
+    Figure("oren_nayar", "oren_nayar", "rho_d=1;sigma=0.5"),
+    Figure("eon", "eon", "rho_d=1;r=1"),
+    Figure("gltf_pbr", "gltf_pbr", "base_color=0.9/0.6/0.2;metallic=0;roughness=0.4"),
+    Figure("ggx_conductor", "ggx_conductor", "metal=Au;alpha_x=0.1;alpha_y=0.4", ANISOTROPIC),
+    Figure("ggx_dielectric", "ggx_dielectric", "alpha_x=0.15;alpha_y=0.15;eta=1.5"),
 ]
 
 

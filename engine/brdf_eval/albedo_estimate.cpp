@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
 #include "reference/albedo.h"
+#include "reference/models.h"
 
 namespace raylab {
 
@@ -38,10 +40,14 @@ AlbedoEstimate albedoBySampling(const Device& device, BrdfSampler& sampler, cons
                                 double thetaDegrees, double phiDegrees, std::uint32_t samples, std::uint64_t seed) {
   const glm::vec3 wo(reference::directionFromAngles(thetaDegrees * kDegree, phiDegrees * kDegree));
   const std::vector<gpu::BrdfSampleValue> draws = drawBrdfSamples(device, sampler, material, wo, uniforms(seed, samples));
+  // A two-sided model (rough glass) counts what it transmits as the cubature does: a direction inside weighs
+  // eta^2, which by generalised reciprocity makes the sum the fraction of the light arriving from wo.
+  const std::optional<double> eta = reference::transmissionEta(reference::fromRecord(material));
   glm::dvec3 sum(0.0), sumSquares(0.0);
   for (const gpu::BrdfSampleValue& draw : draws) {
     if (!(draw.pdf > 0.0f)) continue;
-    const glm::dvec3 weight = glm::dvec3(draw.f) * (double(draw.wi.z) / double(draw.pdf));
+    const double inside = eta && draw.wi.z < 0.0f ? *eta * *eta : 1.0;
+    const glm::dvec3 weight = glm::dvec3(draw.f) * (inside * std::abs(double(draw.wi.z)) / double(draw.pdf));
     sum += weight;
     sumSquares += weight * weight;
   }

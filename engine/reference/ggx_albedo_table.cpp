@@ -1,10 +1,9 @@
 // Writes the directional albedo of single-scattering GGX with F = 1, E(mu, alpha), and its cosine-weighted mean
-// E_avg(alpha), the tables of ggx_conductor's multiple-scattering compensation, stored as the energy lost, 1 - E and
-// 1 - E_avg, which float keeps to its full relative precision where E is nearly 1 (the compensation divides by 1 -
-// E_avg) (Kulla & Conty, "Revisiting
-// Physically Based Shading at Imageworks", SIGGRAPH 2017 course), as a C++ header: the reference reads it, and the
-// host uploads it into the kernels' BRDF table buffer (shared/brdf_tables.h, which fixes the layout). Run at
-// build time (tools/cmake/ggx_albedo.cmake); deterministic.
+// E_avg(alpha): the tables of ggx_conductor's multiple-scattering compensation (Kulla & Conty, "Revisiting
+// Physically Based Shading at Imageworks", SIGGRAPH 2017 course). They are stored as the energy lost, 1 - E and
+// 1 - E_avg, which float keeps to full relative precision where E is nearly 1 (the compensation divides by
+// 1 - E_avg), in a C++ header: the reference reads it, and the host uploads it into the kernels' BRDF table buffer
+// (shared/brdf_tables.h fixes the layout). Run at build time (tools/cmake/ggx_albedo.cmake); deterministic.
 //
 // E(mu) = integral of D G1(wi) G1(wo) / (4 cos_i cos_o) cos_i dwi. Drawing wi by GGX visible normals from wo
 // (density G1(wo) D / (4 cos_o)) leaves the weight G1(wi) for wi above the horizon, 0 below: E is the mean of

@@ -102,19 +102,19 @@ SweepSpec validatedSpec(const SweepOptions& o) {
     const std::string option = "--set " + name;
     if (isPresetKey(*model, name)) {
       // A named set (metal=Au): its parameters, in the order the model's file lists them.
+      const std::string presetName = set.substr(equals + 1);
       try {
         gpu::MaterialRecord preset = sweepBaseMaterial(model->id);
-        applyPreset(preset, name, set.substr(equals + 1), option);
-        for (const Preset& candidate : model->presets) {
-          if (candidate.key != name || candidate.name != set.substr(equals + 1)) continue;
-          for (const PresetValue& v : candidate.values) {
-            if (v.param == o.param) usage(option + " sets " + std::string(v.param) + ", the swept parameter");
-            setParam(scratch, v.param, v.value, option);
-            spec.fixed.emplace_back(std::string(v.param), v.value);
-          }
-        }
+        applyPreset(preset, name, presetName, option);  // refuses an unknown name, listing the known ones
       } catch (const Error& error) {
         usage(error.what());
+      }
+      for (const Preset& candidate : model->presets) {
+        if (candidate.key != name || candidate.name != presetName) continue;
+        for (const PresetValue& v : candidate.values) {
+          if (v.param == o.param) usage(option + " sets " + std::string(v.param) + ", the swept parameter");
+          spec.fixed.emplace_back(std::string(v.param), v.value);
+        }
       }
       continue;
     }

@@ -132,6 +132,24 @@ TEST(SweepCliTest, GltfWritesTheRowAsALoadableScene) {
   }
 }
 
+TEST(SweepCliTest, ANamedMetalSetsItsParameters) {
+  const std::string gltf = scratchDir() + "/gold.gltf";
+  fs::remove(gltf);
+  const CommandResult result = runRaylab({"sweep", "--model", "ggx_conductor", "--param", "alpha_x", "--steps", "2",
+                                          "--set", "metal=Au", "--set", "alpha_y=0.05", "--gltf", gltf});
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const Scene scene = loadGltfFile(gltf, {});
+  ASSERT_EQ(scene.spheres.size(), 2u);
+  for (const Sphere& sphere : scene.spheres) {
+    const gpu::MaterialRecord& record = scene.materials.at(sphere.material).record;
+    EXPECT_NEAR(getParam(record, "eta").b, 1.44205f, 1e-5f) << "Au's eta";
+    EXPECT_NEAR(getParam(record, "k").r, 3.983f, 1e-5f) << "Au's k";
+    EXPECT_NEAR(getParam(record, "alpha_y").x, 0.05f, 1e-7f);
+    const glm::vec3 preview = previewColour(record);
+    EXPECT_TRUE(glm::all(glm::lessThanEqual(preview, glm::vec3(1.0f)))) << "glTF's baseColorFactor holds a colour";
+  }
+}
+
 TEST(SweepCliTest, UsageErrorsExitTwoAndNameTheOptionAndRange) {
   struct Case {
     std::vector<std::string> args;
@@ -166,6 +184,11 @@ TEST(SweepCliTest, UsageErrorsExitTwoAndNameTheOptionAndRange) {
       {with({"--out", "a.png", "--png", "b.png"}), {"--out", "is the EXR"}},
       {with({"--cell", "0"}), {"--cell"}},
       {with({"--tonemap", "filmic"}), {"--tonemap"}},
+      // Named sets of values (presets): an unknown name lists the known ones; one that sets the swept parameter is
+      // refused like --set of it.
+      {{"sweep", "--model", "ggx_conductor", "--param", "alpha_x", "--set", "metal=Xx"},
+       {"--set metal", "'Xx'", "Ag, Al, Au, Cr, Cu"}},
+      {{"sweep", "--model", "ggx_conductor", "--param", "eta", "--set", "metal=Au"}, {"--set metal", "eta", "swept"}},
   };
   for (const Case& c : cases) {
     const CommandResult result = runRaylab(c.args);

@@ -46,7 +46,7 @@ double tableAverageLoss(double alpha) {
 }
 
 // F_avg = 2 integral F(mu) mu dmu by the 8-point Gauss-Legendre rule on [0, 1]: the definition the GLSL uses too
-// (docs/brdfs.md, "Multiple scattering"; within 1e-4 of the integral for every index of the table's ranges).
+// (docs/brdfs.md, "Multiple scattering"; about 1e-4 from the integral at worst, near the kinks of an index below 1).
 double averageFresnel(double eta, double k) {
   constexpr double t[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
   constexpr double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
