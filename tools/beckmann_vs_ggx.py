@@ -23,7 +23,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from raylab_tools import REPO, add_raylab_option, check_raylab, run_main, run_raylab, venv_hint
+from raylab_tools import REPO, add_raylab_option, check_raylab, run_main, run_raylab, save_figure, venv_hint
 
 sys.path.insert(0, str(REPO / "tools" / "scenes"))
 import make_scenes  # noqa: E402
@@ -146,10 +146,7 @@ def main() -> None:
     ax.set_ylabel("f (1/sr)")
     ax.legend(fontsize=7.5, ncol=3, loc="lower center")
     ax.grid(True, which="major", color="0.9")
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    temporary = args.out.with_name(args.out.name + ".tmp.png")
-    figure.savefig(temporary)
-    temporary.replace(args.out)
+    save_figure(figure, args.out)
     print(f"wrote {args.out}")
 
 

@@ -19,7 +19,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from raylab_tools import REPO, ToolError, add_raylab_option, check_raylab, run_main, run_raylab, venv_hint
+from raylab_tools import REPO, ToolError, add_raylab_option, check_raylab, run_main, run_raylab, save_figure, venv_hint
 
 sys.path.insert(0, str(REPO / "tools" / "scenes"))
 import make_scenes  # noqa: E402
@@ -115,10 +115,7 @@ def main() -> None:
         for column, alpha in enumerate(ALPHAS):
             x = WIDTH / 2 + centre(column)[0] * scale
             ax.text(x, HEIGHT + 18, f"α = {alpha:g}: {means[column][row]:.3f}", ha="center", fontsize=8)
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    temporary = args.out.with_name(args.out.name + ".tmp.png")
-    figure.savefig(temporary)
-    temporary.replace(args.out)
+    save_figure(figure, args.out)
     print(f"wrote {args.out}")
 
 

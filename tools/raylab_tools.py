@@ -72,6 +72,15 @@ def generic_material(model: dict) -> dict:
     return material
 
 
+def save_figure(figure, path: Path) -> None:
+    """Writes a matplotlib figure as a PNG through a temporary file and a rename: an interrupted run never leaves
+    a half-written image in docs/."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    temporary = path.with_name(path.name + ".tmp.png")
+    figure.savefig(temporary)
+    temporary.replace(path)
+
+
 def run_main(main) -> None:
     """Calls main(), turning ToolError into a message and exit code 1."""
     try:
