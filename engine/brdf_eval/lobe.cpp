@@ -13,10 +13,12 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-glm::vec3 inPlane(double thetaDegrees) {
+glm::vec3 inPlane(double thetaDegrees, bool twoSided = false) {
   const double theta = thetaDegrees * kPi / 180.0;
-  // cos(+-90 degrees) is 6e-17 in double: the horizon's samples lie a hair above the surface, never below.
-  return glm::vec3(float(std::sin(theta)), 0.0f, float(std::max(0.0, std::cos(theta))));
+  // cos(+-90 degrees) is 6e-17 in double: the horizon's samples lie a hair above the surface, never below (a
+  // two-sided plot goes on below it).
+  const double cosine = std::cos(theta);
+  return glm::vec3(float(std::sin(theta)), 0.0f, float(twoSided ? cosine : std::max(0.0, cosine)));
 }
 
 // "x y z" (a direction, or r g b), as `raylab brdf eval` reads vectors.
@@ -30,18 +32,22 @@ bool isGlass(const gpu::MaterialRecord& material) { return isDeltaOnly(material.
 
 }  // namespace
 
-float lobeAngleDegrees(std::uint32_t sample) {
+bool lobeIsTwoSided(const gpu::MaterialRecord& material) { return isTwoSided(modelInfo(material.model)); }
+
+float lobeAngleDegrees(std::uint32_t sample, bool twoSided) {
+  if (twoSided) return -180.0f + 360.0f * float(sample) / float(kLobeSamplesTwoSided);
   return -90.0f + 180.0f * float(sample) / float(kLobeSamples - 1);
 }
 
 std::vector<gpu::BrdfEvalCase> lobeCases(const gpu::MaterialRecord& material, float thetaIDegrees) {
-  std::vector<gpu::BrdfEvalCase> cases(kLobeSamples);
+  const bool twoSided = lobeIsTwoSided(material);
+  std::vector<gpu::BrdfEvalCase> cases(twoSided ? kLobeSamplesTwoSided : kLobeSamples);
   const glm::vec3 wi = inPlane(-double(thetaIDegrees));
-  for (std::uint32_t i = 0; i < kLobeSamples; ++i) {
+  for (std::uint32_t i = 0; i < cases.size(); ++i) {
     gpu::BrdfEvalCase& c = cases[i];
     c.material = material;
     c.wi = wi;
-    c.wo = inPlane(lobeAngleDegrees(i));
+    c.wo = inPlane(lobeAngleDegrees(i, twoSided), twoSided);
     c.n = glm::vec3(0.0f, 0.0f, 1.0f);
     c.t = glm::vec3(1.0f, 0.0f, 0.0f);
   }
@@ -52,7 +58,7 @@ std::vector<glm::vec3> lobeValues(std::span<const gpu::BrdfEvalCase> cases, std:
   std::vector<glm::vec3> fcos(cases.size(), glm::vec3(0.0f));
   for (std::size_t i = 0; i < cases.size() && i < values.size(); ++i) {
     if (isGlass(cases[i].material)) continue;
-    fcos[i] = values[i].f * std::max(0.0f, cases[i].wo.z);
+    fcos[i] = values[i].f * std::abs(cases[i].wo.z);  // one-sided cases lie on or above the horizon
   }
   return fcos;
 }
@@ -84,7 +90,8 @@ std::string formatLobeCsv(const gpu::MaterialRecord& material, float thetaIDegre
   const std::vector<glm::vec3> fcos = lobeValues(cases, values);
   char angles[64];
   for (std::size_t i = 0; i < cases.size() && i < values.size(); ++i) {
-    std::snprintf(angles, sizeof angles, "%.9g,%.9g", double(thetaIDegrees), double(lobeAngleDegrees(std::uint32_t(i))));
+    std::snprintf(angles, sizeof angles, "%.9g,%.9g", double(thetaIDegrees),
+                  double(lobeAngleDegrees(std::uint32_t(i), lobeIsTwoSided(material))));
     text += "lobe," + std::string(angles) + "," + vectorText(cases[i].wi) + "," + vectorText(cases[i].wo) + "," +
             vectorText(isGlass(material) ? glm::vec3(0.0f) : values[i].f) + "," + vectorText(fcos[i]) + "\n";
   }

@@ -57,15 +57,18 @@ float largest(const std::optional<LobeCurves>& curves) {
   return value;
 }
 
-// The polar plot: the surface along the bottom, the normal up, theta_o measured from it; radius f cos / scale.
-void drawPolar(const LobePlot& plot, ImVec2 size) {
+bool twoSided(const std::optional<LobeCurves>& curves) { return curves && lobeIsTwoSided(curves->material); }
+
+// The polar plot: the surface along the bottom (the middle for a two-sided model, whose lower half is inside),
+// the normal up, theta_o measured from it; radius f |cos| / scale.
+void drawPolar(const LobePlot& plot, ImVec2 size, bool wholePlane) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 corner = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("##lobe", size);
-  const ImVec2 centre(corner.x + size.x * 0.5f, corner.y + size.y - 4.0f);
-  const float radius = std::min(size.x * 0.5f, size.y) - 6.0f;
+  const ImVec2 centre(corner.x + size.x * 0.5f, wholePlane ? corner.y + size.y * 0.5f + 6.0f : corner.y + size.y - 4.0f);
+  const float radius = std::min(size.x * 0.5f, wholePlane ? size.y * 0.5f - 6.0f : size.y) - 6.0f;
   for (int ring = 1; ring <= 4; ++ring) {
-    draw->PathArcTo(centre, radius * float(ring) / 4.0f, kPi, 2.0f * kPi, 32);
+    draw->PathArcTo(centre, radius * float(ring) / 4.0f, wholePlane ? 0.0f : kPi, 2.0f * kPi, wholePlane ? 64 : 32);
     draw->PathStroke(kGridColour, 0, 1.0f);
   }
   draw->AddLine(ImVec2(centre.x - radius, centre.y), ImVec2(centre.x + radius, centre.y), kGridColour);
@@ -76,17 +79,18 @@ void drawPolar(const LobePlot& plot, ImVec2 size) {
   const float scale = std::max(largest(plot.left), largest(plot.right));
   if (!(scale > 0.0f) || !std::isfinite(scale)) return;
   const auto curve = [&](const LobeCurves& curves, ImU32 colour) {
+    const bool curveTwoSided = lobeIsTwoSided(curves.material);
     for (std::uint32_t i = 0; i < curves.fcos.size(); ++i) {
-      const float angle = glm::radians(lobeAngleDegrees(i));
+      const float angle = glm::radians(lobeAngleDegrees(i, curveTwoSided));
       const float r = radius * std::min(luminance(curves.fcos[i]) / scale, 1.0f);
       draw->PathLineTo(ImVec2(centre.x + r * std::sin(angle), centre.y - r * std::cos(angle)));
     }
-    draw->PathStroke(colour, 0, 2.0f);
+    draw->PathStroke(colour, curveTwoSided ? ImDrawFlags_Closed : 0, 2.0f);
   };
   if (plot.left) curve(*plot.left, kLeftColour);
   if (plot.right) curve(*plot.right, kRightColour);
   char text[64];
-  std::snprintf(text, sizeof text, "outer ring: f cos = %.3g /sr", double(scale));
+  std::snprintf(text, sizeof text, "outer ring: f |cos| = %.3g /sr", double(scale));
   draw->AddText(ImVec2(corner.x, corner.y), IM_COL32(200, 200, 200, 255), text);
 }
 
@@ -134,7 +138,7 @@ void destroyLobePlot(const Device& device, LobePlot& plot) {
 
 void updateLobePlot(const Device& device, LobePlot& plot, const gpu::MaterialRecord& material,
                     const gpu::MaterialRecord* compared) {
-  if (!plot.evaluator) plot.evaluator = createBrdfEvaluator(device, kLobeSamples);
+  if (!plot.evaluator) plot.evaluator = createBrdfEvaluator(device, std::max(kLobeSamples, kLobeSamplesTwoSided));
   const bool angleChanged = plot.plottedTheta != plot.thetaIDegrees;
   update(device, plot, plot.left, &material, angleChanged);
   update(device, plot, plot.right, compared, angleChanged);
@@ -150,7 +154,8 @@ bool drawLobePlot(LobePlot& plot) {
     return changed;
   }
   const float width = ImGui::GetContentRegionAvail().x;
-  drawPolar(plot, ImVec2(width, width * 0.55f));
+  const bool wholePlane = twoSided(plot.left) || twoSided(plot.right);
+  drawPolar(plot, ImVec2(width, width * (wholePlane ? 1.0f : 0.55f)), wholePlane);
   drawAlbedo(plot, ImVec2(width, width * 0.4f));
   ImGui::TextColored(ImVec4(1.0f, 0.67f, 0.24f, 1.0f), "A");
   if (plot.right) {
@@ -158,7 +163,8 @@ bool drawLobePlot(LobePlot& plot) {
     ImGui::TextColored(ImVec4(0.35f, 0.78f, 1.0f, 1.0f), "B (compared)");
   }
   ImGui::SameLine();
-  ImGui::TextDisabled("luminance of f_r cos theta_o; light from the left");
+  ImGui::TextDisabled(wholePlane ? "luminance of f |cos theta_o|; light from the left; below the line: inside"
+                                 : "luminance of f_r cos theta_o; light from the left");
   return changed;
 }
 

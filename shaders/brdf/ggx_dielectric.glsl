@@ -45,7 +45,7 @@ float ggxSidedG(vec3 h, vec3 wi, vec3 wo, float ax, float ay) {
 }
 
 vec3 ggxDielectricEval(float alphaX, float alphaY, float eta, vec3 tint, vec3 wi, vec3 wo) {
-  if (!(wi.z != 0.0 && wo.z != 0.0)) return vec3(0.0);  // on the surface, or NaN
+  if (!(abs(wi.z) > 0.0 && abs(wo.z) > 0.0)) return vec3(0.0);  // on the surface, or NaN
   wi = liftOffHorizonTwoSided(wi);
   wo = liftOffHorizonTwoSided(wo);
   const float cosProduct = abs(wi.z * wo.z);
@@ -81,7 +81,7 @@ float ggxReflectProbability(float eta, float cosO, bool outside) {
 }
 
 float ggxDielectricPdf(float alphaX, float alphaY, float eta, vec3 tint, vec3 wi, vec3 wo) {
-  if (!(wi.z != 0.0 && wo.z != 0.0)) return 0.0;
+  if (!(abs(wi.z) > 0.0 && abs(wo.z) > 0.0)) return 0.0;
   wi = liftOffHorizonTwoSided(wi);
   wo = liftOffHorizonTwoSided(wo);
   const vec3 woUp = vec3(wo.xy, abs(wo.z));
@@ -101,7 +101,7 @@ float ggxDielectricPdf(float alphaX, float alphaY, float eta, vec3 tint, vec3 wi
 }
 
 BsdfSample ggxDielectricSample(float alphaX, float alphaY, float eta, vec3 tint, vec3 wo, vec3 u) {
-  if (!(wo.z != 0.0)) return noSample();
+  if (!(abs(wo.z) > 0.0)) return noSample();
   const vec3 woLifted = liftOffHorizonTwoSided(wo);
   const bool outside = wo.z > 0.0;
   // m faces wo: drawn for wo mirrored to the outside, then mirrored back to wo's side (D is symmetric).

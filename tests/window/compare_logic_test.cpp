@@ -241,6 +241,31 @@ TEST(LobeTest, DirectionsLieInThePlaneOfIncidenceAndTheMirrorDirectionIsPlusThet
   EXPECT_NEAR(mirror.wo.z, cases[0].wi.z, 1e-6f);
 }
 
+TEST(LobeTest, RoughGlassIsPlottedOverTheWholePlane) {
+  // A two-sided model: every degree around the plane, inside the surface below the horizon, |cos| as the weight.
+  const gpu::MaterialRecord glass = defaultRecord(modelId("ggx_dielectric"));
+  const std::vector<gpu::BrdfEvalCase> cases = lobeCases(glass, 30.0f);
+  ASSERT_EQ(cases.size(), kLobeSamplesTwoSided);
+  EXPECT_FLOAT_EQ(lobeAngleDegrees(0, true), -180.0f);
+  EXPECT_FLOAT_EQ(lobeAngleDegrees(kLobeSamplesTwoSided - 1, true), 179.0f);
+  int inside = 0;
+  for (std::uint32_t i = 0; i < cases.size(); ++i) {
+    EXPECT_NEAR(glm::length(cases[i].wo), 1.0f, 1e-6f);
+    const float degrees = lobeAngleDegrees(i, true);
+    if (std::abs(degrees) > 90.5f) {
+      EXPECT_LT(cases[i].wo.z, 0.0f) << degrees;
+      ++inside;
+    }
+  }
+  EXPECT_GT(inside, 170);
+  // The straight-through direction of light from 30 degrees (refracted towards the normal) is inside: f |cos| > 0.
+  std::vector<gpu::BrdfEvalValue> values(cases.size());
+  for (gpu::BrdfEvalValue& v : values) v.f = glm::vec3(2.0f);
+  const std::vector<glm::vec3> fcos = lobeValues(cases, values);
+  EXPECT_NEAR(fcos[0].r, 2.0f, 1e-6f) << "theta_o = -180: straight down, |cos| = 1";
+  EXPECT_EQ(lobeCases(defaultRecord(modelId("ggx_conductor")), 30.0f).size(), kLobeSamples) << "one-sided: a half";
+}
+
 TEST(LobeTest, AlbedoCurveOfLambertIsItsReflectanceAtEveryAngle) {
   const AlbedoCurve curve = albedoCurve(lambertMaterial(glm::vec3(0.5f, 0.25f, 0.125f)));
   ASSERT_EQ(curve.thetaDegrees.size(), kAlbedoSamples);
