@@ -26,7 +26,7 @@ struct ParamInfo {
   bool logScale;          // exponents and roughness: sliders and sweeps go geometrically
   std::string_view meaning;
   // What the parameter means across models, for switching a material's model (the viewer carries the
-  // appearance over) and for textures (which multiply the `diffuse` one): diffuse, specular, eta, slope,
+  // appearance over) and for textures (which multiply the `diffuse` one): diffuse, specular, eta, transmittance, slope,
   // slope_x, slope_y, exponent (Blinn's, of N.H), mirror_exponent (Phong's, of R.wo), exponent_x, exponent_y;
   // empty for none.
   std::string_view role;

@@ -30,6 +30,7 @@ struct Appearance {
   std::optional<glm::vec3> specular;  // the `specular` role: a weight of the specular lobe
   std::optional<glm::vec2> alpha;     // roughness as RMS slopes along tangent and bitangent (Beckmann's m)
   std::optional<float> eta;
+  std::optional<glm::vec3> transmittance;  // glass's tint, smooth or rough
 };
 
 // An exponent of R.wo (role mirror_exponent) is about a quarter of the exponent of N.H (role exponent) of the
@@ -52,6 +53,7 @@ Appearance appearanceOf(const gpu::MaterialRecord& r) {
   a.diffuse = roleValue(r, "diffuse");
   a.specular = roleValue(r, "specular");
   if (const auto eta = roleValue(r, "eta")) a.eta = eta->x;
+  a.transmittance = roleValue(r, "transmittance");
   if (const auto m = roleValue(r, "slope")) a.alpha = glm::vec2(m->x);
   const auto alphaX = roleValue(r, "slope_x"), alphaY = roleValue(r, "slope_y");
   if (alphaX && alphaY) a.alpha = glm::vec2(alphaX->x, alphaY->x);
@@ -81,6 +83,7 @@ void switchModel(gpu::MaterialRecord& record, std::uint32_t model) {
   if (a.diffuse) carry(next, "diffuse", *a.diffuse);
   if (a.specular) carry(next, "specular", *a.specular);
   if (a.eta) carry(next, "eta", glm::vec3(*a.eta));
+  if (a.transmittance) carry(next, "transmittance", *a.transmittance);
   if (a.alpha) {
     const glm::vec2 alpha = *a.alpha;
     const float isotropic = std::sqrt(alpha.x * alpha.y);

@@ -5,7 +5,7 @@
 // | alpha_x   | [0.001, 1]  | 0.1     | log slope_x | GGX roughness along the tangent                  |
 // | alpha_y   | [0.001, 1]  | 0.1     | log slope_y | GGX roughness along the bitangent                |
 // | eta       | [1.001, 10] | 1.5     | eta         | index of refraction, inside over outside         |
-// | tint      | [0, 1]      | 1       | rgb         | transmittance colour, applied as light enters    |
+// | tint      | [0, 1]      | 1       | rgb transmittance | transmittance colour, applied as light enters |
 // Walter, Marschner, Li & Torrance, "Microfacet Models for Refraction through Rough Surfaces", EGSR 2007, with
 // the anisotropic GGX terms of brdf/ggx.glsl and Smith's separable G = G1(wi) G1(wo); as Mitsuba 3's
 // roughdielectric with distribution=ggx (docs/brdfs.md, "ggx_dielectric"). wi and wo may lie on either side of

@@ -4,7 +4,7 @@
 // | parameter | range   | default | kind | meaning                                  |
 // |-----------|---------|---------|------|------------------------------------------|
 // | eta       | [1, 10] | 1.5     | eta  | index of refraction, inside over outside |
-// | tint      | [0, 1]  | 1       | rgb  | transmittance colour                     |
+// | tint      | [0, 1]  | 1       | rgb transmittance | transmittance colour        |
 // Snell's law and the Fresnel equations (Born & Wolf, "Principles of Optics", §1.5); Schlick 1994 for the
 // approximations; conventions of docs/brdf_contract.md: if wi.n >= 0 the light comes from outside
 // (eta_i = 1, eta_t = eta, nn = n), else from inside (eta_i = eta, eta_t = 1, nn = -n).

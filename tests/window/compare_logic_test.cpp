@@ -111,6 +111,18 @@ TEST(CompareSpecTest, ModelSwitchesCarryOverWhatMeansTheSameThing) {
   gpu::MaterialRecord glass = record;
   switchModel(glass, modelId("glass"));
   EXPECT_EQ(getParam(glass, "eta"), glm::vec3(1.8f));
+  // Smooth glass to rough and back keeps the index and the tint (the transmittance role).
+  setParam(glass, "tint", glm::vec3(0.2f, 0.6f, 1.0f), "t");
+  gpu::MaterialRecord rough = glass;
+  switchModel(rough, modelId("ggx_dielectric"));
+  EXPECT_EQ(getParam(rough, "eta"), glm::vec3(1.8f));
+  EXPECT_EQ(getParam(rough, "tint"), glm::vec3(0.2f, 0.6f, 1.0f));
+  switchModel(rough, modelId("glass"));
+  EXPECT_EQ(getParam(rough, "tint"), glm::vec3(0.2f, 0.6f, 1.0f));
+  gpu::MaterialRecord invisible = defaultRecord(modelId("glass"));
+  setParam(invisible, "eta", glm::vec3(1.0f), "t");
+  switchModel(invisible, modelId("ggx_dielectric"));
+  EXPECT_EQ(getParam(invisible, "eta").x, 1.001f) << "clamped into rough glass's range";
   // Every switch leaves a record whose every parameter is in range, whatever came before.
   for (const ModelInfo& from : allModels()) {
     for (const ModelInfo& to : allModels()) {
