@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <set>
 
 #include "brdf_params/material_params.h"
@@ -81,7 +82,9 @@ BrdfCase parseRow(std::string_view line, int lineNumber, const std::string& sour
   const auto& [id, model, params, wi, wo, n, t] = row.fields;
   if (id.empty()) throw Error(fieldWhere(where, "id") + ": empty");
 
-  row.input.material = parseMaterial(model, params, where);
+  // A file parameter (measured's file=) is relative to the CSV's folder.
+  row.input.material =
+      parseMaterial(model, params, where, std::filesystem::path(source).parent_path().string());
   // A delta BSDF (glass) is evaluated for the light direction alone: its two delta directions and Fresnel.
   const bool glass = isDeltaOnly(row.input.material.model);
   row.input.wi = parseDirection(wi, fieldWhere(where, "wi"));
@@ -127,14 +130,15 @@ glm::vec3 parseVector(std::string_view text, const std::string& where) {
   return v;
 }
 
-gpu::MaterialRecord parseMaterial(std::string_view model, std::string_view params, const std::string& where) {
+gpu::MaterialRecord parseMaterial(std::string_view model, std::string_view params, const std::string& where,
+                                  const std::string& fileBase) {
   const ModelInfo* info = findModel(trim(model));
   if (info == nullptr) {
     throw Error(fieldWhere(where, "model") + ": unknown model '" + std::string(model) + "' (known: " + modelNames() +
                 ")");
   }
   gpu::MaterialRecord record = defaultRecord(info->id);
-  applyParamList(record, params, fieldWhere(where, "params"));
+  applyParamList(record, params, fieldWhere(where, "params"), fileBase);
   return record;
 }
 

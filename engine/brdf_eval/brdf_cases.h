@@ -39,7 +39,9 @@ BrdfCaseFile parseBrdfCases(std::string_view text, const std::string& source);
 // device, whose shaders render; `cpu` is the double-precision reference to compare against.
 inline constexpr const char* kDefaultBrdfBackend = "gpu";
 
-gpu::MaterialRecord parseMaterial(std::string_view model, std::string_view params, const std::string& where);
+// A file parameter's path is relative to `fileBase` (the current directory when empty).
+gpu::MaterialRecord parseMaterial(std::string_view model, std::string_view params, const std::string& where,
+                                  const std::string& fileBase = "");
 
 // "x y z": three finite numbers separated by spaces. Throws Error naming `where`.
 glm::vec3 parseVector(std::string_view text, const std::string& where);

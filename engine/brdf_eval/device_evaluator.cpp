@@ -52,6 +52,20 @@ BatchKernel createBatchKernel(const Device& device, const BatchLayout& layout, s
   return batch;
 }
 
+// The records as the device sees them; the tables are rebuilt when they use other measured files.
+std::vector<gpu::MaterialRecord> bindMaterials(const Device& device, BatchKernel& batch,
+                                               std::span<const gpu::MaterialRecord> records) {
+  DeviceMaterials materials = deviceMaterials(records);
+  if (materials.measuredFiles != batch.measuredFiles) {
+    Buffer tables = createBrdfTables(device, materials.measuredFiles);
+    destroyBuffer(device, batch.tables);
+    batch.tables = tables;
+    batch.measuredFiles = materials.measuredFiles;
+    writeStorageBuffer(device, batch.kernel.descriptors.set, gpu::kBindingBrdfTables, batch.tables.handle);
+  }
+  return std::move(materials.records);
+}
+
 }  // namespace
 
 void destroyBatchKernel(const Device& device, BatchKernel& batch) {
@@ -80,7 +94,12 @@ std::vector<gpu::BrdfEvalValue> evaluateBrdfCases(const Device& device, BrdfEval
   const auto count = static_cast<std::uint32_t>(cases.size());
   std::vector<gpu::BrdfEvalValue> values(count);
   if (count == 0) return values;
-  uploadBuffer(device, evaluator.inputs, cases.data(), cases.size_bytes());
+  std::vector<gpu::MaterialRecord> records;
+  for (const gpu::BrdfEvalCase& c : cases) records.push_back(c.material);
+  records = bindMaterials(device, evaluator, records);
+  std::vector<gpu::BrdfEvalCase> deviceCases(cases.begin(), cases.end());
+  for (std::size_t i = 0; i < deviceCases.size(); ++i) deviceCases[i].material = records[i];
+  uploadBuffer(device, evaluator.inputs, deviceCases.data(), cases.size_bytes());
   const Stopwatch clock;
   submitAndWait(device, [&](VkCommandBuffer cmd) {
     recordDispatch(cmd, evaluator.kernel, &count, workgroups(count));
@@ -120,7 +139,7 @@ std::vector<gpu::BrdfSampleValue> drawBrdfSamples(const Device& device, BrdfSamp
                                                   std::span<const glm::vec3> uniforms) {
   checkCapacity("drawBrdfSamples", uniforms.size(), sampler.capacity);
   gpu::BrdfSampleParams params{};
-  params.material = material;
+  params.material = bindMaterials(device, sampler, std::span(&material, 1)).front();
   params.wo = wo;
   params.count = static_cast<std::uint32_t>(uniforms.size());
   std::vector<gpu::BrdfSampleValue> samples(params.count);

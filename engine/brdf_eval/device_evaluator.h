@@ -19,6 +19,7 @@ struct BatchKernel {
   Buffer inputs;
   Buffer outputs;
   Buffer tables;  // the BRDF library's tables (brdf_tables/brdf_tables.h)
+  std::vector<std::uint32_t> measuredFiles;  // in `tables`, for the last batch's materials
   std::uint32_t capacity = 0;
 };
 void destroyBatchKernel(const Device& device, BatchKernel& batch);

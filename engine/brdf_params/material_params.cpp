@@ -5,11 +5,14 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <set>
 
+#include "measured/measured_library.h"
 #include "shared/brdf_lobes.h"
 #include "util/error.h"
+#include "util/files.h"
 
 namespace raylab {
 
@@ -120,6 +123,25 @@ void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 valu
     throw Error(where + ": '" + std::string(name) + "' is not a parameter of " + std::string(model.name) +
                 " (it has " + known + ")");
   }
+  if (isFileParam(*param)) {
+    // A number names a file only as the id of one already loaded (measured_library.h), as a copy of a record
+    // holds it; a user gives a path (setFileParam).
+    const auto id = static_cast<std::uint32_t>(value.x);
+    bool loaded = value.x == float(id) && id != kNoMeasuredFile;
+    if (loaded) {
+      try {
+        measuredFile(id);
+      } catch (const Error&) {
+        loaded = false;
+      }
+    }
+    if (!loaded) {
+      throw Error(where + ": " + std::string(name) + " of " + std::string(model.name) + " is a file: give its path (" +
+                  std::string(name) + "=PATH)");
+    }
+    record.params[param->slot] = value.x;
+    return;
+  }
   const int channels = param->rgb ? 3 : 1;
   for (int c = 0; c < channels; ++c) {
     if (!std::isfinite(value[c]) || value[c] < param->min || value[c] > param->max) {
@@ -138,6 +160,40 @@ glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name) {
     throw Error("'" + std::string(name) + "' is not a parameter of " + std::string(modelInfo(record.model).name));
   }
   return param == &kDelta ? glm::vec3(record.delta) : readSlot(record, *param);
+}
+
+bool isFileParam(const ParamInfo& param) { return param.role == "file"; }
+
+void setFileParam(gpu::MaterialRecord& record, std::string_view name, const std::string& path, const std::string& where) {
+  const ParamInfo* param = findParam(modelInfo(record.model), name);
+  if (param == nullptr || !isFileParam(*param)) {
+    throw Error(where + ": '" + std::string(name) + "' is not a file parameter of " +
+                std::string(modelInfo(record.model).name));
+  }
+  if (path.empty()) throw Error(where + ": " + std::string(name) + " is empty; expected the path of a file");
+  std::uint32_t id = kNoMeasuredFile;
+  try {
+    id = loadMeasured(path);
+  } catch (const FileError& error) {
+    throw FileError(where + ": " + std::string(name) + ": " + error.what(), error.problem());
+  } catch (const Error& error) {
+    throw Error(where + ": " + std::string(name) + ": " + error.what());
+  }
+  record.params[param->slot] = float(id);
+}
+
+std::string fileParamPath(const gpu::MaterialRecord& record, const ParamInfo& param) {
+  const auto id = static_cast<std::uint32_t>(record.params[param.slot]);
+  return id == kNoMeasuredFile ? std::string() : measuredFile(id)->path;
+}
+
+void checkFileParams(const gpu::MaterialRecord& record, const std::string& where) {
+  for (const ParamInfo& param : modelInfo(record.model).params) {
+    if (isFileParam(param) && fileParamPath(record, param).empty()) {
+      throw Error(where + ": " + std::string(modelInfo(record.model).name) + " needs its " + std::string(param.name) +
+                  " (" + std::string(param.name) + "=PATH of a MERL .binary file)");
+    }
+  }
 }
 
 glm::vec3 previewColour(const gpu::MaterialRecord& record) {
@@ -179,7 +235,8 @@ std::string describeModelParams(const gpu::MaterialRecord& record) {
   const ModelInfo& model = modelInfo(record.model);
   std::string text(model.name);
   for (const ParamInfo& param : model.params) {
-    text += " " + std::string(param.name) + "=" + formatParamValue(getParam(record, param.name), param.rgb);
+    text += " " + std::string(param.name) + "=" +
+            (isFileParam(param) ? fileParamPath(record, param) : formatParamValue(getParam(record, param.name), param.rgb));
   }
   return text;
 }
@@ -200,7 +257,8 @@ bool parseNumber(std::string_view text, float& value) {
 
 }  // namespace
 
-void applyParamList(gpu::MaterialRecord& record, std::string_view text, const std::string& where) {
+void applyParamList(gpu::MaterialRecord& record, std::string_view text, const std::string& where,
+                    const std::string& fileBase) {
   const ModelInfo& model = modelInfo(record.model);
   std::set<std::string, std::less<>> seen;
   std::vector<std::pair<std::string, std::string_view>> numbers;  // after the presets, which they refine
@@ -229,6 +287,14 @@ void applyParamList(gpu::MaterialRecord& record, std::string_view text, const st
   }
   for (const auto& [name, valueText] : numbers) {
     const ParamInfo* param = findParam(model, name);
+    if (isFileParam(*param)) {
+      const std::filesystem::path path{std::string(valueText)};
+      setFileParam(record, name,
+                   path.is_absolute() || fileBase.empty() || valueText.empty() ? path.string()
+                                                                               : (std::filesystem::path(fileBase) / path).string(),
+                   where);
+      continue;
+    }
     glm::vec3 value(0.0f);
     int channels = 0;
     bool valid = true;

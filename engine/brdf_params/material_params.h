@@ -28,7 +28,8 @@ struct ParamInfo {
   // What the parameter means across models, for switching a material's model (the viewer carries the
   // appearance over) and for textures (which multiply the `diffuse` one): diffuse, specular, eta, transmittance, slope,
   // slope_x, slope_y, exponent (Blinn's, of N.H), mirror_exponent (Phong's, of R.wo), exponent_x, exponent_y;
-  // empty for none.
+  // file (a measured model's data file: the slot holds its id in engine/measured/measured_library.h, set by
+  // setFileParam from a path, never by a number); empty for none.
   std::string_view role;
   std::uint32_t slot;     // first float in MaterialRecord::params
 };
@@ -83,16 +84,30 @@ const ParamInfo* findParam(const ModelInfo& model, std::string_view name);
 
 // Sets one parameter of `record` (whose model is already set). Throws Error naming `where`, the parameter and
 // the accepted range when the name is unknown for this model, the value is not finite or out of range.
+// A file parameter takes only the id of a file already loaded (measured_library.h); paths go through setFileParam.
 void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 value, const std::string& where);
 // The current value of a parameter (RGB parameters return three channels, scalars a splat).
 glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name);
+
+// A parameter naming a data file (role `file`: the measured model's MERL file).
+bool isFileParam(const ParamInfo& param);
+// Loads the file at `path` (measured_library.h: once per process, every check of its reader) and points the
+// parameter at it. Throws Error starting with `where` and naming the file.
+void setFileParam(gpu::MaterialRecord& record, std::string_view name, const std::string& path, const std::string& where);
+// The path a file parameter points at; empty when no file was given.
+std::string fileParamPath(const gpu::MaterialRecord& record, const ParamInfo& param);
+// Throws Error starting with `where` when a file parameter of the record's model has no file (a scene cannot
+// render a measured material without its data).
+void checkFileParams(const gpu::MaterialRecord& record, const std::string& where);
 
 // The one grammar of a parameter list, on every command line, in CSV files and in Python strings: `k=v` entries
 // separated by ',' or ';' (either; a CSV field uses ';' since ',' separates its columns), spaces around them
 // ignored, RGB values as r/g/b (one number: grey). Sets each on `record` (whose model is set) with setParam's
 // checks; a name given twice or a malformed value throws Error starting with `where`. A preset (`metal=Au`) is
-// applied first, whatever its place in the list, so that the other entries refine it.
-void applyParamList(gpu::MaterialRecord& record, std::string_view text, const std::string& where);
+// applied first, whatever its place in the list, so that the other entries refine it. A file parameter's value is
+// a path, relative to `fileBase` unless absolute (the current directory when empty).
+void applyParamList(gpu::MaterialRecord& record, std::string_view text, const std::string& where,
+                    const std::string& fileBase = "");
 
 // The colour a material shows at a glance (glTF viewers, a Lambert stand-in), in [0, 1]: its model's diffuse
 // colour, else its specular colour, else its first RGB parameter ranging within [0, 1] (glass's tint), else grey.

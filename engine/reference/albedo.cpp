@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "reference/cubature.h"
 #include "reference/models.h"
@@ -94,9 +95,42 @@ dvec3 directionFromAngles(double theta, double phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }
 
+namespace {
+
+// A tabulated f is a step function, on which adaptive cubature refines every step without end: its albedo is the
+// mean of f cos_i / pdf over kTabulatedSamples draws of the model's own sampler, stratified in u.x, with a fixed
+// seed; errorEstimate is three standard errors of the largest channel.
+constexpr int kTabulatedSamples = 1 << 20;
+
+Albedo tabulatedAlbedo(const Material& material, const dvec3& wo) {
+  std::mt19937_64 random(20241204);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  dvec3 sum(0.0), sumSquares(0.0);
+  for (int i = 0; i < kTabulatedSamples; ++i) {
+    const dvec3 u((i + uniform(random)) / kTabulatedSamples, uniform(random), uniform(random));
+    const Sample s = sample(material, wo, u);
+    const dvec3 weight = s.pdf > 0.0 ? s.f * s.wi.z / s.pdf : dvec3(0.0);
+    sum += weight;
+    sumSquares += weight * weight;
+  }
+  Albedo albedo;
+  const double n = kTabulatedSamples;
+  albedo.value = albedo.specular = sum / n;
+  for (int c = 0; c < 3; ++c) {
+    const double variance = std::max(0.0, sumSquares[c] / n - albedo.value[c] * albedo.value[c]) / (n - 1.0);
+    albedo.errorEstimate = std::max(albedo.errorEstimate, 3.0 * std::sqrt(variance));
+  }
+  albedo.evaluations = kTabulatedSamples;
+  albedo.converged = true;
+  return albedo;
+}
+
+}  // namespace
+
 Albedo directionalAlbedo(const Material& material, const dvec3& wo, const AlbedoOptions& options) {
   Albedo albedo;
   if (!aboveHorizon(wo, wo) || (lobeFlags(material) & (gpu::kLobeDiffuse | gpu::kLobeGlossy)) == 0) return albedo;
+  if (isTabulated(material)) return tabulatedAlbedo(material, wo);
   CubatureOptions cubature;
   cubature.relTolerance = options.relTolerance;
   cubature.maxRegions = options.maxRegions;

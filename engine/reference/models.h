@@ -58,5 +58,8 @@ std::optional<dvec3> sampleTwoSided(const Material& material, const dvec3& wo, c
 std::optional<double> pdfTwoSided(const Material& material, const dvec3& wi, const dvec3& wo);
 // A two-sided model's index of refraction, inside over outside (its parameter of kind eta); empty for the others.
 std::optional<double> transmissionEta(const Material& material);
+// A model whose f is a table read from a file (measured): a step function of the directions, which the albedo
+// integrates by sampling rather than by adaptive cubature.
+bool isTabulated(const Material& material);
 
 }  // namespace raylab::reference

@@ -86,10 +86,16 @@ void packTextures(const Scene& scene, std::vector<gpu::TextureRecord>& records, 
   }
 }
 
-std::vector<gpu::MaterialRecord> materialRecords(std::span<const Material> materials) {
+// The records as the device sees them (each measured file's block number in its `file` parameter) and the
+// measured files they use.
+DeviceMaterials materialRecords(std::span<const Material> materials) {
   std::vector<gpu::MaterialRecord> records;
-  for (const Material& material : materials) records.push_back(material.record);
-  return records;
+  std::vector<std::string> names;
+  for (const Material& material : materials) {
+    records.push_back(material.record);
+    names.push_back(material.name);
+  }
+  return deviceMaterials(records, names);
 }
 
 std::string mebibytes(std::uint64_t bytes) {
@@ -269,9 +275,10 @@ void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) 
   gpuScene.accelerationBuildSeconds = clock.seconds();
 
   gpuScene.instances = createBufferWithData<gpu::InstanceRecord>(device, instanceRecords, kStorage, "instances");
-  const std::vector<gpu::MaterialRecord> materials = materialRecords(scene.materials);
-  gpuScene.materials = createBufferWithData<gpu::MaterialRecord>(device, materials, kStorage, "materials");
-  gpuScene.materialCount = static_cast<std::uint32_t>(materials.size());
+  const DeviceMaterials materials = materialRecords(scene.materials);
+  gpuScene.materials = createBufferWithData<gpu::MaterialRecord>(device, materials.records, kStorage, "materials");
+  gpuScene.materialCount = static_cast<std::uint32_t>(materials.records.size());
+  gpuScene.measuredFiles = materials.measuredFiles;
   const SceneLights& lights = gpuScene.sceneLights;
   // A buffer may not be empty: a scene without lights gets one black record that nothing counts.
   const std::vector<gpu::LightRecord> lightRecords =
@@ -287,7 +294,7 @@ void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) 
   gpuScene.texels = createBufferWithData<std::uint32_t>(device, texels, kStorage, "texels");
   const std::vector<float> environment = packEnvironment(scene.environment, environmentTables, lights.environmentLight);
   gpuScene.environment = createBufferWithData<float>(device, environment, kStorage, "environment");
-  gpuScene.brdfTables = createBrdfTables(device);
+  gpuScene.brdfTables = createBrdfTables(device, gpuScene.measuredFiles);
 }
 
 }  // namespace
@@ -304,10 +311,20 @@ void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
   gpuScene = {};
 }
 
-void updateMaterials(const Device& device, const GpuScene& gpuScene, std::span<const Material> materials) {
+bool updateMaterials(const Device& device, GpuScene& gpuScene, std::span<const Material> materials) {
   if (materials.size() != gpuScene.materialCount) throw Error("updateMaterials: the material count changed");
-  const std::vector<gpu::MaterialRecord> records = materialRecords(materials);
-  uploadBuffer<gpu::MaterialRecord>(device, gpuScene.materials, records);
+  const DeviceMaterials records = materialRecords(materials);
+  bool replaced = false;
+  if (records.measuredFiles != gpuScene.measuredFiles) {
+    // Built before the old one goes, so that a refused file set (too large) leaves the scene as it was.
+    Buffer tables = createBrdfTables(device, records.measuredFiles);
+    destroyBuffer(device, gpuScene.brdfTables);
+    gpuScene.brdfTables = tables;
+    gpuScene.measuredFiles = records.measuredFiles;
+    replaced = true;
+  }
+  uploadBuffer<gpu::MaterialRecord>(device, gpuScene.materials, records.records);
+  return replaced;
 }
 
 void updateLights(const Device& device, GpuScene& gpuScene, std::span<const Light> lights) {

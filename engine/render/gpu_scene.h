@@ -29,6 +29,7 @@ struct GpuScene {
   Buffer texels;    // RGBA8 sRGB texels of every texture
   Buffer environment;  // EnvironmentHeader, the environment image and its sampling tables
   Buffer brdfTables;   // the BRDF library's tables (brdf_tables/brdf_tables.h)
+  std::vector<std::uint32_t> measuredFiles;  // the measured files in brdfTables, in block order
   std::vector<AccelerationStructure> blases;
   AccelerationStructure tlas;
   // gpu::kGeometry... of each TLAS instance, in instance order: instance i's custom index and SBT record
@@ -46,8 +47,10 @@ struct GpuScene {
 GpuScene uploadScene(const Device& device, const Scene& scene);
 void destroyGpuScene(const Device& device, GpuScene& gpuScene);
 
-// Live edits (the viewer): same counts as uploaded, new values.
-void updateMaterials(const Device& device, const GpuScene& gpuScene, std::span<const Material> materials);
+// Live edits (the viewer): same counts as uploaded, new values. updateMaterials returns true when the materials
+// now use other measured files: it replaced brdfTables, and every descriptor set holding the old one must be
+// written again (writeSceneDescriptors).
+bool updateMaterials(const Device& device, GpuScene& gpuScene, std::span<const Material> materials);
 void updateLights(const Device& device, GpuScene& gpuScene, std::span<const Light> lights);
 
 // The scene's descriptor bindings, to merge into a kernel's set layout, and writing them into a set.

@@ -273,7 +273,9 @@ Image renderSweepCell(SweepCellRenderer& cells, const SweepStudy& study, std::ui
   const Device& device = cells.gpu.device;
   Renderer& renderer = cells.renderer;
   const std::uint32_t spp = study.options.spp;
-  updateMaterials(device, cells.gpuScene, cellMaterials(study.sweep, cell));
+  if (updateMaterials(device, cells.gpuScene, cellMaterials(study.sweep, cell))) {
+    writeSceneDescriptors(device, renderer.trace.descriptors.set, cells.gpuScene);
+  }
   resetAccumulation(device, renderer);
   // Submissions of about a quarter second keep a progress line live (as in `raylab render`).
   std::uint32_t batch = 1;

@@ -1,5 +1,6 @@
 #include "view/comparison.h"
 
+#include "brdf_tables/brdf_tables.h"
 #include "shared/bindings.h"
 #include "vk/pipeline.h"
 
@@ -13,11 +14,25 @@ KernelFeatures comparedKernel(const Scene& scene, const CompareSpec& spec, std::
   return kernel;
 }
 
-std::vector<gpu::MaterialRecord> recordsOf(const std::vector<Material>& materials) {
+DeviceMaterials recordsOf(const std::vector<Material>& materials) {
   std::vector<gpu::MaterialRecord> records;
-  records.reserve(materials.size());
-  for (const Material& material : materials) records.push_back(material.record);
-  return records;
+  std::vector<std::string> names;
+  for (const Material& material : materials) {
+    records.push_back(material.record);
+    names.push_back(material.name);
+  }
+  return deviceMaterials(records, names);
+}
+
+// The right side's own BRDF tables: its material may use a measured file the scene does not.
+void bindTables(const Device& device, const DeviceMaterials& records, Comparison& comparison) {
+  if (comparison.brdfTables.handle != VK_NULL_HANDLE && records.measuredFiles == comparison.measuredFiles) return;
+  Buffer tables = createBrdfTables(device, records.measuredFiles);
+  destroyBuffer(device, comparison.brdfTables);
+  comparison.brdfTables = tables;
+  comparison.measuredFiles = records.measuredFiles;
+  writeStorageBuffer(device, comparison.renderer.trace.descriptors.set, gpu::kBindingBrdfTables,
+                     comparison.brdfTables.handle);
 }
 
 }  // namespace
@@ -38,12 +53,13 @@ void startComparison(const Device& device, const GpuScene& gpuScene, const Scene
                      std::uint32_t integrator, const CompareSpec& spec, Comparison& comparison) {
   stopComparison(device, comparison);
   settings.kernel = comparedKernel(scene, spec, integrator);
-  const std::vector<gpu::MaterialRecord> records = recordsOf(comparedMaterials(scene, spec));
-  comparison.materials =
-      createBufferWithData<gpu::MaterialRecord>(device, records, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "compared materials");
+  const DeviceMaterials records = recordsOf(comparedMaterials(scene, spec));
+  comparison.materials = createBufferWithData<gpu::MaterialRecord>(device, records.records,
+                                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "compared materials");
   comparison.renderer = createRenderer(device, gpuScene, withMaterial(scene, spec), settings);
   writeStorageBuffer(device, comparison.renderer.trace.descriptors.set, gpu::kBindingMaterials,
                      comparison.materials.handle);
+  bindTables(device, records, comparison);
   comparison.spec = spec;
   comparison.active = true;
 }
@@ -52,13 +68,15 @@ void stopComparison(const Device& device, Comparison& comparison) {
   if (!comparison.active) return;
   destroyRenderer(device, comparison.renderer);
   destroyBuffer(device, comparison.materials);
+  destroyBuffer(device, comparison.brdfTables);
   comparison = {};
 }
 
 void updateComparison(const Device& device, const Scene& scene, std::uint32_t integrator, Comparison& comparison) {
   if (!comparison.active) return;
-  const std::vector<gpu::MaterialRecord> records = recordsOf(comparedMaterials(scene, comparison.spec));
-  uploadBuffer<gpu::MaterialRecord>(device, comparison.materials, records);
+  const DeviceMaterials records = recordsOf(comparedMaterials(scene, comparison.spec));
+  uploadBuffer<gpu::MaterialRecord>(device, comparison.materials, records.records);
+  bindTables(device, records, comparison);
   const KernelFeatures wanted = comparedKernel(scene, comparison.spec, integrator);
   if (!(wanted == comparison.renderer.kernel)) {
     swapRenderPipelines(device, comparison.renderer, createRenderPipelines(device, comparison.renderer, wanted), wanted);

@@ -18,6 +18,8 @@ struct Comparison {
   bool active = false;
   CompareSpec spec;
   Buffer materials;   // the scene's materials with spec applied, bound over the scene's in renderer's set
+  Buffer brdfTables;  // the BRDF tables with the measured files those materials use, bound likewise
+  std::vector<std::uint32_t> measuredFiles;
   Renderer renderer;  // the right side
 };
 

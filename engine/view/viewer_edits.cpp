@@ -45,7 +45,9 @@ void saveScreenshot(Viewer& v, const std::string& exrPath, const std::string& pn
 void uploadSceneEdits(Viewer& v, bool materials, bool lights) {
   if (!materials && !lights) return;
   waitForFrames(v);  // on a CPU device the buffers are host memory that running frames read
-  if (materials) updateMaterials(v.device, v.gpuScene, v.scene.materials);
+  if (materials && updateMaterials(v.device, v.gpuScene, v.scene.materials)) {
+    writeSceneDescriptors(v.device, v.renderer.trace.descriptors.set, v.gpuScene);
+  }
   if (lights) updateLights(v.device, v.gpuScene, v.scene.lights);
   v.needed = neededKernel(v);
   ensureKernel(v);

@@ -18,3 +18,4 @@ raylab_brdf_model(eon PREFIX eon GLSL brdf/eon.glsl REFERENCE ${reference}/eon.c
 raylab_brdf_model(gltf_pbr PREFIX gltfPbr GLSL brdf/gltf_pbr.glsl REFERENCE ${reference}/gltf_pbr.cpp)
 raylab_brdf_model(ggx_conductor PREFIX ggxConductor GLSL brdf/ggx_conductor.glsl REFERENCE ${reference}/ggx_conductor.cpp)
 raylab_brdf_model(ggx_dielectric PREFIX ggxDielectric GLSL brdf/ggx_dielectric.glsl REFERENCE ${reference}/ggx_dielectric.cpp)
+raylab_brdf_model(measured PREFIX measured GLSL brdf/measured.glsl REFERENCE ${reference}/measured.cpp)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "brdf_params/material_params.h"
+#include "support/measured_files.h"
 
 namespace raylab::test {
 
@@ -20,16 +21,20 @@ struct GenericMaterial {
 };
 
 // For each registered model with an f (not a delta BSDF) that `covered` lacks: its defaults with the diffuse
-// colour 0.4 and its other colours 0.6, and with the diffuse colour 0 and the other colours 1 (the lobes alone).
+// colour 0.4 and its other colours 0.6, and with the diffuse colour 0 and the other colours 1 (the lobes alone); a
+// file parameter (measured) points at the first test file in the one and the second in the other.
 inline std::vector<GenericMaterial> uncoveredModelMaterials(const std::set<std::string, std::less<>>& covered) {
   std::vector<GenericMaterial> materials;
   for (const ModelInfo& model : allModels()) {
     if (isDeltaOnly(model) || covered.count(model.name) > 0) continue;
+    int variant = 0;
     for (const auto& [diffuse, other] : {std::pair{0.4, 0.6}, std::pair{0.0, 1.0}}) {
       GenericMaterial material{std::string(model.name), {}};
       for (const ParamInfo& p : model.params) {
         if (p.rgb) material.params.push_back({p.name, p.role == "diffuse" ? diffuse : other});
+        if (isFileParam(p)) material.params.push_back({p.name, double(measuredTestFile(variant))});
       }
+      ++variant;
       materials.push_back(material);
     }
   }

@@ -18,7 +18,7 @@ import sys
 MAX_PARAM_FLOATS = 16  # gpu::kMaxMaterialParams (shaders/shared/scene_records.h)
 LOBES = {"reflection": 1, "transmission": 2, "diffuse": 4, "glossy": 8, "specular": 16}
 ROLES = {"diffuse", "specular", "eta", "transmittance", "slope", "slope_x", "slope_y", "exponent", "mirror_exponent",
-         "exponent_x", "exponent_y"}
+         "exponent_x", "exponent_y", "file"}
 ROW = re.compile(r"^//\s*\|\s*`?(\w+)`?\s*\|\s*\[([-0-9.e]+),\s*([-0-9.e]+)\]\s*\|\s*([-0-9.e]+)\s*\|"
                  r"\s*([^|]*)\|\s*([^|]*?)\s*\|\s*$")
 
@@ -58,6 +58,8 @@ def parse_model(name, prefix, include, path):
                 roles = [t for t in tags if t not in ("rgb", "log")]
                 if len(roles) > 1 or (roles and roles[0] not in ROLES):
                     raise RegistryError(f"{where}: kind is rgb, log and at most one role of {sorted(ROLES)}")
+                if "file" in roles and (rgb or log):
+                    raise RegistryError(f"{where}: a file parameter is one scalar slot (the file's id), neither rgb nor log")
                 lo, hi, default = float(lo), float(hi), float(default)
                 if not lo <= default <= hi or (log and lo <= 0):
                     raise RegistryError(f"{where}: default {default} outside [{lo}, {hi}] (or a log range at 0)")
@@ -253,6 +255,8 @@ def reference_dispatch(models):
            lambda m: f"{m['prefix']}DeltaEvent({params(m)}, wi, n)", "std::nullopt", is_delta)
     switch("std::uint32_t lobeFlags(const Material& material)", lambda m: f"{m['lobes']}u", "0u",
            lambda m: True)
+    switch("bool isTabulated(const Material& material)", lambda m: "true", "false",
+           lambda m: any(p["role"] == "file" for p in m["params"]))
     out += ["}  // namespace raylab::reference", ""]
     return "\n".join(out)
 
