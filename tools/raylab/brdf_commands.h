@@ -10,5 +10,9 @@ namespace raylab {
 void addBrdfAlbedoCommand(CLI::App& brdf);
 // `raylab brdf models` (brdf_models.cpp).
 void addBrdfModelsCommand(CLI::App& brdf);
+// `raylab brdf fit` (brdf_fit.cpp).
+void addBrdfFitCommand(CLI::App& brdf);
+// `raylab brdf tabulate` (brdf_tabulate.cpp).
+void addBrdfTabulateCommand(CLI::App& brdf);
 
 }  // namespace raylab

@@ -68,7 +68,7 @@ int evaluate(const EvalOptions& o) {
 
 void addBrdfCommands(CLI::App& raylab) {
   CLI::App* brdf = addCommandGroup(raylab, "brdf",
-                                   "the BRDF library outside the renderer: brdf eval, brdf albedo, brdf models (docs/brdfs.md)");
+                                   "the BRDF library outside the renderer: brdf eval, brdf albedo, brdf models, brdf fit, brdf tabulate (docs/brdfs.md)");
   auto o = std::make_shared<EvalOptions>();
   CLI::App* command = addCommand(
       *brdf, "eval",
@@ -87,6 +87,8 @@ void addBrdfCommands(CLI::App& raylab) {
   addDeviceOption(command, o->device);
   addBrdfAlbedoCommand(*brdf);
   addBrdfModelsCommand(*brdf);
+  addBrdfFitCommand(*brdf);
+  addBrdfTabulateCommand(*brdf);
 }
 
 }  // namespace raylab

@@ -1,0 +1,57 @@
+// Fitting the analytic models of the library to a target (fit_target.h): each model's parameters within their
+// ranges (log-scaled ones in log space; x/y pairs tied for an isotropic target) minimising a stated error over the
+// target's direction pairs, by Ceres Solver's Levenberg-Marquardt from several starts (docs/fitting.md).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fit/fit_target.h"
+#include "shared/scene_records.h"
+
+namespace raylab {
+
+// The error a fit minimises, per pair and channel, weighted by the pair's weight (docs/fitting.md):
+//   cosine: f cos_i, the target's minus the model's (Ngan, Durand & Matusik, EGSR 2005);
+//   log:    log(1 + f cos_i), the target's minus the model's (compresses highlights: tails weigh more).
+enum class FitMetric { kCosine, kLog };
+FitMetric parseFitMetric(const std::string& text, const std::string& where);
+const char* fitMetricName(FitMetric metric);
+
+struct FitOptions {
+  std::vector<std::string> models;  // empty: every model fitModels can fit
+  FitMetric metric = FitMetric::kCosine;
+  int starts = 4;                   // the defaults, then random points of the parameter box
+  unsigned seed = 1;                // of the random starts: the same seed gives the same fits
+  int threads = 0;                  // starts solved at once; 0: one per core
+  // Called after each start, from the thread that solved it, one call at a time.
+  std::function<void(int startsDone, int startsTotal, const std::string& model, double seconds)> progress;
+};
+
+struct FitResult {
+  std::string model;
+  gpu::MaterialRecord record;  // the fitted material (every other parameter at its default)
+  double error = 0.0;          // sqrt(sum over pairs and channels of weight * residual^2 / 3): an RMS
+  double relativeError = 0.0;  // error over the same RMS of the target alone
+  double seconds = 0.0;        // CPU seconds of all its starts
+  int iterations = 0;          // of the best start
+};
+
+// The models that can be fitted: every one with a density that is not read from a file (not delta, not measured).
+std::vector<std::string> fittableModels();
+
+// Fits and ranks: best (least error) first. Throws Error for an unknown or unfittable model name.
+std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& options);
+
+// A fit's parameters by name, each with one value or three (RGB), in its model's order: the JSON of `raylab brdf
+// fit` and Python's table.
+std::vector<std::pair<std::string, std::vector<double>>> fitParams(const FitResult& fit);
+// "rho_d=0.1/0.2/0.3,rho_s=0.5,alpha_x=0.12": the parameter list `--material` and `--compare` take.
+std::string fitParamList(const FitResult& fit);
+
+// The error of a material against the target (FitResult::error, relativeError).
+double fitError(const FitTarget& target, const gpu::MaterialRecord& record, FitMetric metric,
+                double* relativeError = nullptr);
+
+}  // namespace raylab

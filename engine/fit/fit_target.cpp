@@ -1,0 +1,178 @@
+#include "fit/fit_target.h"
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "brdf_params/material_params.h"
+#include "measured/merl.h"
+#include "reference/brdf_reference.h"
+#include "util/error.h"
+#include "util/files.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kThetaDStep = 6;
+constexpr int kPhiDStep = 12;
+// A CSV of samples is read whole: at most this many bytes (about 10 million samples).
+constexpr std::uint64_t kMaxSampleFileBytes = std::uint64_t(1) << 30;
+
+void normaliseWeights(std::vector<FitPair>& pairs) {
+  double total = 0.0;
+  for (const FitPair& p : pairs) total += p.weight;
+  for (FitPair& p : pairs) p.weight /= total;
+}
+
+glm::dvec3 turned(const glm::dvec3& w, double phi) {
+  const double c = std::cos(phi), s = std::sin(phi);
+  return {c * w.x - s * w.y, s * w.x + c * w.y, w.z};
+}
+
+std::string_view trimmed(std::string_view text) {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\r')) text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);
+  return text;
+}
+
+}  // namespace
+
+std::vector<FitPair> merlGridPairs(unsigned azimuthSeed) {
+  const double cosMax = std::cos(kFitMaxThetaDegrees * kPi / 180.0);
+  std::mt19937_64 random(azimuthSeed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<FitPair> pairs;
+  std::size_t index = 0;
+  for (int h = 0; h < kMerlThetaH; ++h) {
+    const double u = (h + 0.5) / kMerlThetaH;
+    const double thetaH = u * u * 0.5 * kPi;
+    for (int d = kThetaDStep / 2; d < kMerlThetaD; d += kThetaDStep) {
+      const double thetaD = (d + 0.5) / kMerlThetaD * 0.5 * kPi;
+      for (int p = kPhiDStep / 2; p < kMerlPhiD; p += kPhiDStep) {
+        const double phiD = (p + 0.5) / kMerlPhiD * kPi;
+        FitPair pair;
+        merlDirections(thetaH, thetaD, phiD, &pair.wi, &pair.wo);
+        if (!(pair.wi.z > cosMax && pair.wo.z > cosMax)) continue;
+        // dwi dwo = 4 cos theta_d sin theta_h sin theta_d dtheta_h dphi_h dtheta_d dphi_d, and the non-linear axis
+        // gives dtheta_h = u pi du: the bins' widths in u, theta_d and phi_d are equal.
+        pair.weight = 4.0 * std::cos(thetaD) * std::sin(thetaH) * std::sin(thetaD) * u;
+        if (azimuthSeed != 0) {
+          const double phi = 2.0 * kPi * ((index++ % 64) + uniform(random)) / 64.0;
+          pair.wi = turned(pair.wi, phi);
+          pair.wo = turned(pair.wo, phi);
+        }
+        pairs.push_back(pair);
+      }
+    }
+  }
+  normaliseWeights(pairs);
+  return pairs;
+}
+
+FitTarget merlFitTarget(const std::string& path) {
+  const MerlTable table = readMerl(path);
+  FitTarget target;
+  target.name = path;
+  target.isotropic = true;
+  for (FitPair pair : merlGridPairs()) {
+    const std::size_t index = merlIndex(pair.wi, pair.wo);
+    bool missing = false;
+    for (int c = 0; c < 3; ++c) missing |= table.stored[index + c * kMerlSamples] < 0.0;
+    if (missing) continue;
+    pair.f = merlLookup(table, pair.wi, pair.wo);
+    target.pairs.push_back(pair);
+  }
+  if (target.pairs.empty()) throw Error(path + ": no sample within 80 degrees of the normal is present");
+  normaliseWeights(target.pairs);
+  return target;
+}
+
+FitTarget csvFitTarget(const std::string& path) {
+  const std::string text = readInputFile(path, kMaxSampleFileBytes);
+  constexpr std::string_view kHeader = "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b";
+  FitTarget target;
+  target.name = path;
+  std::size_t start = 0;
+  int line = 0;
+  bool header = false;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::string_view row = trimmed(std::string_view(text).substr(start, end - start));
+    start = end + 1;
+    ++line;
+    if (row.empty() || row.front() == '#') continue;
+    const std::string where = path + ":" + std::to_string(line);
+    if (!header) {
+      std::string compact;
+      for (char c : row) {
+        if (c != ' ') compact += c;
+      }
+      if (compact != kHeader) throw Error(where + ": expected the header '" + std::string(kHeader) + "'");
+      header = true;
+      continue;
+    }
+    double v[9];
+    std::size_t from = 0;
+    for (int i = 0; i < 9; ++i) {
+      const std::size_t comma = i < 8 ? row.find(',', from) : row.size();
+      if (comma == std::string_view::npos) throw Error(where + ": expected 9 numbers separated by commas");
+      const std::string_view field = trimmed(row.substr(from, comma - from));
+      const auto [ptr, error] = std::from_chars(field.data(), field.data() + field.size(), v[i]);
+      if (error != std::errc() || ptr != field.data() + field.size() || !std::isfinite(v[i])) {
+        throw Error(where + ": field " + std::to_string(i + 1) + " '" + std::string(field) + "' is not a finite number");
+      }
+      from = comma + 1;
+    }
+    if (from <= row.size() && row.find(',', from) != std::string_view::npos) {
+      throw Error(where + ": more than 9 fields");
+    }
+    FitPair pair;
+    pair.wi = {v[0], v[1], v[2]};
+    pair.wo = {v[3], v[4], v[5]};
+    pair.f = {v[6], v[7], v[8]};
+    for (glm::dvec3* w : {&pair.wi, &pair.wo}) {
+      const double length = glm::length(*w);
+      if (!(length > 1e-6 && length < 1e6)) throw Error(where + ": a direction of length " + std::to_string(length));
+      *w /= length;
+    }
+    if (!(pair.wi.z > 0.0 && pair.wo.z > 0.0)) throw Error(where + ": wi and wo must lie above the surface (z > 0)");
+    if (pair.f.x < 0.0 || pair.f.y < 0.0 || pair.f.z < 0.0) throw Error(where + ": f is negative");
+    target.pairs.push_back(pair);
+  }
+  if (!header) throw Error(path + ": empty; expected the header '" + std::string(kHeader) + "' and samples");
+  if (target.pairs.empty()) throw Error(path + ": no samples after the header");
+  normaliseWeights(target.pairs);
+  return target;
+}
+
+FitTarget materialFitTarget(const gpu::MaterialRecord& record, const std::string& name) {
+  if (isDeltaOnly(record.model)) throw Error(name + ": a delta BSDF has no f to fit");
+  const reference::Material material = reference::fromRecord(record);
+  FitTarget target;
+  target.name = name;
+  target.pairs = merlGridPairs(20261204);
+  for (FitPair& pair : target.pairs) pair.f = reference::eval(material, pair.wi, pair.wo);
+  return target;
+}
+
+FitTarget loadFitTarget(const std::string& text, const std::string& fileBase) {
+  const std::string extension = std::filesystem::path(text).extension().string();
+  if (extension == ".binary") return merlFitTarget(text);
+  if (extension == ".csv") return csvFitTarget(text);
+  const std::size_t colon = text.find(':');
+  const std::string modelName = text.substr(0, colon);
+  const ModelInfo* model = findModel(modelName);
+  if (model == nullptr) {
+    throw Error("'" + text + "' is neither a MERL .binary file, a .csv of samples, nor MODEL[:k=v,...] (models: " +
+                modelNames() + ")");
+  }
+  gpu::MaterialRecord record = defaultRecord(model->id);
+  if (colon != std::string::npos) applyParamList(record, std::string_view(text).substr(colon + 1), text, fileBase);
+  checkFileParams(record, text);
+  return materialFitTarget(record, text);
+}
+
+}  // namespace raylab

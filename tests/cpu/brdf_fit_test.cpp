@@ -1,0 +1,153 @@
+// `raylab brdf fit` (engine/fit): MERL files written from known models by the project's own writer are fitted back,
+// the generating model ranks first and its parameters come back within 1e-3 (noise-free) or a stated bound (with
+// noise); the same seed gives the same fits; bad targets are refused with the file and line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "brdf_params/material_params.h"
+#include "fit/fit.h"
+#include "measured/merl.h"
+#include "reference/brdf_reference.h"
+#include "util/error.h"
+
+namespace raylab::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("raylab_fit_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return (dir / name).string();
+}
+
+gpu::MaterialRecord material(const std::string& model, const std::string& params) {
+  gpu::MaterialRecord record = defaultRecord(modelId(model));
+  applyParamList(record, params, "test");
+  return record;
+}
+
+// A MERL file of `record`, each stored sample times (1 + noise * N(0, 1)) when noise > 0 (fixed seed).
+std::string merlFileOf(const gpu::MaterialRecord& record, const std::string& name, double noise = 0.0) {
+  const reference::Material m = reference::fromRecord(record);
+  MerlTable table = tabulateMerl([&](const glm::dvec3& wi, const glm::dvec3& wo) { return reference::eval(m, wi, wo); });
+  std::mt19937_64 random(7);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  if (noise > 0.0) {
+    for (double& v : table.stored) {
+      if (v >= 0.0) v = std::max(0.0, v * (1.0 + noise * normal(random)));
+    }
+  }
+  const std::string path = scratch(name);
+  writeMerl(path, table);
+  return path;
+}
+
+double param(const FitResult& fit, const std::string& name, int channel = 0) {
+  return getParam(fit.record, name)[channel];
+}
+
+FitOptions options(std::vector<std::string> models, int starts = 1) {
+  FitOptions o;
+  o.models = std::move(models);
+  o.starts = starts;
+  return o;
+}
+
+TEST(BrdfFit, RecoversIsotropicGgxFromAMerlFileAndRanksItFirst) {
+  const std::string path = merlFileOf(material("ggx_conductor", "alpha_x=0.15,alpha_y=0.15,metal=Au"), "ggx.binary");
+  const std::vector<FitResult> fits = fitModels(merlFitTarget(path), options({"cooktorrance", "ggx_conductor", "ward"}));
+  ASSERT_EQ(fits.size(), 3u);
+  EXPECT_EQ(fits[0].model, "ggx_conductor");
+  EXPECT_LT(fits[0].relativeError, 1e-6);
+  EXPECT_GT(fits[1].relativeError, 0.05) << "the other models cannot be this close";
+  EXPECT_NEAR(param(fits[0], "alpha_x"), 0.15, 0.15e-3);
+  EXPECT_NEAR(param(fits[0], "alpha_y"), 0.15, 0.15e-3);
+  const glm::vec3 eta = getParam(material("ggx_conductor", "metal=Au"), "eta");
+  const glm::vec3 k = getParam(material("ggx_conductor", "metal=Au"), "k");
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(param(fits[0], "eta", c), eta[c], 1e-3 * eta[c]) << c;
+    EXPECT_NEAR(param(fits[0], "k", c), k[c], 1e-3 * k[c]) << c;
+  }
+}
+
+TEST(BrdfFit, RecoversCookTorranceFromAMerlFileAndRanksItFirst) {
+  const std::string path = merlFileOf(material("cooktorrance", "rho_d=0.2/0.3/0.1,rho_s=0.8,m=0.3,eta=1.5"), "ct.binary");
+  const std::vector<FitResult> fits = fitModels(merlFitTarget(path), options({"blinnphong", "cooktorrance", "gltf_pbr"}));
+  EXPECT_EQ(fits[0].model, "cooktorrance");
+  EXPECT_LT(fits[0].relativeError, 1e-6);
+  EXPECT_NEAR(param(fits[0], "m"), 0.3, 0.3e-3);
+  EXPECT_NEAR(param(fits[0], "eta"), 1.5, 1.5e-3);
+  EXPECT_NEAR(param(fits[0], "rho_s"), 0.8, 0.8e-3);
+  EXPECT_NEAR(param(fits[0], "rho_d", 0), 0.2, 0.2e-3);
+  EXPECT_NEAR(param(fits[0], "rho_d", 1), 0.3, 0.3e-3);
+  EXPECT_NEAR(param(fits[0], "rho_d", 2), 0.1, 0.1e-3);
+}
+
+// 5% multiplicative Gaussian noise on every stored sample (a measurement's scale): the roughness comes back within
+// 2% and the generating model still ranks first.
+TEST(BrdfFit, WithFivePercentNoiseTheRoughnessIsWithinTwoPercent) {
+  const std::string path =
+      merlFileOf(material("ggx_conductor", "alpha_x=0.3,alpha_y=0.3,metal=Cu"), "noisy.binary", 0.05);
+  const std::vector<FitResult> fits = fitModels(merlFitTarget(path), options({"ggx_conductor", "ward"}));
+  EXPECT_EQ(fits[0].model, "ggx_conductor");
+  EXPECT_NEAR(param(fits[0], "alpha_x"), 0.3, 0.3 * 0.02);
+}
+
+TEST(BrdfFit, AMaterialTargetIsFittedAnisotropically) {
+  const FitTarget target = loadFitTarget("ward:rho_d=0.1,rho_s=0.5,alpha_x=0.1,alpha_y=0.3");
+  EXPECT_FALSE(target.isotropic);
+  const std::vector<FitResult> fits = fitModels(target, options({"ward"}));
+  EXPECT_NEAR(param(fits[0], "alpha_x"), 0.1, 1e-4);
+  EXPECT_NEAR(param(fits[0], "alpha_y"), 0.3, 3e-4);
+}
+
+TEST(BrdfFit, TheSameSeedGivesTheSameFits) {
+  const FitTarget target = loadFitTarget("gltf_pbr:base_color=0.7/0.5/0.2,roughness=0.4,metallic=0.3");
+  FitOptions o = options({"ward", "blinnphong"}, 3);
+  o.seed = 11;
+  o.threads = 2;
+  const std::vector<FitResult> a = fitModels(target, o);
+  const std::vector<FitResult> b = fitModels(target, o);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].model, b[i].model);
+    EXPECT_EQ(a[i].error, b[i].error);
+    EXPECT_EQ(fitParamList(a[i]), fitParamList(b[i]));
+  }
+}
+
+std::string errorOf(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const Error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(BrdfFit, BadTargetsAreRefusedNamingTheFileAndLine) {
+  const std::string csv = scratch("samples.csv");
+  std::ofstream(csv) << "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b\n0 ,0,1,0,0,1,0.1,0.1,0.1\n0,0,1,0,0,1,nan,0,0\n";
+  EXPECT_NE(errorOf([&] { csvFitTarget(csv); }).find("samples.csv:3"), std::string::npos);
+  std::ofstream(csv) << "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b\n0,0,-1,0,0,1,0.1,0.1,0.1\n";
+  EXPECT_NE(errorOf([&] { csvFitTarget(csv); }).find("above the surface"), std::string::npos);
+  std::ofstream(csv) << "a,b\n";
+  EXPECT_NE(errorOf([&] { csvFitTarget(csv); }).find("expected the header"), std::string::npos);
+  std::ofstream(csv) << "";
+  EXPECT_NE(errorOf([&] { csvFitTarget(csv); }).find("empty"), std::string::npos);
+  EXPECT_NE(errorOf([&] { loadFitTarget("glass"); }).find("delta"), std::string::npos);
+  EXPECT_NE(errorOf([&] { loadFitTarget("nonsense"); }).find("neither"), std::string::npos);
+  EXPECT_NE(errorOf([&] { loadFitTarget(scratch("missing.binary")); }).find("missing.binary"), std::string::npos);
+  EXPECT_NE(errorOf([&] { loadFitTarget(fs::temp_directory_path().string() + "/"); }).find("neither"), std::string::npos);
+  const FitTarget target = loadFitTarget("lambert");
+  EXPECT_NE(errorOf([&] { fitModels(target, options({"glass"})); }).find("is not a model that can be fitted"), std::string::npos);
+  EXPECT_NE(errorOf([&] { fitModels(target, options({"ward", "ward"})); }).find("twice"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace raylab::test

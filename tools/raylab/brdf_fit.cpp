@@ -1,0 +1,127 @@
+// `raylab brdf fit`: every analytic model of the library (or those named) fitted to a target, ranked
+// (engine/fit, docs/fitting.md).
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "brdf_commands.h"
+#include "brdf_params/material_params.h"
+#include "command_line/cli.h"
+#include "fit/fit.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "util/files.h"
+#include "util/progress.h"
+#include "util/timer.h"
+
+namespace raylab {
+
+namespace {
+
+constexpr const char* kCommand = "raylab brdf fit";
+
+struct FitCommandOptions {
+  std::string target;
+  std::string models;
+  std::string metric = "cosine";
+  std::uint32_t starts = 4;
+  std::uint32_t seed = 1;
+  std::uint32_t threads = 0;
+  std::string jsonPath;
+};
+
+std::vector<std::string> splitModels(const std::string& text) {
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    std::string name = text.substr(start, end - start);
+    while (!name.empty() && name.front() == ' ') name.erase(name.begin());
+    while (!name.empty() && name.back() == ' ') name.pop_back();
+    if (name.empty()) throw Error(std::string(kCommand) + ": --models has an empty entry: '" + text + "'", kExitUsage);
+    names.push_back(name);
+    start = end + 1;
+  }
+  return names;
+}
+
+int fit(const FitCommandOptions& o) {
+  if (!o.jsonPath.empty()) {
+    checkOutputPath(o.jsonPath, "--json");
+    requireExtension(kCommand, "--json", o.jsonPath, ".json");
+  }
+  FitOptions options;
+  options.starts = int(o.starts);
+  options.seed = o.seed;
+  options.threads = int(o.threads);
+  try {
+    options.metric = parseFitMetric(o.metric, std::string(kCommand) + ": --metric");
+    if (!o.models.empty()) options.models = splitModels(o.models);
+  } catch (const Error& error) {
+    throw Error(error.what(), kExitUsage);
+  }
+  const Stopwatch clock;
+  const FitTarget target = loadFitTarget(o.target);
+  std::fprintf(stderr, "%s: %s, %zu direction pairs, %s error\n", kCommand, o.target.c_str(), target.pairs.size(),
+               fitMetricName(options.metric));
+  // One line per finished start on a log, redrawn on a terminal: starts done, elapsed, ETA.
+  options.progress = [&](int done, int total, const std::string& model, double seconds) {
+    const double elapsed = clock.seconds();
+    std::fprintf(stderr, "%s: %d/%d starts, %s in %s, elapsed %s, ETA %s\n", kCommand, done, total, model.c_str(),
+                 formatSeconds(seconds).c_str(), formatSeconds(elapsed).c_str(),
+                 formatSeconds(elapsed / done * (total - done)).c_str());
+  };
+  const std::vector<FitResult> fits = fitModels(target, options);
+
+  std::printf("%-4s %-18s %-12s %-10s %-9s %s\n", "rank", "model", "error", "relative", "seconds", "parameters");
+  nlohmann::json json = nlohmann::json::array();
+  for (std::size_t i = 0; i < fits.size(); ++i) {
+    const FitResult& f = fits[i];
+    std::printf("%-4zu %-18s %-12.6g %-10.4f %-9.2f %s\n", i + 1, f.model.c_str(), f.error, f.relativeError,
+                f.seconds, fitParamList(f).c_str());
+    nlohmann::json params = nlohmann::json::object();
+    for (const auto& [name, values] : fitParams(f)) {
+      params[name] = values.size() == 1 ? nlohmann::json(values[0]) : nlohmann::json(values);
+    }
+    json.push_back({{"model", f.model}, {"params", params}, {"error", f.error}, {"relative_error", f.relativeError},
+                    {"seconds", f.seconds}, {"iterations", f.iterations}, {"metric", fitMetricName(options.metric)},
+                    {"target", o.target}});
+  }
+  if (!o.jsonPath.empty()) writeFileAtomically(o.jsonPath, json.dump(2) + "\n");
+  std::fprintf(stderr, "%s: %zu models, %u starts each, in %s%s%s\n", kCommand, fits.size(), o.starts,
+               formatSeconds(clock.seconds()).c_str(), o.jsonPath.empty() ? "" : "; wrote ", o.jsonPath.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void addBrdfFitCommand(CLI::App& brdf) {
+  auto o = std::make_shared<FitCommandOptions>();
+  CLI::App* command = addCommand(
+      brdf, "fit",
+      "fit every analytic model of the library to a measured material or another model, and rank them\n"
+      "TARGET is a MERL .binary file, a .csv of measured samples (header wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b), "
+      "or a material of the library as MODEL[:k=v,...] (for example ggx_conductor:metal=Au). Each model's "
+      "parameters are fitted within their ranges by Ceres Solver (Levenberg-Marquardt, log-scaled parameters in log "
+      "space, several starts: the defaults, then random points) minimising the weighted RMS of f cos(theta_i) over "
+      "the MERL grid's direction pairs within 80 degrees of the normal (--metric cosine, Ngan et al. 2005) or of "
+      "log(1 + f cos(theta_i)) (--metric log). Prints a ranking (model, error, error relative to the target's own "
+      "RMS, CPU seconds, parameters as --material takes them); --json writes it as a list, best first "
+      "(docs/fitting.md).",
+      [o] { return fit(*o); });
+  addPositional(command, "TARGET", o->target, "a .binary MERL file, a .csv of samples, or MODEL[:k=v,...]");
+  addText(command, "--models", o->models, "a,b,...", "fit only these models (default: " + [] {
+    std::string list;
+    for (const std::string& m : fittableModels()) list += (list.empty() ? "" : ", ") + m;
+    return list;
+  }() + ")");
+  addChoice(command, "--metric", o->metric, {"cosine", "log"}, "the error minimised and reported");
+  addCount(command, "--starts", o->starts, "starts per model (the defaults, then random points)", 1, 64);
+  addCount(command, "--seed", o->seed, "seed of the random starts: the same seed gives the same fits", 0, UINT32_MAX);
+  addCount(command, "--threads", o->threads, "starts solved at once (0: one per core)", 0, 256);
+  addText(command, "--json", o->jsonPath, "FILE.json", "also write the ranking as JSON");
+}
+
+}  // namespace raylab
