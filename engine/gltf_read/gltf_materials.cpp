@@ -199,7 +199,7 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
   return record;
 }
 
-void applyRaylabMaterial(gpu::MaterialRecord& record, const json& raylab, const std::string& where) {
+void applyRaylabMaterial(gpu::MaterialRecord& record, const json& raylab, const std::string& where, Document* document) {
   const std::string extras = where + ": extras.raylab";
   if (!raylab.is_object()) throw Error(extras + ": expected an object, found " + quote(raylab));
   if (const auto model = raylab.find("model"); model != raylab.end()) {
@@ -221,6 +221,19 @@ void applyRaylabMaterial(gpu::MaterialRecord& record, const json& raylab, const 
     const ParamInfo* param = findParam(model, key);
     if (param == nullptr) {
       setParam(record, key, glm::vec3(0.0f), extras);  // throws, listing the model's parameters
+      continue;
+    }
+    if (isFileParam(*param)) {
+      // A URI like every other: relative to the scene's folder and inside it (unless the loader allows otherwise).
+      if (!value.is_string()) throw Error(extras + "." + key + ": expected a file name, found " + quote(value));
+      if (document == nullptr) throw Error(extras + "." + key + ": a file outside a scene file has no folder to be in");
+      std::string path;
+      try {
+        path = resolveUri(value.get<std::string>(), document->baseDirectory, document->uriPolicy);
+      } catch (const Error& error) {
+        throw Error(extras + "." + key + ": " + error.what());
+      }
+      setFileParam(record, key, path, extras);
       continue;
     }
     glm::vec3 v(0.0f);
@@ -269,7 +282,7 @@ void convertMaterials(Document& document, Scene& scene) {
     }
 
     gpu::MaterialRecord record = mapMetallicRoughness(input, where);
-    if (const json* raylab = findPath(materialJson, {"extras", "raylab"})) applyRaylabMaterial(record, *raylab, where);
+    if (const json* raylab = findPath(materialJson, {"extras", "raylab"})) applyRaylabMaterial(record, *raylab, where, &document);
 
     if (pbr.baseColorTexture.index >= 0) {
       if (pbr.baseColorTexture.texCoord != 0) {

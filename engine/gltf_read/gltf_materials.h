@@ -30,8 +30,10 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
 
 // Applies an extras.raylab material object to `record`: "model" (optional) restarts from that model's
 // defaults, every other key must be a parameter of the model or "delta", RGB values written [r, g, b].
+// A file parameter ("file": "x.binary", measured) is a URI of `document`: relative to its folder and inside it.
 // Throws Error starting with `where` for unknown models or keys, wrong JSON types and out-of-range values.
-void applyRaylabMaterial(gpu::MaterialRecord& record, const nlohmann::json& raylab, const std::string& where);
+void applyRaylabMaterial(gpu::MaterialRecord& record, const nlohmann::json& raylab, const std::string& where,
+                         Document* document = nullptr);
 
 // Fills scene.materials so that scene material i is glTF material i, and scene.textures with the base-colour
 // textures they use.

@@ -17,8 +17,10 @@
 #include "brdf_eval/cpu_evaluator.h"
 #include "brdf_params/material_params.h"
 #include "device_context.h"
+#include "fit/fit.h"
 #include "reference/brdf_reference.h"
 #include "util/error.h"
+#include "util/files.h"
 
 namespace py = pybind11;
 
@@ -250,6 +252,55 @@ void bindBrdf(py::module_& parent) {
       "Importance samples wi given wo, one direction (3,) or one per row (N, 3), in the local frame (z the normal), "
       "for each row of u (N, 3) in [0, 1)^3: a dict of wi (N, 3), f (N, 3) = f(wi, wo) and pdf (N,); pdf 0 for a "
       "failed sample. N may be 0.");
+  m.def(
+      "fit",
+      [](const py::object& targetObject, const std::optional<std::vector<std::string>>& models,
+         const std::string& metric, std::uint32_t starts, std::uint32_t seed, std::uint32_t threads) {
+        if (!py::isinstance<py::str>(targetObject) && !py::hasattr(targetObject, "__fspath__")) {
+          usage("raylab.brdf.fit: target is a path (.binary, .csv) or 'MODEL[:k=v,...]'");
+        }
+        const std::string target = py::str(py::module_::import("os").attr("fspath")(targetObject)).cast<std::string>();
+        if (starts < 1 || starts > 64) usage("raylab.brdf.fit: starts must be within 1..64");
+        FitOptions options;
+        options.starts = int(starts);
+        options.seed = seed;
+        options.threads = int(threads);
+        std::vector<FitResult> fits;
+        try {
+          options.metric = parseFitMetric(metric, "raylab.brdf.fit");
+          if (models) options.models = *models;
+          py::gil_scoped_release release;
+          fits = fitModels(loadFitTarget(target), options);
+        } catch (const FileError&) {
+          throw;
+        } catch (const Error& error) {
+          usage(error.what());
+        }
+        py::list table;
+        for (const FitResult& f : fits) {
+          py::dict params;
+          for (const auto& [name, values] : fitParams(f)) {
+            params[py::str(name)] = values.size() == 1 ? py::object(py::float_(values[0])) : py::object(py::cast(values));
+          }
+          py::dict row;
+          row["model"] = f.model;
+          row["params"] = params;
+          row["error"] = f.error;
+          row["relative_error"] = f.relativeError;
+          row["seconds"] = f.seconds;
+          row["iterations"] = f.iterations;
+          row["metric"] = std::string(fitMetricName(options.metric));
+          row["target"] = target;
+          table.append(row);
+        }
+        return table;
+      },
+      py::arg("target"), py::kw_only(), py::arg("models") = py::none(), py::arg("metric") = "cosine",
+      py::arg("starts") = 4, py::arg("seed") = 1, py::arg("threads") = 0,
+      "Fits the analytic models (all, or `models`) to target: a MERL .binary file, a .csv of samples, or "
+      "'MODEL[:k=v,...]'. Returns the ranking of `raylab brdf fit --json`: a list of dicts with model, params "
+      "(name -> value, RGB as a list), error, relative_error, seconds, iterations, metric and target, best first "
+      "(docs/fitting.md). metric is 'cosine' (Ngan et al. 2005) or 'log'.");
   m.def(
       "albedo",
       [](const std::string& model, const py::object& params, const DoubleArray& theta, double phi,

@@ -161,7 +161,8 @@ py::dict materialDict(const Material& material) {
   d["model"] = std::string(model.name);
   for (const ParamInfo& param : model.params) {
     const glm::vec3 value = getParam(material.record, param.name);
-    if (param.rgb) d[py::str(std::string(param.name))] = tupleOf(value);
+    if (isFileParam(param)) d[py::str(std::string(param.name))] = fileParamPath(material.record, param);
+    else if (param.rgb) d[py::str(std::string(param.name))] = tupleOf(value);
     else d[py::str(std::string(param.name))] = value.x;
   }
   d["delta"] = material.record.delta;
@@ -206,6 +207,22 @@ void applyParams(gpu::MaterialRecord& record, const py::dict& params, const std:
   for (const auto& [key, value] : params) {
     const std::string name = key.cast<std::string>();
     if (name == "model" || isPresetKey(model, name)) continue;
+    if (const ParamInfo* param = findParam(model, name); param != nullptr && isFileParam(*param)) {
+      // A path (str or os.PathLike), relative to the current directory.
+      if (!py::isinstance<py::str>(value) && !py::hasattr(value, "__fspath__")) {
+        usage(where + ": " + name + ": expected a path (str or os.PathLike)");
+      }
+      const std::string path = py::str(py::module_::import("os").attr("fspath")(value)).cast<std::string>();
+      try {
+        py::gil_scoped_release release;  // a file takes a fraction of a second to read and check
+        setFileParam(record, name, path, where);
+      } catch (const FileError& error) {
+        throw;
+      } catch (const Error& error) {
+        usage(error.what());
+      }
+      continue;
+    }
     const glm::vec3 v = paramValue(value, where + ": " + name);
     if (!finite(v)) usage(where + ": " + name + " must be finite");
     try {
