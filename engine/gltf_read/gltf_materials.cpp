@@ -248,6 +248,7 @@ void applyRaylabMaterial(gpu::MaterialRecord& record, const json& raylab, const 
     }
     setParam(record, key, v, extras);
   }
+  checkFileParams(record, extras);
 }
 
 void convertMaterials(Document& document, Scene& scene) {

@@ -71,6 +71,11 @@ std::shared_ptr<const MeasuredFile> measuredFile(std::uint32_t id) {
   return store()[id - 1].file;
 }
 
+std::uint32_t measuredFileCount() {
+  const std::lock_guard lock(storeMutex());
+  return std::uint32_t(store().size());
+}
+
 std::vector<float> measuredDeviceBlock(const MeasuredFile& file) {
   std::vector<float> block(gpu::kMeasuredBlockFloats, 0.0f);
   for (std::size_t i = 0; i < kMerlSamples; ++i) {

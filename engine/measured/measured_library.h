@@ -31,6 +31,10 @@ std::uint32_t loadMeasured(const std::string& path);
 // The file of an id loadMeasured returned; throws Error for any other id.
 std::shared_ptr<const MeasuredFile> measuredFile(std::uint32_t id);
 
+// How many files are loaded: their ids are 1 to this (the viewer lists their folders, and a material switched to
+// `measured` takes the last one).
+std::uint32_t measuredFileCount();
+
 // The floats of one block of the device's BRDF tables (shared/brdf_tables.h, kMeasuredBlockFloats): f in RGB
 // triples (scaled, missing as 0), the sampler's tables and its cosine probability.
 std::vector<float> measuredDeviceBlock(const MeasuredFile& file);

@@ -54,7 +54,8 @@ MerlTable decodeMerl(const std::string& bytes, const std::string& where) {
     if (!std::isfinite(table.stored[i]) && nonFinite++ == 0) first = i;
   }
   if (nonFinite > 0) {
-    throw Error(where + ": " + std::to_string(nonFinite) + " samples are NaN or infinite, the first at channel " +
+    throw Error(where + ": " + std::to_string(nonFinite) + (nonFinite == 1 ? " sample is" : " samples are") +
+                " NaN or infinite, the first at channel " +
                 std::to_string(first / kMerlSamples) + " index " + std::to_string(first % kMerlSamples));
   }
   for (std::size_t i = 0; i < kMerlSamples; ++i) {

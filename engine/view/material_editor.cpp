@@ -2,7 +2,15 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
 #include "brdf_params/material_params.h"
+#include "measured/measured_library.h"
+#include "util/error.h"
 #include "view_logic/scene_edits.h"
 
 namespace raylab {
@@ -35,6 +43,57 @@ bool drawParam(gpu::MaterialRecord& record, const ParamInfo& param) {
   return changed;
 }
 
+// The MERL files a user may pick: the .binary files in the current directory and in the folders of the files
+// already loaded (a scene's own folder once it names one), at most kMaxListed, by name.
+constexpr std::size_t kMaxListed = 64;
+
+std::vector<std::string> measuredCandidates() {
+  std::set<std::filesystem::path> folders = {std::filesystem::current_path()};
+  for (std::uint32_t id = 1; id <= measuredFileCount(); ++id) {
+    folders.insert(std::filesystem::path(measuredFile(id)->path).parent_path());
+  }
+  std::set<std::string> files;
+  for (const std::filesystem::path& folder : folders) {
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+      if (files.size() >= kMaxListed) break;
+      if (entry.path().extension() == ".binary" && entry.is_regular_file(error)) {
+        files.insert(std::filesystem::absolute(entry.path()).lexically_normal().string());
+      }
+    }
+  }
+  return {files.begin(), files.end()};
+}
+
+// A file parameter: the file's name, and a list to pick another from (scanned when opened). A file that fails its
+// checks is not taken; its message stays under the list until the next pick.
+bool drawFileParam(gpu::MaterialRecord& record, const ParamInfo& param) {
+  static std::string problem;
+  const std::string current = fileParamPath(record, param);
+  const std::string shown = current.empty() ? "(pick a .binary file)" : std::filesystem::path(current).filename().string();
+  bool changed = false;
+  if (ImGui::BeginCombo(std::string(param.name).c_str(), shown.c_str())) {
+    const std::vector<std::string> candidates = measuredCandidates();
+    if (candidates.empty()) ImGui::TextDisabled("no .binary file here or beside the loaded ones");
+    for (const std::string& path : candidates) {
+      if (ImGui::Selectable(std::filesystem::path(path).filename().string().c_str(), path == current) && path != current) {
+        try {
+          setFileParam(record, param.name, path, "panel");
+          problem.clear();
+          changed = true;
+        } catch (const Error& error) {
+          problem = error.what();
+        }
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", path.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered() && !current.empty()) ImGui::SetTooltip("%s", current.c_str());
+  if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
+  return changed;
+}
+
 }  // namespace
 
 bool drawMaterialEditor(gpu::MaterialRecord& record) {
@@ -43,6 +102,29 @@ bool drawMaterialEditor(gpu::MaterialRecord& record) {
   if (ImGui::BeginCombo("model", std::string(current.name).c_str())) {
     for (const ModelInfo& model : allModels()) {
       const bool selected = model.id == record.model;
+      // A model that reads a file can be chosen once a file is loaded (then it takes the last one): the first comes
+      // from its file list below, or from --compare, a scene or Python.
+      const bool needsFile = findRole(model, "file") != nullptr && measuredFileCount() == 0;
+      if (needsFile) {
+        gpu::MaterialRecord candidate = record;
+        const std::vector<std::string> files = measuredCandidates();
+        ImGui::BeginDisabled(files.empty());
+        if (ImGui::Selectable(std::string(model.name).c_str(), selected) && !selected) {
+          try {
+            switchModel(candidate, model.id);
+            setFileParam(candidate, findRole(model, "file")->name, files.front(), "panel");
+            record = candidate;
+            changed = true;
+          } catch (const Error&) {
+            // the file list under the model shows why, once a file of it is picked
+          }
+        }
+        ImGui::EndDisabled();
+        if (files.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+          ImGui::SetTooltip("no .binary file in the current directory: make one with raylab brdf tabulate");
+        }
+        continue;
+      }
       if (ImGui::Selectable(std::string(model.name).c_str(), selected) && !selected) {
         switchModel(record, model.id);
         changed = true;
@@ -50,7 +132,9 @@ bool drawMaterialEditor(gpu::MaterialRecord& record) {
     }
     ImGui::EndCombo();
   }
-  for (const ParamInfo& param : modelInfo(record.model).params) changed |= drawParam(record, param);
+  for (const ParamInfo& param : modelInfo(record.model).params) {
+    changed |= isFileParam(param) ? drawFileParam(record, param) : drawParam(record, param);
+  }
   changed |= drawParam(record, deltaParam());
   return changed;
 }

@@ -73,6 +73,7 @@ CompareSpec parseCompareSpec(const std::string& text, const Scene& scene, const 
       applyParamList(spec.record, std::string_view(text).substr(paramsAt + 1),
                      where + " '" + materialName + "' (" + std::string(model->name) + ")");
     }
+    checkFileParams(spec.record, where + " '" + materialName + "' (" + std::string(model->name) + ")");
   } catch (const Error& error) {
     throw Error(error.what(), kExitUsage);
   }

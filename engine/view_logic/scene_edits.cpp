@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "brdf_params/material_params.h"
+#include "measured/measured_library.h"
 
 namespace raylab {
 
@@ -95,6 +96,13 @@ void switchModel(gpu::MaterialRecord& record, std::uint32_t model) {
     const float blinn = exponentOfAlpha(isotropic);
     carry(next, "exponent", glm::vec3(blinn));
     carry(next, "mirror_exponent", glm::vec3(blinn / kMirrorToHalfwayExponent));
+  }
+  // A measured material keeps its file, else takes the one most recently loaded (none yet: it has none, and the
+  // panel asks for one).
+  if (const ParamInfo* file = findRole(modelInfo(model), "file"); file != nullptr) {
+    const ParamInfo* had = findRole(modelInfo(record.model), "file");
+    if (had != nullptr && record.params[had->slot] != 0.0f) next.params[file->slot] = record.params[had->slot];
+    else if (measuredFileCount() > 0) next.params[file->slot] = float(measuredFileCount());
   }
   record = next;
 }

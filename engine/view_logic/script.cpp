@@ -76,7 +76,13 @@ void readValues(ScriptEvent& event, const std::vector<std::string>& words, std::
   }
 }
 
-ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& where) {
+// A path of the script, relative to its folder unless absolute.
+std::string scriptRelative(const std::string& text, const std::string& scriptFolder) {
+  const std::filesystem::path file(text);
+  return file.is_absolute() ? text : (std::filesystem::path(scriptFolder) / file).string();
+}
+
+ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& where, const std::string& scriptFolder) {
   if (words.size() < 3 || words[0] != "at") {
     throw Error(where + ": expected 'at <frame> <action> ...' (actions: orbit, pan, zoom, set, model, resize, "
                         "screenshot, compare, pick, save)");
@@ -102,10 +108,13 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
       throw Error(where + ": the zoom factor must be within [0.001, 1000], not " + words[3]);
     }
   } else if (action == "model") {
-    expectWords(words, 5, where, "at <frame> model <material> <model>");
+    if (words.size() != 5 && words.size() != 6) {
+      throw Error(where + ": expected 'at <frame> model <material> <model> [<file> of a measured model]'");
+    }
     event.action = ScriptAction::kModel;
     event.name = words[3];
     event.param = words[4];
+    if (words.size() == 6) event.path = scriptRelative(words[5], scriptFolder);
   } else if (action == "resize") {
     expectWords(words, 5, where, "at <frame> resize <width> <height>");
     event.action = ScriptAction::kResize;
@@ -153,7 +162,15 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
       event.action = ScriptAction::kSetMaterial;
       event.name = words[4];
       event.param = words[5];
-      readValues(event, words, 6, "a parameter value");
+      float number = 0.0f;
+      const std::string& first = words[6];
+      const bool numeric = std::from_chars(first.data(), first.data() + first.size(), number).ptr == first.data() + first.size();
+      if (words.size() == 7 && !numeric) {
+        // A file parameter's path (`set material ball file gold.binary`), relative to the script's folder.
+        event.path = scriptRelative(first, scriptFolder);
+      } else {
+        readValues(event, words, 6, "a parameter value");
+      }
     } else if (what == "light") {
       if (words.size() < 6) throw Error(where + ": expected 'at <frame> set light <name> intensity|position|direction|cone ...'");
       event.name = words[4];
@@ -242,7 +259,7 @@ std::vector<ScriptEvent> parseScript(const std::string& text, const std::string&
   for (std::uint32_t number = 1; std::getline(lines, line); ++number) {
     const std::string where = path + ":" + std::to_string(number);
     const std::vector<std::string> words = splitWords(line, where);
-    if (!words.empty()) events.push_back(parseLine(words, where));
+    if (!words.empty()) events.push_back(parseLine(words, where, std::filesystem::path(path).parent_path().string()));
   }
   std::stable_sort(events.begin(), events.end(),
                    [](const ScriptEvent& a, const ScriptEvent& b) { return a.frame < b.frame; });
@@ -267,11 +284,25 @@ SceneEffect applyToScene(const ScriptEvent& event, Scene& scene) {
         if (model == nullptr) {
           throw Error(event.where + ": unknown model '" + event.param + "' (models: " + modelNames() + ")");
         }
-        switchModel(material->record, model->id);
+        gpu::MaterialRecord switched = material->record;
+        switchModel(switched, model->id);
+        const ParamInfo* file = findRole(*model, "file");
+        if (!event.path.empty() && file == nullptr) throw Error(event.where + ": " + std::string(model->name) + " reads no file");
+        if (file != nullptr && !event.path.empty()) setFileParam(switched, file->name, event.path, event.where);
+        checkFileParams(switched, event.where + " (name its file: model " + event.name + " " + event.param + " FILE)");
+        material->record = switched;
       } else {
         const ParamInfo* param = findParam(modelInfo(material->record.model), event.param);
         // setParam's error lists the parameters the model has.
         if (param == nullptr) setParam(material->record, event.param, glm::vec3(0.0f), event.where);
+        if (isFileParam(*param) != !event.path.empty()) {
+          throw Error(event.where + ": " + event.param + (event.path.empty() ? " takes a file path" : " takes numbers"));
+        }
+        if (isFileParam(*param)) {
+          setFileParam(material->record, event.param, event.path, event.where);
+          effect.materials = true;
+          break;
+        }
         if (event.valueCount != 1 && !(param->rgb && event.valueCount == 3)) {
           throw Error(event.where + ": " + event.param + " takes " + (param->rgb ? "1 or 3 values" : "1 value"));
         }

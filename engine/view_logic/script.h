@@ -70,6 +70,7 @@ struct ScriptEvent {
   std::string param;      // material parameter, or model name
   glm::vec3 value{0.0f};  // numbers of the event; a single number for a scalar parameter is in x
   int valueCount = 0;
+  std::string path;       // kSetMaterial of a file parameter (measured's file): the file, relative to the script's folder
 };
 
 // Parses `text` (read from `path`, which errors name with the line). Events come out sorted by frame, file

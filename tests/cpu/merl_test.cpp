@@ -136,7 +136,7 @@ TEST(Merl, BadFilesAreRefusedNamingTheFile) {
       {write("longer.binary", bytes + "x"), "over raylab's limit"},
       {write("empty.binary", ""), "0 bytes"},
       {write("dimensions.binary", wrongDimensions), "dimensions 90 90 90"},
-      {write("nan.binary", withNan), "1 samples are NaN or infinite, the first at channel 1 index 7"},
+      {write("nan.binary", withNan), "1 sample is NaN or infinite, the first at channel 1 index 7"},
       {write("missing.binary", encodeMerl(allMissing)), "every sample is missing"},
       {scratch(""), "is a directory"},
       {fifo, "not a regular file"},

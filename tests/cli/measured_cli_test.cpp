@@ -1,0 +1,158 @@
+// Measured materials from the command line as users name them (issue 24): `raylab brdf tabulate` writes a MERL file,
+// `--material NAME=measured:file=...` and extras.raylab's "file" render it, `raylab brdf fit` ranks models on it;
+// every bad file (truncated, wrong dimensions, NaN, all missing, a directory, a device, a file outside the scene's
+// folder) is refused with a message naming it, a non-zero exit, and nothing written.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/run_command.h"
+
+namespace raylab::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch() {
+  const fs::path dir = fs::temp_directory_path() / ("raylab_measured_cli_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string readBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+void writeBytes(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// A scene folder with minimal.gltf whose sphere is measured with `file` (as written in the glTF).
+fs::path sceneWithFile(const fs::path& dir, const std::string& file) {
+  fs::create_directories(dir);
+  std::string text = readBytes(fs::path(RAYLAB_SOURCE_DIR) / "assets" / "scenes" / "minimal.gltf");
+  const std::string from = R"("model": "cooktorrance",)";
+  const std::size_t at = text.find(from);
+  const std::size_t end = text.find('}', at);
+  text.replace(at, end - at, R"("model": "measured", "file": ")" + file + "\"\n        ");
+  const fs::path scene = dir / "scene.gltf";
+  writeBytes(scene, text);
+  return scene;
+}
+
+class MeasuredCliTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    good_ = scratch() / "good.binary";
+    const CommandResult made = runRaylab({"brdf", "tabulate", "cooktorrance:rho_d=0.3,rho_s=0.7,m=0.25",
+                                          "--out", good_.string()});
+    ASSERT_EQ(made.exitCode, 0) << made.output;
+  }
+  static fs::path good_;
+};
+fs::path MeasuredCliTest::good_;
+
+TEST_F(MeasuredCliTest, AMeasuredMaterialRendersFromTheCommandLineAndFromGltf) {
+  const fs::path out = scratch() / "render";
+  fs::create_directories(out);
+  const CommandResult cli = runRaylab({"render", "--material", "phong=measured:file=" + good_.string(), "--out",
+                                       (out / "cli.exr").string(), "--spp", "2", "--width", "32", "--height", "24"});
+  EXPECT_EQ(cli.exitCode, 0) << cli.output;
+  EXPECT_TRUE(fs::exists(out / "cli.exr"));
+  const fs::path folder = scratch() / "scene_inside";
+  fs::create_directories(folder);
+  fs::copy_file(good_, folder / "good.binary", fs::copy_options::overwrite_existing);
+  const CommandResult gltf = runRaylab({"render", sceneWithFile(folder, "good.binary").string(), "--out",
+                                        (out / "gltf.exr").string(), "--spp", "2", "--width", "32", "--height", "24"});
+  EXPECT_EQ(gltf.exitCode, 0) << gltf.output;
+  EXPECT_TRUE(fs::exists(out / "gltf.exr"));
+  const CommandResult info = runRaylab({"brdf", "albedo", "--model", "measured", "--params", "file=" + good_.string(),
+                                        "--angles", "0,60", "--backend", "cpu"});
+  EXPECT_EQ(info.exitCode, 0) << info.output;
+}
+
+TEST_F(MeasuredCliTest, BadFilesAreRefusedNamingThemAndNothingIsWritten) {
+  const fs::path dir = scratch() / "bad";
+  fs::create_directories(dir);
+  const std::string bytes = readBytes(good_);
+  writeBytes(dir / "truncated.binary", bytes.substr(0, bytes.size() - 8));
+  std::string dimensions = bytes;
+  const std::int32_t ninety = 90;
+  std::memcpy(dimensions.data() + 8, &ninety, 4);  // 90 90 90
+  writeBytes(dir / "dimensions.binary", dimensions);
+  std::string nan = bytes;
+  const double notANumber = std::nan("");
+  std::memcpy(nan.data() + 12 + 8 * 1000, &notANumber, 8);
+  writeBytes(dir / "nan.binary", nan);
+  std::string missing = bytes;
+  const double minusOne = -1.0;
+  for (std::size_t at = 12; at + 8 <= missing.size(); at += 8) std::memcpy(missing.data() + at, &minusOne, 8);
+  writeBytes(dir / "missing.binary", missing);
+  fs::create_directories(dir / "folder.binary");
+  struct Case {
+    std::string file;
+    std::string mentions;
+  };
+  const Case cases[] = {
+      {(dir / "truncated.binary").string(), "truncated"},
+      {(dir / "dimensions.binary").string(), "dimensions 90 90 90"},
+      {(dir / "nan.binary").string(), "NaN or infinite"},
+      {(dir / "missing.binary").string(), "every sample is missing"},
+      {(dir / "folder.binary").string(), "is a directory"},
+      {"/dev/zero", "not a regular file"},
+      {(dir / "absent.binary").string(), "no such file"},
+  };
+  const fs::path out = dir / "image.exr", json = dir / "fit.json";
+  for (const Case& c : cases) {
+    const CommandResult render = runRaylab({"render", "--material", "phong=measured:file=" + c.file, "--out",
+                                            out.string(), "--spp", "1", "--width", "8", "--height", "8"});
+    EXPECT_NE(render.exitCode, 0) << c.file;
+    EXPECT_NE(render.exitCode, -1) << c.file << ": crashed";
+    EXPECT_NE(render.output.find(c.file), std::string::npos) << render.output;
+    EXPECT_NE(render.output.find(c.mentions), std::string::npos) << render.output;
+    EXPECT_FALSE(fs::exists(out)) << c.file;
+    const CommandResult fit = runRaylab({"brdf", "fit", c.file, "--json", json.string()});
+    EXPECT_NE(fit.exitCode, 0) << c.file;
+    EXPECT_NE(fit.exitCode, -1) << c.file << ": crashed";
+    EXPECT_FALSE(fs::exists(json)) << c.file;
+  }
+  // A file outside the scene's folder, named by a glTF (like every URI).
+  fs::copy_file(good_, dir / "outside.binary", fs::copy_options::overwrite_existing);
+  const CommandResult outside = runRaylab({"render", sceneWithFile(dir / "scene", "../outside.binary").string(),
+                                           "--out", out.string(), "--spp", "1", "--width", "8", "--height", "8"});
+  EXPECT_NE(outside.exitCode, 0);
+  EXPECT_NE(outside.output.find("outside the scene's directory"), std::string::npos) << outside.output;
+  EXPECT_FALSE(fs::exists(out));
+  // A measured material without its file, and a file parameter given a number.
+  for (const std::string& material : {std::string("phong=measured"), std::string("phong=measured:file=3")}) {
+    const CommandResult none = runRaylab({"render", "--material", material, "--out", out.string(), "--spp", "1",
+                                          "--width", "8", "--height", "8"});
+    EXPECT_NE(none.exitCode, 0) << material;
+    EXPECT_FALSE(fs::exists(out)) << material;
+  }
+}
+
+TEST_F(MeasuredCliTest, FitRanksTheTabulatedModelFirstAndWritesJson) {
+  const fs::path json = scratch() / "fit.json";
+  const CommandResult fit =
+      runRaylab({"brdf", "fit", good_.string(), "--models", "ward,cooktorrance", "--starts", "1", "--json", json.string()});
+  ASSERT_EQ(fit.exitCode, 0) << fit.output;
+  const std::string text = readBytes(json);
+  EXPECT_LT(text.find("\"cooktorrance\""), text.find("\"ward\"")) << text;
+  EXPECT_NE(text.find("\"params\""), std::string::npos);
+  EXPECT_NE(fit.output.find("1    cooktorrance"), std::string::npos) << fit.output;
+  EXPECT_NE(fit.output.find("starts"), std::string::npos) << "a progress line";
+  const CommandResult bad = runRaylab({"brdf", "fit", good_.string(), "--models", "glass"});
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.output.find("is not a model that can be fitted"), std::string::npos) << bad.output;
+}
+
+}  // namespace
+}  // namespace raylab::test
