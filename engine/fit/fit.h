@@ -38,7 +38,8 @@ struct FitResult {
   int iterations = 0;          // of the best start
 };
 
-// The models that can be fitted: every one with a density that is not read from a file (not delta, not measured).
+// The models fitted by default: every model of the library with a density that is not read from a file (not delta,
+// not measured); a test-tree model (tests/models) is fitted only when named.
 std::vector<std::string> fittableModels();
 
 // Fits and ranks: best (least error) first. Throws Error for an unknown or unfittable model name.

@@ -18,6 +18,8 @@
 #include "brdf_params/material_params.h"
 #include "device_context.h"
 #include "fit/fit.h"
+#include "measured/merl.h"
+#include "util/atomic_file.h"
 #include "reference/brdf_reference.h"
 #include "util/error.h"
 #include "util/files.h"
@@ -252,6 +254,30 @@ void bindBrdf(py::module_& parent) {
       "Importance samples wi given wo, one direction (3,) or one per row (N, 3), in the local frame (z the normal), "
       "for each row of u (N, 3) in [0, 1)^3: a dict of wi (N, 3), f (N, 3) = f(wi, wo) and pdf (N,); pdf 0 for a "
       "failed sample. N may be 0.");
+  m.def(
+      "tabulate",
+      [](const std::string& model, const py::object& params, const py::object& pathObject) {
+        if (!py::isinstance<py::str>(pathObject) && !py::hasattr(pathObject, "__fspath__")) {
+          usage("raylab.brdf.tabulate: path is a str or os.PathLike");
+        }
+        const std::string path = py::str(py::module_::import("os").attr("fspath")(pathObject)).cast<std::string>();
+        const gpu::MaterialRecord record = material(model, params);
+        if (isDeltaOnly(record.model)) usage("raylab.brdf.tabulate: " + model + " is a delta BSDF and has no f");
+        try {
+          checkFileParams(record, "raylab.brdf.tabulate: " + model);
+          checkOutputPath(path, "path");
+        } catch (const FileError&) {
+          throw;
+        } catch (const Error& error) {
+          usage(error.what());
+        }
+        py::gil_scoped_release release;
+        const reference::Material m = reference::fromRecord(record);
+        writeMerl(path, tabulateMerl([&](const glm::dvec3& wi, const glm::dvec3& wo) { return reference::eval(m, wi, wo); }));
+      },
+      py::arg("model"), py::arg("params"), py::arg("path"),
+      "Writes a MERL .binary file of the material: f at the centre of each of the database's 90 x 90 x 180 bins, as "
+      "`raylab brdf tabulate` does (docs/fitting.md).");
   m.def(
       "fit",
       [](const py::object& targetObject, const std::optional<std::vector<std::string>>& models,

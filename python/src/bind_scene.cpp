@@ -326,6 +326,11 @@ void bindScene(py::module_& m) {
               switchModel(record, info->id);
             }
             applyParams(record, params, "material '" + name + "'");
+            try {
+              checkFileParams(record, "material '" + name + "'");
+            } catch (const Error& error) {
+              usage(error.what());
+            }
             material.record = record;  // only when every value was valid
           },
           py::arg("name"), py::arg("model") = "",
