@@ -14,7 +14,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from raylab_tools import REPO, ToolError, add_raylab_option, check_raylab, registered_models, run_main
+from raylab_tools import REPO, ToolError, add_raylab_option, check_raylab, reads_file, registered_models, run_main
 
 MAX_BYTES = 150 * 1024  # the repository's limit per image
 
@@ -63,7 +63,9 @@ def parse_args() -> argparse.Namespace:
 def figures(raylab: Path) -> list[Figure]:
     chosen = {f.model for f in CHOSEN}
     extra = [Figure(m["name"], m["name"], "", ANISOTROPIC if any(p["role"].endswith("_x") for p in m["params"]) else ())
-             for m in registered_models(raylab) if m["name"] not in chosen and not m["glsl"].startswith("tests/")]
+             for m in registered_models(raylab)
+             # measured has no parameters to show: its figures are those of docs/fitting.md
+             if m["name"] not in chosen and not m["glsl"].startswith("tests/") and not reads_file(m)]
     return CHOSEN + extra
 
 

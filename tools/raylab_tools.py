@@ -62,6 +62,11 @@ def registered_models(raylab: Path) -> list[dict]:
     return json.loads(run_raylab(raylab, ["brdf", "models", "--json"], "listing the BRDF models").stdout)
 
 
+def reads_file(model: dict) -> bool:
+    """A model whose data comes from a file (measured): figures give it one, or leave it out."""
+    return any(param["role"] == "file" for param in model["params"])
+
+
 def generic_material(model: dict) -> dict:
     """An extras.raylab material of a registered model for a figure without a hand-picked look for it: its
     defaults, with a warm diffuse colour and grey other colours."""

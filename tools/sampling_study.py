@@ -28,7 +28,7 @@ import sys
 import time
 from pathlib import Path
 
-from raylab_tools import (REPO, ToolError, add_raylab_option, check_raylab, generic_material, registered_models,
+from raylab_tools import (REPO, ToolError, add_raylab_option, check_raylab, generic_material, reads_file, registered_models,
                           run_main, run_raylab, venv_hint)
 
 sys.path.insert(0, str(REPO / "tools" / "scenes"))
@@ -47,6 +47,7 @@ ENVIRONMENT = REPO / "assets" / "scenes" / "environments" / "sunrise.exr"
 EPSILON = 0.01
 TARGET = 1e-3
 STRATEGIES = [("mis", "o-"), ("bsdf", "s--"), ("light", "^-.")]
+MEASURED_FILE = "measured_cooktorrance.binary"
 MODELS_IN_USE: dict[str, dict] = {}  # name -> extras.raylab material, from the registry (parse_args)
 # Hand-picked looks; every other registered model (`raylab brdf models`) gets raylab_tools.generic_material.
 LOOKS = {
@@ -111,6 +112,10 @@ def parse_args() -> argparse.Namespace:
         args.models, args.width, args.height, args.max_spp, args.reference_spp = "lambert,cooktorrance", 48, 27, 8, 128
     registry = {m["name"]: m for m in registered_models(check_raylab(args.raylab)) if not m["delta_only"]}
     MODELS_IN_USE.update({name: LOOKS.get(name) or generic_material(model) for name, model in registry.items()})
+    # A model reading a file (measured) renders the Cook-Torrance look tabulated as a MERL file beside the scene.
+    for name, model in registry.items():
+        if reads_file(model):
+            MODELS_IN_USE[name] = {"model": name, "file": MEASURED_FILE}
     args.models = args.models or ",".join(registry)
     unknown = [m for m in args.models.split(",") if m not in registry]
     if unknown:
@@ -129,6 +134,12 @@ def main() -> None:
     (args.out / "environments").mkdir(parents=True, exist_ok=True)
     shutil.copy2(ENVIRONMENT, args.out / "environments" / ENVIRONMENT.name)
     began, load_before = time.monotonic(), os.getloadavg()
+    if any("file" in MODELS_IN_USE[m] for m in args.models.split(",")):
+        look = LOOKS["cooktorrance"]
+        params = ",".join(f"{k}={'/'.join(str(c) for c in v) if isinstance(v, list) else v}"
+                          for k, v in look.items() if k != "model")
+        run_raylab(raylab, ["brdf", "tabulate", f"cooktorrance:{params}", "--out", str(args.out / MEASURED_FILE)],
+                   "raylab brdf tabulate")
     spps = [2 ** k for k in range(int(math.log2(args.max_spp)) + 1)]
     rows = []
     for model in args.models.split(","):
