@@ -56,11 +56,7 @@ BatchKernel createBatchKernel(const Device& device, const BatchLayout& layout, s
 std::vector<gpu::MaterialRecord> bindMaterials(const Device& device, BatchKernel& batch,
                                                std::span<const gpu::MaterialRecord> records) {
   DeviceMaterials materials = deviceMaterials(records);
-  if (materials.measuredFiles != batch.measuredFiles) {
-    Buffer tables = createBrdfTables(device, materials.measuredFiles);
-    destroyBuffer(device, batch.tables);
-    batch.tables = tables;
-    batch.measuredFiles = materials.measuredFiles;
+  if (updateBrdfTables(device, batch.tables, batch.measuredFiles, materials.measuredFiles)) {
     writeStorageBuffer(device, batch.kernel.descriptors.set, gpu::kBindingBrdfTables, batch.tables.handle);
   }
   return std::move(materials.records);

@@ -60,4 +60,16 @@ Buffer createBrdfTables(const Device& device, std::span<const std::uint32_t> mea
   return createBufferWithData<float>(device, values, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "brdf tables");
 }
 
+bool updateBrdfTables(const Device& device, Buffer& tables, std::vector<std::uint32_t>& current,
+                      std::span<const std::uint32_t> wanted) {
+  if (tables.handle != VK_NULL_HANDLE && std::equal(current.begin(), current.end(), wanted.begin(), wanted.end())) {
+    return false;
+  }
+  Buffer replacement = createBrdfTables(device, wanted);
+  destroyBuffer(device, tables);
+  tables = replacement;
+  current.assign(wanted.begin(), wanted.end());
+  return true;
+}
+
 }  // namespace raylab

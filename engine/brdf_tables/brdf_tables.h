@@ -28,4 +28,10 @@ DeviceMaterials deviceMaterials(std::span<const gpu::MaterialRecord> records, st
 // destroyBuffer. Throws Error when the blocks exceed the device's maxStorageBufferRange.
 Buffer createBrdfTables(const Device& device, std::span<const std::uint32_t> measuredFiles = {});
 
+// Rebuilds `tables` when `wanted` differs from `current` (the files it holds), the new buffer made before the old
+// goes so that a refused set (too large) leaves it as it was. Returns true when it replaced the buffer: every
+// descriptor set holding the old one must be written again.
+bool updateBrdfTables(const Device& device, Buffer& tables, std::vector<std::uint32_t>& current,
+                      std::span<const std::uint32_t> wanted);
+
 }  // namespace raylab

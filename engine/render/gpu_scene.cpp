@@ -86,18 +86,6 @@ void packTextures(const Scene& scene, std::vector<gpu::TextureRecord>& records, 
   }
 }
 
-// The records as the device sees them (each measured file's block number in its `file` parameter) and the
-// measured files they use.
-DeviceMaterials materialRecords(std::span<const Material> materials) {
-  std::vector<gpu::MaterialRecord> records;
-  std::vector<std::string> names;
-  for (const Material& material : materials) {
-    records.push_back(material.record);
-    names.push_back(material.name);
-  }
-  return deviceMaterials(records, names);
-}
-
 std::string mebibytes(std::uint64_t bytes) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
@@ -275,7 +263,7 @@ void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) 
   gpuScene.accelerationBuildSeconds = clock.seconds();
 
   gpuScene.instances = createBufferWithData<gpu::InstanceRecord>(device, instanceRecords, kStorage, "instances");
-  const DeviceMaterials materials = materialRecords(scene.materials);
+  const DeviceMaterials materials = deviceMaterialsOf(scene.materials);
   gpuScene.materials = createBufferWithData<gpu::MaterialRecord>(device, materials.records, kStorage, "materials");
   gpuScene.materialCount = static_cast<std::uint32_t>(materials.records.size());
   gpuScene.measuredFiles = materials.measuredFiles;
@@ -299,6 +287,16 @@ void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) 
 
 }  // namespace
 
+DeviceMaterials deviceMaterialsOf(std::span<const Material> materials) {
+  std::vector<gpu::MaterialRecord> records;
+  std::vector<std::string> names;
+  for (const Material& material : materials) {
+    records.push_back(material.record);
+    names.push_back(material.name);
+  }
+  return deviceMaterials(records, names);
+}
+
 void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
   destroyAccelerationStructure(device, gpuScene.tlas);
   for (AccelerationStructure& blas : gpuScene.blases) destroyAccelerationStructure(device, blas);
@@ -313,16 +311,8 @@ void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
 
 bool updateMaterials(const Device& device, GpuScene& gpuScene, std::span<const Material> materials) {
   if (materials.size() != gpuScene.materialCount) throw Error("updateMaterials: the material count changed");
-  const DeviceMaterials records = materialRecords(materials);
-  bool replaced = false;
-  if (records.measuredFiles != gpuScene.measuredFiles) {
-    // Built before the old one goes, so that a refused file set (too large) leaves the scene as it was.
-    Buffer tables = createBrdfTables(device, records.measuredFiles);
-    destroyBuffer(device, gpuScene.brdfTables);
-    gpuScene.brdfTables = tables;
-    gpuScene.measuredFiles = records.measuredFiles;
-    replaced = true;
-  }
+  const DeviceMaterials records = deviceMaterialsOf(materials);
+  const bool replaced = updateBrdfTables(device, gpuScene.brdfTables, gpuScene.measuredFiles, records.measuredFiles);
   uploadBuffer<gpu::MaterialRecord>(device, gpuScene.materials, records.records);
   return replaced;
 }

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "brdf_tables/brdf_tables.h"
 #include "render/light_records.h"
 #include "scene/scene.h"
 #include "vk/accel.h"
@@ -45,6 +46,8 @@ struct GpuScene {
 };
 
 GpuScene uploadScene(const Device& device, const Scene& scene);
+// The materials' records as the device sees them, and the measured files they use (brdf_tables/brdf_tables.h).
+DeviceMaterials deviceMaterialsOf(std::span<const Material> materials);
 void destroyGpuScene(const Device& device, GpuScene& gpuScene);
 
 // Live edits (the viewer): same counts as uploaded, new values. updateMaterials returns true when the materials

@@ -73,6 +73,11 @@ SweepSpec validatedSpec(const SweepOptions& o) {
     usage("--param: '" + o.param + "' is not a parameter of " + o.model + " (it has " + paramNames(*model) + ")");
   }
   if (o.log && o.linear) usage("--log and --linear exclude each other");
+  // A sweep's scene is a glTF of numbers (gltf_write); a model reading a file is rendered from a scene of yours.
+  if (findRole(*model, "file") != nullptr) {
+    usage("--model " + o.model + " reads a file: sweeps take models of numbers only (render a scene of yours with "
+          "--material NAME=" + o.model + ":file=PATH, docs/fitting.md)");
+  }
 
   SweepSpec spec;
   spec.model = o.model;

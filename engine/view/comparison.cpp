@@ -14,25 +14,12 @@ KernelFeatures comparedKernel(const Scene& scene, const CompareSpec& spec, std::
   return kernel;
 }
 
-DeviceMaterials recordsOf(const std::vector<Material>& materials) {
-  std::vector<gpu::MaterialRecord> records;
-  std::vector<std::string> names;
-  for (const Material& material : materials) {
-    records.push_back(material.record);
-    names.push_back(material.name);
-  }
-  return deviceMaterials(records, names);
-}
-
 // The right side's own BRDF tables: its material may use a measured file the scene does not.
 void bindTables(const Device& device, const DeviceMaterials& records, Comparison& comparison) {
-  if (comparison.brdfTables.handle != VK_NULL_HANDLE && records.measuredFiles == comparison.measuredFiles) return;
-  Buffer tables = createBrdfTables(device, records.measuredFiles);
-  destroyBuffer(device, comparison.brdfTables);
-  comparison.brdfTables = tables;
-  comparison.measuredFiles = records.measuredFiles;
-  writeStorageBuffer(device, comparison.renderer.trace.descriptors.set, gpu::kBindingBrdfTables,
-                     comparison.brdfTables.handle);
+  if (updateBrdfTables(device, comparison.brdfTables, comparison.measuredFiles, records.measuredFiles)) {
+    writeStorageBuffer(device, comparison.renderer.trace.descriptors.set, gpu::kBindingBrdfTables,
+                       comparison.brdfTables.handle);
+  }
 }
 
 }  // namespace
@@ -53,7 +40,7 @@ void startComparison(const Device& device, const GpuScene& gpuScene, const Scene
                      std::uint32_t integrator, const CompareSpec& spec, Comparison& comparison) {
   stopComparison(device, comparison);
   settings.kernel = comparedKernel(scene, spec, integrator);
-  const DeviceMaterials records = recordsOf(comparedMaterials(scene, spec));
+  const DeviceMaterials records = deviceMaterialsOf(comparedMaterials(scene, spec));
   comparison.materials = createBufferWithData<gpu::MaterialRecord>(device, records.records,
                                                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "compared materials");
   comparison.renderer = createRenderer(device, gpuScene, withMaterial(scene, spec), settings);
@@ -74,7 +61,7 @@ void stopComparison(const Device& device, Comparison& comparison) {
 
 void updateComparison(const Device& device, const Scene& scene, std::uint32_t integrator, Comparison& comparison) {
   if (!comparison.active) return;
-  const DeviceMaterials records = recordsOf(comparedMaterials(scene, comparison.spec));
+  const DeviceMaterials records = deviceMaterialsOf(comparedMaterials(scene, comparison.spec));
   uploadBuffer<gpu::MaterialRecord>(device, comparison.materials, records.records);
   bindTables(device, records, comparison);
   const KernelFeatures wanted = comparedKernel(scene, comparison.spec, integrator);

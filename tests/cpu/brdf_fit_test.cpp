@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -89,13 +90,14 @@ TEST(BrdfFit, RecoversCookTorranceFromAMerlFileAndRanksItFirst) {
 }
 
 // 5% multiplicative Gaussian noise on every stored sample (a measurement's scale): the roughness comes back within
-// 2% and the generating model still ranks first.
-TEST(BrdfFit, WithFivePercentNoiseTheRoughnessIsWithinTwoPercent) {
+// 0.5% (0.02% measured: 12,514 pairs average the noise away) and the generating model still ranks first.
+TEST(BrdfFit, WithFivePercentNoiseTheRoughnessIsWithinHalfAPercent) {
   const std::string path =
-      merlFileOf(material("ggx_conductor", "alpha_x=0.3,alpha_y=0.3,metal=Cu"), "noisy.binary", 0.05);
-  const std::vector<FitResult> fits = fitModels(merlFitTarget(path), options({"ggx_conductor", "ward"}));
-  EXPECT_EQ(fits[0].model, "ggx_conductor");
-  EXPECT_NEAR(param(fits[0], "alpha_x"), 0.3, 0.3 * 0.02);
+      merlFileOf(material("cooktorrance", "rho_d=0.1,rho_s=0.9,m=0.25,eta=1.5"), "noisy.binary", 0.05);
+  const std::vector<FitResult> fits = fitModels(merlFitTarget(path), options({"cooktorrance", "ward"}));
+  EXPECT_EQ(fits[0].model, "cooktorrance");
+  EXPECT_NEAR(param(fits[0], "m"), 0.25, 0.25 * 0.005);
+  std::printf("5%% noise: m = %.5f (0.25), relative error %.4f\n", param(fits[0], "m"), fits[0].relativeError);
 }
 
 TEST(BrdfFit, AMaterialTargetIsFittedAnisotropically) {
