@@ -61,7 +61,13 @@ TEST(GltfMaterial, ExtrasRaylabChoosesTheModelAndItsParameters) {
 
 TEST(GltfMaterial, EveryModelOfTheTableCanBeChosen) {
   for (const ModelInfo& model : allModels()) {
-    const Scene scene = loadMaterial({{"extras", {{"raylab", {{"model", std::string(model.name)}}}}}});
+    const json raylab = {{"extras", {{"raylab", {{"model", std::string(model.name)}}}}}};
+    if (findRole(model, "file") != nullptr) {
+      // A model reading a file needs it named (measured_cli_test renders one from a scene's folder).
+      EXPECT_NE(materialError(raylab).find("measured needs its file"), std::string::npos) << model.name;
+      continue;
+    }
+    const Scene scene = loadMaterial(raylab);
     EXPECT_EQ(scene.materials[0].record.model, model.id) << model.name;
   }
 }
