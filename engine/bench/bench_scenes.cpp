@@ -1,5 +1,9 @@
 #include "bench/bench_scenes.h"
 
+#include <algorithm>
+#include <numeric>
+#include <random>
+
 #include "scene/shapes.h"
 
 namespace raylab {
@@ -63,6 +67,21 @@ Scene makeBenchScene(BenchScene kind) {
   scene.camera.target = {0.0f, 0.0f, 0.0f};
   scene.camera.yfov = glm::radians(45.0f);
   return scene;
+}
+
+void shuffleTriangles(Scene& scene, std::uint64_t seed) {
+  std::mt19937_64 random(seed);
+  for (Mesh& mesh : scene.meshes) {
+    const std::size_t triangles = mesh.indices.size() / 3;
+    std::vector<std::uint32_t> order(triangles);
+    std::iota(order.begin(), order.end(), 0u);
+    std::shuffle(order.begin(), order.end(), random);
+    std::vector<std::uint32_t> indices(mesh.indices.size());
+    for (std::size_t k = 0; k < triangles; ++k) {
+      for (int c = 0; c < 3; ++c) indices[3 * k + c] = mesh.indices[3 * order[k] + c];
+    }
+    mesh.indices = std::move(indices);
+  }
 }
 
 }  // namespace raylab

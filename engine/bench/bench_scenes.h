@@ -20,4 +20,7 @@ struct BenchSceneInfo {
 std::span<const BenchSceneInfo> allBenchScenes();
 Scene makeBenchScene(BenchScene kind);
 
+// Every mesh's triangles in a random order (seeded): a file not in spatial order, as exporters and optimisers write.
+void shuffleTriangles(Scene& scene, std::uint64_t seed);
+
 }  // namespace raylab

@@ -1,10 +1,12 @@
 #include "render/gpu_scene.h"
 
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "brdf_tables/brdf_tables.h"
 #include "scene/environment_tables.h"
+#include "scene/spatial_order.h"
 #include "shared/bindings.h"
 #include "util/error.h"
 #include "util/timer.h"
@@ -140,10 +142,10 @@ void checkDeviceLimits(const Device& device, const Scene& scene) {
 }  // namespace
 
 namespace {
-void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene);
+void fillGpuScene(const Device& device, const Scene& scene, bool spatialOrder, GpuScene& gpuScene);
 }  // namespace
 
-GpuScene uploadScene(const Device& device, const Scene& scene) {
+GpuScene uploadScene(const Device& device, const Scene& scene, bool spatialOrder) {
   checkDeviceLimits(device, scene);
   for (const MeshInstance& instance : scene.instances) {
     if (instance.mesh >= scene.meshes.size()) throw Error("an instance refers to a mesh that does not exist");
@@ -163,7 +165,7 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
   // The GpuScene owns what is created into it: a failure at any step releases everything made before it.
   GpuScene gpuScene;
   try {
-    fillGpuScene(device, scene, gpuScene);
+    fillGpuScene(device, scene, spatialOrder, gpuScene);
   } catch (...) {
     destroyGpuScene(device, gpuScene);
     throw;
@@ -173,8 +175,36 @@ GpuScene uploadScene(const Device& device, const Scene& scene) {
 
 namespace {
 
-void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) {
+// The ids the probe reports, as they would be without the spatial order: an instance record's index in the scene's
+// order of instances (those with triangles, then the spheres' record), a primitive's index in its mesh or among
+// the spheres.
+void recordSceneIds(const Scene& original, const OrderedGeometry& geometry, GpuScene& gpuScene) {
+  std::vector<std::uint32_t> recordOfInstance(original.instances.size(), UINT32_MAX);
+  std::uint32_t records = 0;
+  for (std::size_t i = 0; i < original.instances.size(); ++i) {
+    if (!original.meshes[original.instances[i].mesh].indices.empty()) recordOfInstance[i] = records++;
+  }
+  std::vector<std::shared_ptr<const std::vector<std::uint32_t>>> meshOrders;
+  for (const std::vector<std::uint32_t>& order : geometry.triangles) {
+    meshOrders.push_back(std::make_shared<const std::vector<std::uint32_t>>(order));
+  }
+  for (std::uint32_t i : geometry.instances) {
+    if (recordOfInstance[i] == UINT32_MAX) continue;
+    gpuScene.sceneRecord.push_back(recordOfInstance[i]);
+    gpuScene.scenePrimitive.push_back(meshOrders[original.instances[i].mesh]);
+  }
+  if (!original.spheres.empty()) {
+    gpuScene.sceneRecord.push_back(records);
+    gpuScene.scenePrimitive.push_back(std::make_shared<const std::vector<std::uint32_t>>(geometry.spheres));
+  }
+}
+
+void fillGpuScene(const Device& device, const Scene& original, bool spatialOrder, GpuScene& gpuScene) {
   const Stopwatch clock;
+  // Geometry, light records and primitive ids come from the primitives in spatial order (lavapipe's builder splits
+  // at the midpoint of the submitted order); the images from the scene itself.
+  const OrderedGeometry geometry = spatiallyOrderedGeometry(original, spatialOrder);
+  const Scene& scene = geometry.scene;
   const PackedMeshes packed = packMeshes(scene);
   gpuScene.positions = createBufferWithData<glm::vec3>(device, packed.positions, kStorage | kAsInputUsage,
                                                        "positions");
@@ -224,7 +254,7 @@ void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) 
 
   std::vector<gpu::InstanceRecord> instanceRecords;
   std::vector<TlasInstance> tlasInstances;
-  const EnvironmentTables environmentTables = buildEnvironmentTables(scene.environment);
+  const EnvironmentTables environmentTables = buildEnvironmentTables(original.environment);
   gpuScene.sceneLights = sceneLights(scene, environmentTables);
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     const MeshInstance& instance = scene.instances[i];
@@ -259,6 +289,7 @@ void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) 
     instanceRecords.push_back(record);
   }
   for (const gpu::InstanceRecord& record : instanceRecords) gpuScene.instanceGeometry.push_back(record.geometryKind);
+  recordSceneIds(original, geometry, gpuScene);
   gpuScene.tlas = buildTlas(device, gpuScene.blases, tlasInstances);
   gpuScene.accelerationBuildSeconds = clock.seconds();
 
@@ -277,10 +308,10 @@ void fillGpuScene(const Device& device, const Scene& scene, GpuScene& gpuScene) 
 
   std::vector<gpu::TextureRecord> textureRecords;
   std::vector<std::uint32_t> texels;
-  packTextures(scene, textureRecords, texels);
+  packTextures(original, textureRecords, texels);
   gpuScene.textures = createBufferWithData<gpu::TextureRecord>(device, textureRecords, kStorage, "textures");
   gpuScene.texels = createBufferWithData<std::uint32_t>(device, texels, kStorage, "texels");
-  const std::vector<float> environment = packEnvironment(scene.environment, environmentTables, lights.environmentLight);
+  const std::vector<float> environment = packEnvironment(original.environment, environmentTables, lights.environmentLight);
   gpuScene.environment = createBufferWithData<float>(device, environment, kStorage, "environment");
   gpuScene.brdfTables = createBrdfTables(device, gpuScene.measuredFiles);
 }

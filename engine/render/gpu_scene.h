@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -36,6 +37,10 @@ struct GpuScene {
   // gpu::kGeometry... of each TLAS instance, in instance order: instance i's custom index and SBT record
   // offset are both i, and a ray-tracing pipeline's hit record i must be of this geometry's hit group.
   std::vector<std::uint32_t> instanceGeometry;
+  // The upload orders primitives and instances spatially (scene/spatial_order.h); per instance record, the id it
+  // has in the scene's own order, and the scene's index of each of its primitives: what the ray probe reports.
+  std::vector<std::uint32_t> sceneRecord;
+  std::vector<std::shared_ptr<const std::vector<std::uint32_t>>> scenePrimitive;
   SceneLights sceneLights;  // the host's copy of `lights`, which live edits of the punctual lights rewrite
   std::uint32_t lightCount = 0;          // LightRecords
   std::uint32_t punctualLightCount = 0;  // the scene's punctual lights, the first LightRecords
@@ -45,7 +50,9 @@ struct GpuScene {
   double accelerationBuildSeconds = 0.0;  // BLAS + TLAS builds, uploads of their inputs included
 };
 
-GpuScene uploadScene(const Device& device, const Scene& scene);
+// `spatialOrder` false submits the primitives in the scene's own order (only `raylab bench rays --submitted-order`
+// does, to measure what the order is worth).
+GpuScene uploadScene(const Device& device, const Scene& scene, bool spatialOrder = true);
 // The materials' records as the device sees them, and the measured files they use (brdf_tables/brdf_tables.h).
 DeviceMaterials deviceMaterialsOf(std::span<const Material> materials);
 void destroyGpuScene(const Device& device, GpuScene& gpuScene);

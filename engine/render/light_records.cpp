@@ -125,7 +125,8 @@ SceneLights sceneLights(const Scene& scene, const EnvironmentTables& environment
     lights.sphereFirstLight = static_cast<std::uint32_t>(lights.records.size());
     addSphereLights(scene, lights);
   }
-  if (scene.environment.hasImage() && environmentTables.fMean > 0.0f) {
+  // The tables say whether there is an image to sample (the scene may be the upload's geometry, without pixels).
+  if (environmentTables.fMean > 0.0f) {
     lights.environmentLight = static_cast<std::uint32_t>(lights.records.size());
     gpu::LightRecord record{};
     record.kind = gpu::kLightEnvironment;

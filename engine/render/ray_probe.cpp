@@ -49,6 +49,8 @@ RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uin
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::kDevice,
                             "probe hits");
   writeSceneDescriptors(device, probe.kernel.descriptors.set, gpuScene);
+  probe.sceneRecord = gpuScene.sceneRecord;
+  probe.scenePrimitive = gpuScene.scenePrimitive;
   writeStorageBuffer(device, probe.kernel.descriptors.set, gpu::kBindingProbeRays, probe.rays.handle);
   writeStorageBuffer(device, probe.kernel.descriptors.set, gpu::kBindingProbeHits, probe.hits.handle);
   return probe;
@@ -72,6 +74,13 @@ std::vector<gpu::ProbeHit> traceRays(const Device& device, RayProbe& probe, std:
   submitAndWait(device, [&](VkCommandBuffer cmd) { recordProbe(cmd, probe, count, mode); });
   std::vector<gpu::ProbeHit> hits(count);
   downloadBuffer(device, probe.hits, hits.data(), hits.size() * sizeof(gpu::ProbeHit));
+  // The device's ids are positions in the upload's spatial order; report the scene's.
+  for (gpu::ProbeHit& hit : hits) {
+    if (hit.instance >= probe.sceneRecord.size()) continue;
+    const std::vector<std::uint32_t>& order = *probe.scenePrimitive[hit.instance];
+    if (hit.primitive < order.size()) hit.primitive = order[hit.primitive];
+    hit.instance = probe.sceneRecord[hit.instance];
+  }
   return hits;
 }
 

@@ -3,6 +3,8 @@
 // Tests compare the hits with analytic geometry; `raylab bench` times them and cross-checks with Embree.
 #pragma once
 
+#include <memory>
+
 #include <span>
 #include <vector>
 
@@ -15,6 +17,8 @@ namespace raylab {
 
 struct RayProbe {
   TraceKernel kernel;
+  std::vector<std::uint32_t> sceneRecord;  // the GpuScene's, to report the scene's ids
+  std::vector<std::shared_ptr<const std::vector<std::uint32_t>>> scenePrimitive;
   Buffer rays;
   Buffer hits;
   std::uint32_t capacity = 0;  // rays the buffers hold

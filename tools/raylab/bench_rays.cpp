@@ -233,6 +233,8 @@ struct RaysOptions {
   std::uint32_t repeat = 3;
   std::string only;
   bool cpuTime = false;
+  bool shuffle = false;
+  bool submittedOrder = false;
   std::string backendChoice = "all";
   bool json = false;
   std::optional<std::uint32_t> device;
@@ -254,8 +256,9 @@ int benchRays(const RaysOptions& o) {
 
   for (const BenchSceneInfo& info : allBenchScenes()) {
     if (!only.empty() && only != info.key) continue;
-    const Scene scene = makeBenchScene(info.kind);
-    GpuScene gpuScene = uploadScene(gpu.device, scene);
+    Scene scene = makeBenchScene(info.kind);
+    if (o.shuffle) shuffleTriangles(scene, 12345);
+    GpuScene gpuScene = uploadScene(gpu.device, scene, !o.submittedOrder);
     EmbreeTracer embreeOne = createEmbreeTracer(scene, 1);
     EmbreeTracer embreeAll = createEmbreeTracer(scene, cores);
     builds.push_back({scene.name, gpuScene.accelerationBuildSeconds, embreeAll.buildSeconds});
@@ -353,6 +356,11 @@ void addBenchRaysCommand(CLI::App& bench) {
   addFlag(command, "--cpu-time", o->cpuTime,
           "rate rays per CPU-second of the whole process instead of per wall-clock second: steadier on a shared "
           "machine, and fair between tracers using different thread counts");
+  addFlag(command, "--shuffle", o->shuffle,
+          "the meshes' triangles in a random order (as a file from an exporter or optimiser may hold them)");
+  addFlag(command, "--submitted-order", o->submittedOrder,
+          "build the trees from the primitives in the scene's own order, without raylab's spatial sort (to measure "
+          "what the sort is worth)");
   addFlag(command, "--json", o->json, "print one JSON object instead of the table");
   addBenchBackendOption(command, o->backendChoice);
   addDeviceOption(command, o->device);
