@@ -176,6 +176,12 @@ TEST_F(MeasuredCliTest, FitRanksTheTabulatedModelFirstAndWritesJson) {
   EXPECT_NE(text.find("\"params\""), std::string::npos);
   EXPECT_NE(fit.output.find("1    cooktorrance"), std::string::npos) << fit.output;
   EXPECT_NE(fit.output.find("starts"), std::string::npos) << "a progress line";
+  // A CSV target that is also the JSON output (renamed .json): refused, the target untouched.
+  const fs::path samples = scratch() / "samples.json";
+  writeBytes(samples, "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b\n0,0,1,0,0,1,0.1,0.1,0.1\n");
+  const CommandResult same = runRaylab({"brdf", "fit", samples.string(), "--json", samples.string()});
+  EXPECT_EQ(same.exitCode, 2) << same.output;
+  EXPECT_NE(readBytes(samples).find("wi_x"), std::string::npos) << "the target was overwritten";
   const CommandResult bad = runRaylab({"brdf", "fit", good_.string(), "--models", "glass"});
   EXPECT_EQ(bad.exitCode, 1);
   EXPECT_NE(bad.output.find("is not a model that can be fitted"), std::string::npos) << bad.output;

@@ -1,6 +1,7 @@
 // `raylab brdf fit`: every analytic model of the library (or those named) fitted to a target, ranked
 // (engine/fit, docs/fitting.md).
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -51,6 +52,11 @@ int fit(const FitCommandOptions& o) {
   if (!o.jsonPath.empty()) {
     checkOutputPath(o.jsonPath, "--json");
     requireExtension(kCommand, "--json", o.jsonPath, ".json");
+    // A ranking written over its own target would destroy the measurement.
+    std::error_code error;
+    if (std::filesystem::equivalent(o.jsonPath, o.target, error)) {
+      throw Error(std::string(kCommand) + ": --json " + o.jsonPath + " is the target itself", kExitUsage);
+    }
   }
   FitOptions options;
   options.starts = int(o.starts);
