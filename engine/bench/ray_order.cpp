@@ -5,19 +5,11 @@
 #include <numeric>
 #include <random>
 
+#include "util/bits.h"
+
 namespace raylab {
 
 namespace {
-
-// Spreads the low 10 bits of v to every third bit (Morton encoding).
-std::uint32_t spreadBits(std::uint32_t v) {
-  v &= 0x3FFu;
-  v = (v | (v << 16)) & 0x030000FFu;
-  v = (v | (v << 8)) & 0x0300F00Fu;
-  v = (v | (v << 4)) & 0x030C30C3u;
-  v = (v | (v << 2)) & 0x09249249u;
-  return v;
-}
 
 std::uint32_t octant(glm::vec3 d) { return (d.x < 0.0f ? 1u : 0u) | (d.y < 0.0f ? 2u : 0u) | (d.z < 0.0f ? 4u : 0u); }
 
