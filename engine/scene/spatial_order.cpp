@@ -96,27 +96,10 @@ Mesh orderedMesh(const Mesh& mesh, std::vector<std::uint32_t>& order, bool sort)
 OrderedGeometry spatiallyOrderedGeometry(const Scene& scene, bool sort) {
   OrderedGeometry geometry;
   Scene& ordered = geometry.scene;
-  ordered.name = scene.name;
-  ordered.camera = scene.camera;
-  ordered.cameraNames = scene.cameraNames;
+  // What the upload builds geometry and light records from; the images stay in the scene (see the header).
   ordered.materials = scene.materials;
   ordered.lights = scene.lights;
-  ordered.background = scene.background;
-  ordered.environment.path = scene.environment.path;
   ordered.environment.strength = scene.environment.strength;
-  ordered.environment.rotation = scene.environment.rotation;
-  ordered.environment.width = scene.environment.width;
-  ordered.environment.height = scene.environment.height;
-  ordered.environment.brightest = scene.environment.brightest;
-  for (const Texture& texture : scene.textures) {
-    Texture size;
-    size.name = texture.name;
-    size.width = texture.width;
-    size.height = texture.height;
-    size.wrapS = texture.wrapS;
-    size.wrapT = texture.wrapT;
-    ordered.textures.push_back(size);
-  }
   geometry.triangles.resize(scene.meshes.size());
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
     ordered.meshes.push_back(orderedMesh(scene.meshes[m], geometry.triangles[m], sort));

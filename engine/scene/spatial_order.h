@@ -20,11 +20,11 @@ namespace raylab {
 // order[k] is the index of the k-th point.
 std::vector<std::uint32_t> hilbertOrder(const std::vector<glm::vec3>& points, glm::vec3 low, glm::vec3 high);
 
-// The scene's geometry with each mesh's triangles, the spheres and the mesh instances in Hilbert order, and
-// everything else as it is, but without the pixels of its textures and environment image (only their sizes and
-// settings): what the device's geometry, light records and primitive ids are built from, while the images are
-// uploaded from the scene itself. Primitive ids on the device are positions in this order; nothing outside the
-// upload sees them: the orders map them back (the ray probe reports the scene's ids).
+// The scene's geometry with each mesh's triangles, the spheres and the mesh instances in Hilbert order, with its
+// materials, lights and environment strength: what the device's geometry, light records and primitive ids are
+// built from. Nothing else is copied (no textures, no environment pixels, no camera): the upload reads those from
+// the scene itself. Primitive ids on the device are positions in this order; nothing outside the upload sees them:
+// the orders map them back (the ray probe reports the scene's ids).
 struct OrderedGeometry {
   Scene scene;
   std::vector<std::vector<std::uint32_t>> triangles;  // per mesh: triangles[m][k] is the scene's triangle at k
