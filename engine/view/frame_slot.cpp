@@ -1,3 +1,5 @@
+#include <cstdio>
+#include <cstdlib>
 #include "view/frame_slot.h"
 
 #include "shared/frame.h"
@@ -27,7 +29,7 @@ FrameSlot createFrameSlot(const Device& device) {
 
   VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  queryInfo.queryCount = kFrameTimestampCount;
+  queryInfo.queryCount = kSlotTimestampCount;
   VK_CHECK(vkCreateQueryPool(device.handle, &queryInfo, nullptr, &slot.timestamps));
   setDebugName(device, VK_OBJECT_TYPE_QUERY_POOL, reinterpret_cast<std::uint64_t>(slot.timestamps), "frame timestamps");
 
@@ -57,7 +59,25 @@ FrameTimes readFrameTimes(const Device& device, const FrameSlot& slot) {
   times.displaySeconds = double(ticks[kDisplayEnd] - ticks[kTraceEnd]) * period;
   times.blitSeconds = double(ticks[kBlitEnd] - ticks[kDisplayEnd]) * period;
   times.totalSeconds = double(ticks[kFrameEnd] - ticks[kFrameBegin]) * period;
+  if (getenv("RL_GAP")) fprintf(stderr, "GAP %.6f %.6f\n", ticks[kFrameBegin]*period, ticks[kFrameEnd]*period);
   return times;
+}
+
+}  // namespace raylab
+
+namespace raylab {
+
+std::vector<double> readPassTimes(const Device& device, const FrameSlot& slot) {
+  const auto count = std::uint32_t(slot.timedTiles.size());
+  if (count == 0) return {};
+  std::uint64_t ticks[kTimedPasses + 1] = {};
+  VK_CHECK(vkGetQueryPoolResults(device.handle, slot.timestamps, kPassTimestampBase, count + 1,
+                                 sizeof(std::uint64_t) * (count + 1), ticks, sizeof(std::uint64_t),
+                                 VK_QUERY_RESULT_64_BIT));
+  const double period = device.properties.limits.timestampPeriod * 1.0e-9;
+  std::vector<double> seconds(count);
+  for (std::uint32_t i = 0; i < count; ++i) seconds[i] = double(ticks[i + 1] - ticks[i]) * period;
+  return seconds;
 }
 
 }  // namespace raylab

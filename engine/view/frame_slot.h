@@ -6,6 +6,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -23,6 +24,12 @@ enum FrameTimestamp : std::uint32_t {
   kFrameEnd = 4,
   kFrameTimestampCount = 5,
 };
+// Timestamps between the trace passes of a frame (one before the first, one after each), after the frame's
+// own: each pass's device time, for the scheduler's per-tile costs. Passes beyond the first kTimedPasses of a
+// frame (a small image takes many) go untimed.
+constexpr std::uint32_t kTimedPasses = 32;
+constexpr std::uint32_t kPassTimestampBase = kFrameTimestampCount;
+constexpr std::uint32_t kSlotTimestampCount = kPassTimestampBase + kTimedPasses + 1;
 
 struct FrameSlot {
   VkCommandBuffer cmd = VK_NULL_HANDLE;
@@ -39,8 +46,11 @@ struct FrameSlot {
   std::uint64_t pixelSamples = 0;
   glm::uvec2 traceExtent{0};
   bool preview = false;
+  bool shown = true;
   std::uint32_t spp = 0;
   bool measure = false;   // its timings may feed the cost model (not a kernel's first dispatch)
+  std::vector<std::uint32_t> timedTiles;  // the scheduler's tile index of each timed pass
+  std::uint64_t tiling = 0;               // the scheduler's tiling they index
   bool captured = false;
   VkExtent2D captureExtent{};
   bool differenceRead = false;
@@ -57,5 +67,7 @@ struct FrameTimes {
   double totalSeconds = 0.0;    // the whole command buffer on the device (the UI is the rest)
 };
 FrameTimes readFrameTimes(const Device& device, const FrameSlot& slot);
+// The device time of each timed pass, in order.
+std::vector<double> readPassTimes(const Device& device, const FrameSlot& slot);
 
 }  // namespace raylab

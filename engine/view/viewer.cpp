@@ -14,6 +14,26 @@ namespace raylab {
 
 namespace {
 
+// What a submitted frame did, for its completion (viewer_frames.cpp, completeFrame).
+void recordSubmission(Viewer& v, FrameSlot& slot, const FramePlan& plan, double now) {
+  slot.submitSeconds = now;
+  slot.pixelSamples = plan.pixelSamples;
+  slot.traceExtent = v.scheduler.traceExtent;
+  slot.preview = v.scheduler.preview;
+  slot.spp = v.scheduler.sampleIndex;
+  slot.measure = v.kernelState == KernelState::kReady && plan.pixelSamples > 0;
+  if (plan.pixelSamples > 0) v.kernelState = KernelState::kReady;
+}
+
+void countSubmission(Viewer& v, double now) {
+  if (v.lastSubmit >= 0.0) {
+    const double ms = (now - v.lastSubmit) * 1000.0;
+    v.frameMs = v.frameMs == 0.0 ? ms : 0.8 * v.frameMs + 0.2 * ms;
+  }
+  v.lastSubmit = now;
+  ++v.frameIndex;
+}
+
 // Everything after the image was acquired: input, UI, changes, the plan, recording and submission.
 void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
   const double now = v.clock.seconds();
@@ -72,21 +92,21 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
 
   const bool capture = !v.options.windowCapture.empty() && v.options.frames && v.frameIndex + 1 == *v.options.frames;
   recordFrame(v, slot, paused ? nullptr : &plan, imageIndex, capture, !paused && differenceStatsDue(v));
-  slot.submitSeconds = now;
-  slot.pixelSamples = plan.pixelSamples;
-  slot.traceExtent = v.scheduler.traceExtent;
-  slot.preview = v.scheduler.preview;
-  slot.spp = v.scheduler.sampleIndex;
-  slot.measure = v.kernelState == KernelState::kReady && plan.pixelSamples > 0;
-  if (plan.pixelSamples > 0) v.kernelState = KernelState::kReady;
+  recordSubmission(v, slot, plan, now);
+  slot.shown = true;
   submitAndPresent(v, slot, imageIndex);
+  v.lastShown = now;
+  countSubmission(v, now);
+}
 
-  if (v.lastSubmit >= 0.0) {
-    const double ms = (now - v.lastSubmit) * 1000.0;
-    v.frameMs = v.frameMs == 0.0 ? ms : 0.8 * v.frameMs + 0.2 * ms;
-  }
-  v.lastSubmit = now;
-  ++v.frameIndex;
+// A refinement frame between displayed ones (kRefineDisplaySeconds): trace passes for the whole frame budget.
+void drawUnshownFrame(Viewer& v, FrameSlot& slot, double now) {
+  const FramePlan plan = planFrame(v.scheduler, now, false, FrameKind::kUnshown);
+  recordUnshownFrame(v, slot, plan);
+  recordSubmission(v, slot, plan, now);
+  slot.shown = false;
+  submitUnshown(v, slot);
+  countSubmission(v, now);
 }
 
 void run(Viewer& v) {
@@ -131,6 +151,14 @@ void run(Viewer& v) {
     if (!v.automation && !traceWork && !v.window.input->activity && v.uiFramesLeft <= 0) {
       if (anyInFlight(v)) continue;  // the fence wait above paces the loop
       glfwWaitEventsTimeout(v.build ? kBuildPollSeconds : kIdleWaitSeconds);
+      continue;
+    }
+
+    // Refining with nothing to react to: most frames only trace, a few show the progress.
+    const double now = v.clock.seconds();
+    if (!v.automation && traceWork && !v.window.input->activity && v.uiFramesLeft <= 0 && !v.pending.accumulation &&
+        !v.pending.display && refiningQuietly(v.scheduler, now) && now - v.lastShown < kRefineDisplaySeconds) {
+      drawUnshownFrame(v, slot, now);
       continue;
     }
 

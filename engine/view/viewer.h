@@ -53,6 +53,7 @@ struct FrameRecord {
   double deviceSeconds = 0.0;    // device time of the whole frame (the UI pass is what the others leave)
   glm::uvec2 traceExtent{0};
   bool preview = false;
+  bool shown = true;             // displayed; else a refinement frame that only traced (kRefineDisplaySeconds)
   std::uint32_t spp = 0;         // complete passes at traceExtent after this frame
   std::uint64_t pixelSamples = 0;
 };

@@ -31,9 +31,15 @@ void writeWindowCapture(const Viewer& v, const FrameSlot& slot) {
 void completeFrame(Viewer& v, FrameSlot& slot) {
   const double now = v.clock.seconds();
   const FrameTimes times = readFrameTimes(v.device, slot);
-  if (slot.measure) addTraceMeasurement(v.scheduler.cost, slot.pixelSamples, times.traceSeconds);
-  // The first frames also compile the display and UI pipelines.
-  if (v.report.frames.size() >= kFramesInFlight) {
+  if (slot.measure) {
+    addTraceMeasurement(v.scheduler.cost, slot.pixelSamples, times.traceSeconds);
+    const std::vector<double> passSeconds = readPassTimes(v.device, slot);
+    for (std::size_t i = 0; i < passSeconds.size(); ++i) {
+      addTileMeasurement(v.scheduler, slot.tiling, slot.timedTiles[i], passSeconds[i]);
+    }
+  }
+  // The first frames also compile the display and UI pipelines; an unshown frame has no overhead to measure.
+  if (slot.shown && v.report.frames.size() >= kFramesInFlight) {
     addOverheadMeasurement(v.scheduler.cost, times.totalSeconds - times.traceSeconds);
   }
   const auto* stats = static_cast<const gpu::RayStats*>(slot.rayStats.mapped);
@@ -51,6 +57,7 @@ void completeFrame(Viewer& v, FrameSlot& slot) {
   record.blitSeconds = times.blitSeconds;
   record.traceExtent = slot.traceExtent;
   record.preview = slot.preview;
+  record.shown = slot.shown;
   record.spp = slot.spp;
   record.pixelSamples = slot.pixelSamples;
   v.report.frames.push_back(record);
@@ -103,14 +110,16 @@ void recordCapture(VkCommandBuffer cmd, Viewer& v, FrameSlot& slot, VkImage imag
   slot.captureExtent = extent;
 }
 
-void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_t imageIndex, bool capture,
-                 bool readDifference) {
-  VkCommandBuffer cmd = slot.cmd;
+namespace {
+
+// The frame's first commands: the timestamps' reset, the accumulation's clear on a reset, and the plan's trace
+// passes, each timed (the scheduler's per-tile costs).
+void recordTracePasses(VkCommandBuffer cmd, Viewer& v, FrameSlot& slot, const FramePlan* plan) {
   VK_CHECK(vkResetCommandBuffer(cmd, 0));
   VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   VK_CHECK(vkBeginCommandBuffer(cmd, &beginInfo));
-  vkCmdResetQueryPool(cmd, slot.timestamps, 0, kFrameTimestampCount);
+  vkCmdResetQueryPool(cmd, slot.timestamps, 0, kSlotTimestampCount);
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, slot.timestamps, kFrameBegin);
   computeBarrier(cmd);  // after the previous frame's passes and the uploads
 
@@ -126,14 +135,69 @@ void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_
   for (const Renderer* side : sides) {
     if (side != nullptr) recordResetRayStats(cmd, *side);
   }
-  if (plan != nullptr) {
+  slot.timedTiles.clear();
+  if (plan == nullptr) return;
+  slot.tiling = plan->tiling;
+  for (const TracePass& pass : plan->passes) {
+    const auto timed = std::uint32_t(slot.timedTiles.size());
+    if (timed < kTimedPasses) {
+      if (timed == 0) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, slot.timestamps, kPassTimestampBase);
+      slot.timedTiles.push_back(pass.tileIndex);
+    }
     for (const Renderer* side : sides) {
-      if (side == nullptr) continue;
-      for (const TracePass& pass : plan->passes) {
-        recordSamplePass(cmd, *side, pass.sampleIndex, pass.tile.origin, pass.tile.size);
-      }
+      if (side != nullptr) recordSamplePass(cmd, *side, pass.sampleIndex, pass.tile.origin, pass.tile.size);
+    }
+    if (timed < kTimedPasses) {
+      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, slot.timestamps, kPassTimestampBase + timed + 1);
     }
   }
+}
+
+// Each tile once: a small image may take several passes in a frame, and unshown frames add theirs.
+void addRegion(std::vector<Tile>& regions, const Tile& tile) {
+  const bool seen =
+      std::any_of(regions.begin(), regions.end(), [&](const Tile& other) { return other.origin == tile.origin; });
+  if (!seen) regions.push_back(tile);
+}
+
+// Vertically adjacent tiles of the same columns as one: refinement bands traced in order become one dispatch
+// and one copy.
+std::vector<Tile> mergeBands(std::vector<Tile> tiles) {
+  std::sort(tiles.begin(), tiles.end(), [](const Tile& a, const Tile& b) {
+    return a.origin.x != b.origin.x ? a.origin.x < b.origin.x : a.origin.y < b.origin.y;
+  });
+  std::vector<Tile> merged;
+  for (const Tile& tile : tiles) {
+    if (!merged.empty()) {
+      Tile& last = merged.back();
+      if (last.origin.x == tile.origin.x && last.size.x == tile.size.x && last.origin.y + last.size.y == tile.origin.y) {
+        last.size.y += tile.size.y;
+        continue;
+      }
+    }
+    merged.push_back(tile);
+  }
+  return merged;
+}
+
+}  // namespace
+
+void recordUnshownFrame(Viewer& v, FrameSlot& slot, const FramePlan& plan) {
+  VkCommandBuffer cmd = slot.cmd;
+  recordTracePasses(cmd, v, slot, &plan);
+  // No display pass, blit or UI: their timestamps all mark the end of tracing.
+  for (const FrameTimestamp stamp : {kTraceEnd, kDisplayEnd, kBlitEnd, kFrameEnd}) {
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, slot.timestamps, stamp);
+  }
+  recordCopyRayStats(cmd, v.renderer, slot.rayStats.handle);
+  VK_CHECK(vkEndCommandBuffer(cmd));
+  for (const TracePass& pass : plan.passes) addRegion(v.undisplayedTiles, pass.tile);
+}
+
+void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_t imageIndex, bool capture,
+                 bool readDifference) {
+  VkCommandBuffer cmd = slot.cmd;
+  recordTracePasses(cmd, v, slot, plan);
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, slot.timestamps, kTraceEnd);
   recordCopyRayStats(cmd, v.renderer, slot.rayStats.handle);
   if (readDifference) recordDifferenceReadback(cmd, v, slot);
@@ -160,16 +224,15 @@ void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_
     std::vector<Tile> regions;
     if (settingsChanged) {
       regions = tilesWithSamples(v.scheduler);
-    } else if (traceDone) {
-      for (const TracePass& pass : plan->passes) {
-        // A small image may take several passes in a frame: each tile once.
-        const bool seen = std::any_of(regions.begin(), regions.end(),
-                                      [&](const Tile& tile) { return tile.origin == pass.tile.origin; });
-        if (!seen) regions.push_back(pass.tile);
+    } else {
+      regions = v.undisplayedTiles;  // traced by unshown frames since the last display pass
+      if (traceDone) {
+        for (const TracePass& pass : plan->passes) addRegion(regions, pass.tile);
       }
     }
-    recordDisplayRegions(cmd, v.display, v.display.refined, traced, display, regions);
+    recordDisplayRegions(cmd, v.display, v.display.refined, traced, display, mergeBands(regions));
   }
+  v.undisplayedTiles.clear();  // shown now, or a preview started over
   v.lastDisplay = display;
   v.pending.display = false;
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, slot.timestamps, kDisplayEnd);
@@ -184,6 +247,15 @@ void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_
   if (capture) recordCapture(cmd, v, slot, image);
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps, kFrameEnd);
   VK_CHECK(vkEndCommandBuffer(cmd));
+}
+
+void submitUnshown(Viewer& v, FrameSlot& slot) {
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &slot.cmd;
+  VK_CHECK(vkResetFences(v.device.handle, 1, &slot.fence));
+  VK_CHECK(vkQueueSubmit(v.device.queue, 1, &submit, slot.fence));
+  slot.inFlight = true;
 }
 
 void submitAndPresent(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {

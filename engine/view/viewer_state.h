@@ -42,6 +42,10 @@ constexpr double kRaysWindow = 1.0;     // rays/s over this many seconds of fram
 constexpr double kIdleWaitSeconds = 0.5;    // idle: the status line still refreshes this often
 constexpr double kBuildPollSeconds = 0.05;  // a kernel build's end is noticed within this
 constexpr double kDifferenceSeconds = 1.0;  // the difference statistics are measured at most this often
+// While refining with no input, a frame is displayed at least this often and the frames between only trace:
+// each displayed frame costs its display pass, blit, UI and lavapipe's copy to the window (about 15 ms of a
+// 50 ms frame at 1280x720), and the device idles while the host copies.
+constexpr double kRefineDisplaySeconds = 0.25;
 constexpr double kHoverSeconds = 0.1;       // the hovered material is cast for at most this often
 constexpr std::uint64_t kHoverTriangles = 200'000;  // above this the CPU cast is too slow for hovering
 
@@ -88,6 +92,8 @@ struct Viewer {
   KernelFeatures needed;      // what the scene's materials and lights need compiled in
   KernelState kernelState = KernelState::kFirstDispatch;
   Pending pending;
+  std::vector<Tile> undisplayedTiles;  // refined by unshown frames, for the next display pass
+  double lastShown = -1.0e30;          // when the last displayed frame was submitted
   DisplaySettings lastDisplay;
   bool showingPreview = false;  // the window shows the preview image (else the refined one)
   glm::uvec2 previewSize{0};
@@ -137,6 +143,9 @@ bool anyInFlight(const Viewer& v);
 void recordFrame(Viewer& v, FrameSlot& slot, const FramePlan* plan, std::uint32_t imageIndex, bool capture,
                  bool readDifference);
 void submitAndPresent(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex);
+// A refinement frame that is not displayed: trace passes only (viewer.cpp, drawUnshownFrame).
+void recordUnshownFrame(Viewer& v, FrameSlot& slot, const FramePlan& plan);
+void submitUnshown(Viewer& v, FrameSlot& slot);
 
 // viewer_edits.cpp
 std::string timestampedScreenshotPath();

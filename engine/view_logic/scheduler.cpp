@@ -21,19 +21,23 @@ double traceBudget(const Scheduler& s) {
   return std::max(target - s.cost.overheadSeconds, kMinTraceShare * target);
 }
 
+bool refining(const Scheduler& s) { return !s.needsReset && !s.preview && s.traceExtent == s.fullExtent; }
+
 void restart(Scheduler& s, glm::uvec2 extent, bool preview, FramePlan& plan) {
   s.traceExtent = extent;
   s.preview = preview;
   // A preview pass is traced whole in one frame: one dispatch is cheaper than many.
-  s.tiles = preview ? std::vector<Tile>{{{0, 0}, extent}} : makeTiles(extent, {extent.x, s.settings.bandRows});
+  s.tiles = preview ? std::vector<Tile>{{{0, 0}, extent}} : makeTiles(extent, {extent.x, bandRows(extent.x, s.settings.bandPixels)});
+  s.tileSeconds.assign(s.tiles.size(), 0.0);
+  ++s.tiling;
   s.nextTile = 0;
   s.sampleIndex = 0;
   s.needsReset = false;
   plan.reset = true;
 }
 
-void addPass(FramePlan& plan, const Tile& tile, std::uint32_t sampleIndex) {
-  plan.passes.push_back({tile, sampleIndex});
+void addPass(FramePlan& plan, const Tile& tile, std::uint32_t sampleIndex, std::size_t tileIndex) {
+  plan.passes.push_back({tile, sampleIndex, std::uint32_t(tileIndex)});
   plan.pixelSamples += std::uint64_t(tile.size.x) * tile.size.y;
 }
 
@@ -45,9 +49,10 @@ void addTiles(Scheduler& s, FramePlan& plan, double budget) {
   const std::uint32_t lastSample = s.sampleIndex + kMaxPassesPerFrame;
   while (!limitReached(s) && s.sampleIndex < lastSample) {
     const Tile& tile = s.tiles[s.nextTile];
-    const double cost = double(tile.size.x) * tile.size.y * s.cost.secondsPerPixelSample;
+    const double measured = s.tileSeconds[s.nextTile];
+    const double cost = measured > 0.0 ? measured : double(tile.size.x) * tile.size.y * s.cost.secondsPerPixelSample;
     if (!plan.passes.empty() && spent + cost > budget) break;
-    addPass(plan, tile, s.sampleIndex);
+    addPass(plan, tile, s.sampleIndex, s.nextTile);
     spent += cost;
     if (++s.nextTile == s.tiles.size()) {
       s.nextTile = 0;
@@ -70,6 +75,10 @@ std::vector<Tile> makeTiles(glm::uvec2 extent, glm::uvec2 tileSize) {
   return tiles;
 }
 
+std::uint32_t bandRows(std::uint32_t width, std::uint32_t bandPixels) {
+  return std::max(8u, bandPixels / std::max(width, 1u) / 8u * 8u);
+}
+
 void addTraceMeasurement(CostModel& cost, std::uint64_t pixelSamples, double seconds) {
   if (pixelSamples == 0 || !(seconds > 0.0)) return;
   double sample = seconds / double(pixelSamples);
@@ -82,6 +91,15 @@ void addTraceMeasurement(CostModel& cost, std::uint64_t pixelSamples, double sec
     cost.secondsPerPixelSample = (1.0 - weight) * current + weight * sample;
   }
   ++cost.traceMeasurements;
+}
+
+void addTileMeasurement(Scheduler& s, std::uint64_t tiling, std::uint32_t tileIndex, double seconds) {
+  if (tiling != s.tiling || tileIndex >= s.tileSeconds.size() || !(seconds > 0.0)) return;
+  double& current = s.tileSeconds[tileIndex];
+  // As the running estimate: a kernel compiled at its first dispatch must not poison a tile for good.
+  if (current > 0.0) seconds = std::clamp(seconds, 0.25 * current, 4.0 * current);
+  const double weight = current == 0.0 ? 1.0 : seconds > current ? kSmoothingUp : kSmoothingDown;
+  current = (1.0 - weight) * current + weight * seconds;
 }
 
 void addOverheadMeasurement(CostModel& cost, double seconds) {
@@ -105,6 +123,8 @@ void setFullExtent(Scheduler& scheduler, glm::uvec2 extent) {
   scheduler.traceExtent = glm::uvec2(0);
   scheduler.preview = false;
   scheduler.tiles.clear();
+  scheduler.tileSeconds.clear();
+  ++scheduler.tiling;
   scheduler.nextTile = 0;
   scheduler.sampleIndex = 0;
 }
@@ -114,8 +134,10 @@ std::vector<Tile> tilesWithSamples(const Scheduler& s) {
   return std::vector<Tile>(s.tiles.begin(), s.tiles.begin() + std::ptrdiff_t(s.nextTile));
 }
 
-bool converged(const Scheduler& s) {
-  return !s.preview && !s.needsReset && s.traceExtent == s.fullExtent && limitReached(s);
+bool converged(const Scheduler& s) { return refining(s) && limitReached(s); }
+
+bool refiningQuietly(const Scheduler& s, double now) {
+  return refining(s) && !limitReached(s) && now - s.lastChange >= s.settings.settleSeconds;
 }
 
 FramePlan planFrame(Scheduler& s, double now, bool changed, FrameKind kind) {
@@ -124,7 +146,7 @@ FramePlan planFrame(Scheduler& s, double now, bool changed, FrameKind kind) {
     s.lastChange = now;
     s.needsReset = true;
   }
-  const bool moving = kind == FrameKind::kInteractive && now - s.lastChange < s.settings.settleSeconds;
+  const bool moving = kind != FrameKind::kFullPass && now - s.lastChange < s.settings.settleSeconds;
 
   if (moving) {
     if (s.needsReset || !s.preview) {
@@ -142,22 +164,24 @@ FramePlan planFrame(Scheduler& s, double now, bool changed, FrameKind kind) {
       restart(s, extent, true, plan);
     }
     // The preview is sized so that one whole pass fits the budget: the window always shows a complete image.
-    for (const Tile& tile : s.tiles) addPass(plan, tile, s.sampleIndex);
+    for (std::size_t i = 0; i < s.tiles.size(); ++i) addPass(plan, s.tiles[i], s.sampleIndex, i);
     ++s.sampleIndex;
   } else {
     if (s.needsReset || s.preview || s.traceExtent != s.fullExtent) restart(s, s.fullExtent, false, plan);
     if (kind == FrameKind::kFullPass) {
       if (!limitReached(s)) {
-        for (std::size_t i = s.nextTile; i < s.tiles.size(); ++i) addPass(plan, s.tiles[i], s.sampleIndex);
+        for (std::size_t i = s.nextTile; i < s.tiles.size(); ++i) addPass(plan, s.tiles[i], s.sampleIndex, i);
         s.nextTile = 0;
         ++s.sampleIndex;
       }
     } else {
-      addTiles(s, plan, traceBudget(s));
+      // An unshown frame has no display pass, blit, UI or presentation: its whole budget traces.
+      addTiles(s, plan, kind == FrameKind::kUnshown ? s.settings.targetFrameSeconds : traceBudget(s));
     }
   }
   plan.traceExtent = s.traceExtent;
   plan.preview = s.preview;
+  plan.tiling = s.tiling;
   return plan;
 }
 

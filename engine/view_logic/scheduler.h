@@ -22,6 +22,9 @@ struct Tile {
 // are cut at the image edge.
 std::vector<Tile> makeTiles(glm::uvec2 extent, glm::uvec2 tileSize);
 
+// The rows of a refinement band of about `bandPixels` pixels across `width`: a multiple of 8, at least 8.
+std::uint32_t bandRows(std::uint32_t width, std::uint32_t bandPixels);
+
 // Running estimates from the device's timestamps.
 struct CostModel {
   double secondsPerPixelSample = 0.0;  // 0 until the first measurement
@@ -37,10 +40,11 @@ void addOverheadMeasurement(CostModel& cost, double seconds);
 struct SchedulerSettings {
   double targetFrameSeconds = 0.050;
   double settleSeconds = 0.25;      // unchanged this long: refine at full resolution
-  // Still frames refine in bands of the full width and this many rows (a multiple of 8). Lavapipe keeps its
-  // threads busy only with enough workgroups: a 640-pixel band of 32 rows traces a pixel-sample in about half
-  // the time a 64x64 tile does, and is still short enough to fit a 50 ms frame at 1280x720.
-  std::uint32_t bandRows = 32;
+  // Still frames refine in bands of the full width and about this many pixels (a multiple of 8 rows). Lavapipe
+  // keeps its threads busy only with enough workgroups: a 640-pixel band of 32 rows traces a pixel-sample in
+  // about half the time a 64x64 tile does. Smaller bands pack a frame closer to its budget: bands of 1280x32
+  // cost up to 25 ms in the showcase's busy rows, so a 41 ms budget held one of them and idled for the rest.
+  std::uint32_t bandPixels = 640 * 32;
   std::uint32_t sppLimit = 0;       // full-resolution passes to stop at; 0: never stop
   float minPreviewScale = 1.0f / 16.0f;
   float firstPreviewScale = 0.25f;  // before anything was measured
@@ -49,6 +53,7 @@ struct SchedulerSettings {
 struct TracePass {
   Tile tile;
   std::uint32_t sampleIndex = 0;
+  std::uint32_t tileIndex = 0;  // in Scheduler::tiles of the tiling the plan was made for
 };
 
 struct FramePlan {
@@ -57,10 +62,12 @@ struct FramePlan {
   bool preview = false;         // traceExtent is a reduced resolution
   std::vector<TracePass> passes;
   std::uint64_t pixelSamples = 0;
+  std::uint64_t tiling = 0;     // Scheduler::tiling when planned: per-tile times measured for it stay valid
 };
 
 enum class FrameKind {
   kInteractive,  // budgeted: preview while moving, tiles of refinement while still
+  kUnshown,      // refinement tiles for the whole budget: a still frame that is not displayed (refiningQuietly)
   kFullPass,     // automation: exactly one full-resolution pass (or none past the spp limit)
 };
 
@@ -74,12 +81,23 @@ struct Scheduler {
   bool needsReset = true;
   double lastChange = -1.0e30;
   std::vector<Tile> tiles;       // of traceExtent
+  // Each tile's last measured device time per pass (0: not measured). Refinement bands differ tenfold in cost
+  // (sky against glass), so a frame filled by the mean cost per pixel-sample overruns or idles.
+  std::vector<double> tileSeconds;
+  std::uint64_t tiling = 0;      // counts restarts: a measurement of an older tiling is stale
   std::size_t nextTile = 0;      // first tile of the pass in progress still to trace
   std::uint32_t sampleIndex = 0; // the pass in progress; also the number of complete passes
 };
 
+// One pass of tile `tileIndex` of tiling `tiling` took `seconds` on the device.
+void addTileMeasurement(Scheduler& scheduler, std::uint64_t tiling, std::uint32_t tileIndex, double seconds);
+
 // `changed`: the camera, the scene or a render setting changed since the last plan. `now` in seconds.
 FramePlan planFrame(Scheduler& scheduler, double now, bool changed, FrameKind kind);
+
+// True when the accumulation is refining at full resolution, still for `settleSeconds`, with nothing changed:
+// a frame may then trace without being displayed (FrameKind::kUnshown).
+bool refiningQuietly(const Scheduler& scheduler, double now);
 
 // True when a still, full-resolution accumulation has reached the spp limit: there is nothing left to trace.
 bool converged(const Scheduler& scheduler);

@@ -98,6 +98,80 @@ TEST(SchedulerTest, StillFramesStayWithinTheBudgetAndStillAddSamplesInRenderOrde
   EXPECT_GE(total, 3u * 300 * 200);
 }
 
+TEST(SchedulerTest, RefinementBandsHoldAboutTheSamePixelsAtAnyWidth) {
+  EXPECT_EQ(bandRows(640, 640 * 32), 32u);
+  EXPECT_EQ(bandRows(1280, 640 * 32), 16u);
+  EXPECT_EQ(bandRows(4000, 640 * 32), 8u);  // at least one workgroup row
+  EXPECT_EQ(bandRows(100, 640 * 32), 200u);
+}
+
+// Bands differ tenfold in cost (sky against glass): once each band's cost is measured, a frame takes bands while
+// their measured costs fit the budget, where the mean cost per pixel-sample would overrun or idle.
+TEST(SchedulerTest, RefinementPacksFramesByEachBandsMeasuredCost) {
+  Scheduler scheduler = makeScheduler({640, 256}, 1e-6);
+  scheduler.settings.targetFrameSeconds = 0.05;
+  scheduler.cost.overheadSeconds = 0.01;  // budget 40 ms
+  double now = 10.0;
+  SampleLog log;
+  // The first pass is planned by the mean cost; every band it traced is then measured.
+  std::vector<double> bandSeconds;
+  while (scheduler.sampleIndex == 0) {
+    const FramePlan plan = planFrame(scheduler, now, false, FrameKind::kInteractive);
+    logPlan(plan, plan.traceExtent, log);
+    for (const TracePass& pass : plan.passes) {
+      const double seconds = pass.tileIndex % 3 == 0 ? 0.030 : 0.004;  // every third band is costly
+      addTileMeasurement(scheduler, plan.tiling, pass.tileIndex, seconds);
+      bandSeconds.push_back(seconds);
+    }
+    now += 0.05;
+  }
+  ASSERT_EQ(scheduler.tiles.size(), 8u);  // 640x32 bands
+  for (int frame = 0; frame < 6; ++frame) {
+    const FramePlan plan = planFrame(scheduler, now, false, FrameKind::kInteractive);
+    logPlan(plan, plan.traceExtent, log);
+    double planned = 0.0;
+    for (const TracePass& pass : plan.passes) planned += scheduler.tileSeconds[pass.tileIndex];
+    EXPECT_LE(planned, 0.040 + 1e-9) << "frame " << frame;
+    // The next band would not have fitted.
+    EXPECT_GT(planned + scheduler.tileSeconds[scheduler.nextTile], 0.040) << "frame " << frame;
+    now += 0.05;
+  }
+  while (scheduler.nextTile != 0) logPlan(planFrame(scheduler, now, false, FrameKind::kInteractive), {640, 256}, log);
+  expectRenderOrder(log, scheduler.sampleIndex);
+}
+
+TEST(SchedulerTest, AMeasurementOfAnOlderTilingIsIgnored) {
+  Scheduler scheduler = makeScheduler({640, 256}, 1e-6);
+  const FramePlan first = planFrame(scheduler, 10.0, true, FrameKind::kInteractive);
+  setFullExtent(scheduler, {320, 256});
+  const FramePlan second = planFrame(scheduler, 20.0, false, FrameKind::kInteractive);
+  ASSERT_NE(first.tiling, second.tiling);
+  addTileMeasurement(scheduler, first.tiling, 0, 1.0);
+  EXPECT_EQ(scheduler.tileSeconds[0], 0.0);
+  addTileMeasurement(scheduler, second.tiling, 0, 0.01);
+  EXPECT_EQ(scheduler.tileSeconds[0], 0.01);
+}
+
+// Frames that are not displayed have no display pass, blit, UI or presentation: they trace for the whole target.
+TEST(SchedulerTest, UnshownFramesRefineOnlyWhenStillAndUseTheWholeTarget) {
+  const double perPixelSample = 1e-7;
+  Scheduler scheduler = makeScheduler({640, 512}, perPixelSample);
+  scheduler.settings.targetFrameSeconds = 0.05;
+  scheduler.cost.overheadSeconds = 0.02;
+  planFrame(scheduler, 1.0, true, FrameKind::kInteractive);  // the camera moved: a preview
+  EXPECT_FALSE(refiningQuietly(scheduler, 1.0));
+  EXPECT_FALSE(refiningQuietly(scheduler, 1.0 + scheduler.settings.settleSeconds));  // still the preview
+  const double still = 1.0 + scheduler.settings.settleSeconds + 0.01;
+  const FramePlan shown = planFrame(scheduler, still, false, FrameKind::kInteractive);
+  EXPECT_FALSE(shown.preview);
+  EXPECT_TRUE(refiningQuietly(scheduler, still));
+  const FramePlan unshown = planFrame(scheduler, still + 0.05, false, FrameKind::kUnshown);
+  EXPECT_NEAR(double(shown.pixelSamples) * perPixelSample, 0.030, 0.0035);    // target - overhead, to a band
+  EXPECT_NEAR(double(unshown.pixelSamples) * perPixelSample, 0.050, 0.0035);  // the whole target
+  scheduler.settings.sppLimit = scheduler.sampleIndex;
+  EXPECT_FALSE(refiningQuietly(scheduler, still + 0.1)) << "nothing left to trace";
+}
+
 TEST(SchedulerTest, MovingTracesAReducedResolutionSizedToTheBudgetThenRefines) {
   Scheduler scheduler = makeScheduler({1280, 720}, 4e-7);
   scheduler.settings.targetFrameSeconds = 0.05;

@@ -66,6 +66,27 @@ TEST(WindowTest, ScreenshotAfterStillFramesEqualsRenderWithAsManySamples) {
   stbi_image_free(pixels);
 }
 
+// The interactive schedule (a preview, then budgeted bands, most frames traced without being displayed) adds
+// each pixel's samples in render order too: at the limit the image is `raylab render --spp N`'s.
+TEST(WindowTest, InteractiveRefinementToTheLimitEqualsRenderWithAsManySamples) {
+  const std::string dir = scratchDir();
+  const std::string exr = dir + "/interactive.exr";
+  fs::remove(exr);
+  // 640x360 at 8 spp takes dozens of 50 ms frames on lavapipe: bands, unshown frames and shown ones.
+  const CommandResult result = runView({"--width", "640", "--height", "360", "--seed", "3", "--spp-limit", "8",
+                                        "--exit-at-limit", "--no-panel", "--screenshot", exr});
+  expectCleanRun(result);
+  EXPECT_NE(result.output.find("8 spp"), std::string::npos) << result.output;
+  const Image view = readExr(exr);
+  const Image reference =
+      renderReference({"--width", "640", "--height", "360", "--seed", "3", "--spp", "8"}, dir + "/interactive_render.exr");
+  expectSameImage(view, reference, "interactive viewer at its spp limit against raylab render");
+
+  const CommandResult refused = runView({"--spp-limit", "8", "--exit-at-limit", "--frames", "3"});
+  EXPECT_EQ(refused.exitCode, 2) << refused.output;
+  EXPECT_NE(refused.output.find("--exit-at-limit needs"), std::string::npos) << refused.output;
+}
+
 TEST(WindowTest, ScriptedMaterialChangeShowsWhereTheMaterialIsAndNowhereElse) {
   const std::string dir = scratchDir();
   const std::string before = dir + "/material_before.exr";

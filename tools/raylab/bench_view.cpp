@@ -38,9 +38,10 @@ struct ViewTiming {
   std::uint32_t minPreviewWidth = 0, maxPreviewWidth = 0;
   double stillTo16Seconds = 0.0;   // from the first unchanged frame to the frame that completed 16 spp
   double secondsPerPixelSample = 0.0;  // still frames: device trace time per pixel-sample
-  double overheadSeconds = 0.0;        // still frames, median: device time besides tracing (display, blit, UI)
+  double overheadSeconds = 0.0;        // shown still frames, median: device time besides tracing (display, blit, UI)
   double stillFrameSeconds = 0.0;      // still frames, median interval
-  double displaySeconds = 0.0, blitSeconds = 0.0, uiSeconds = 0.0;  // still frames, medians
+  double displaySeconds = 0.0, blitSeconds = 0.0, uiSeconds = 0.0;  // shown still frames, medians
+  std::uint32_t stillFrames = 0, shownStillFrames = 0;  // refinement frames to the spp, and those displayed
 };
 
 double percentile(std::vector<double> values, double p) {
@@ -64,7 +65,7 @@ void appendFramesCsv(std::string* csv, Size size, const std::vector<FrameRecord>
     file << size.width << 'x' << size.height << ',' << i << ',' << (i < stillFrame ? "moving" : "still") << ','
          << f.submitSeconds << ',' << f.completeSeconds << ',' << f.traceExtent.x << 'x' << f.traceExtent.y << ','
          << f.preview << ',' << f.spp << ',' << f.pixelSamples << ',' << f.traceSeconds << ',' << f.displaySeconds
-         << ',' << f.blitSeconds << ',' << f.deviceSeconds << '\n';
+         << ',' << f.blitSeconds << ',' << f.deviceSeconds << ',' << (f.shown ? "shown" : "unshown") << '\n';
   }
   *csv += file.str();
 }
@@ -120,11 +121,15 @@ ViewTiming timeViewer(const Scene& scene, Size size, std::uint32_t warmupFrames,
     if (!frame.preview) {
       traceSeconds += frame.traceSeconds;
       pixelSamples += double(frame.pixelSamples);
+      intervals.push_back(frame.submitSeconds - frames[i - 1].submitSeconds);
+      ++timing.stillFrames;
+    }
+    if (!frame.preview && frame.shown) {
       overheads.push_back(frame.deviceSeconds - frame.traceSeconds);
       displays.push_back(frame.displaySeconds);
       blits.push_back(frame.blitSeconds);
       uis.push_back(frame.deviceSeconds - frame.traceSeconds - frame.displaySeconds - frame.blitSeconds);
-      intervals.push_back(frame.submitSeconds - frames[i - 1].submitSeconds);
+      ++timing.shownStillFrames;
     }
     if (!frame.preview && frame.traceExtent == report.fullExtent && frame.spp >= spp) {
       timing.stillTo16Seconds = frame.completeSeconds - stillStart;
@@ -188,6 +193,8 @@ int benchView(const ViewBenchOptions& o) {
                        {"still_to_spp_s", t.stillTo16Seconds},
                        {"still_frame_ms", 1e3 * t.stillFrameSeconds},
                        {"overhead_ms", 1e3 * t.overheadSeconds},
+                       {"still_frames", t.stillFrames},
+                       {"shown_still_frames", t.shownStillFrames},
                        {"ns_per_pixel_sample", 1e9 * t.secondsPerPixelSample}});
     }
     const nlohmann::ordered_json report = {{"benchmark", "view"}, {"scene", scene.name},   {"backend", backend},
@@ -213,11 +220,14 @@ int benchView(const ViewBenchOptions& o) {
                 stillFrame, 1e9 * t.secondsPerPixelSample);
   }
   for (const ViewTiming& t : timings) {
-    std::printf("%ux%u still frames, device ms: display pass %.1f, blit %.1f, UI %.1f\n", t.size.width,
-                t.size.height, 1e3 * t.displaySeconds, 1e3 * t.blitSeconds, 1e3 * t.uiSeconds);
+    std::printf("%ux%u still frames: %u, %u of them shown; shown frames, device ms: display pass %.1f, blit %.1f, "
+                "UI %.1f\n",
+                t.size.width, t.size.height, t.stillFrames, t.shownStillFrames, 1e3 * t.displaySeconds,
+                1e3 * t.blitSeconds, 1e3 * t.uiSeconds);
   }
-  std::printf("still ms/frame (other): interval between still frames, and the device time per frame that is not\n"
-              "tracing (display pass, blit, UI). First frame > 0.5 s: the shader cache was cold.\n");
+  std::printf("still ms/frame (other): interval between still frames, and the device time per shown frame that\n"
+              "is not tracing (display pass, blit, UI); between shown frames the viewer only traces. First frame\n"
+              "> 0.5 s: the shader cache was cold.\n");
   return kExitOk;
 }
 

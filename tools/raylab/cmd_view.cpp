@@ -36,6 +36,7 @@ struct ViewCommandOptions {
   bool noAntialiasing = false;
   bool noPanel = false;
   std::optional<std::uint32_t> frames;
+  bool exitAtLimit = false;
 };
 
 void view(ViewCommandOptions command) {
@@ -55,7 +56,11 @@ void view(ViewCommandOptions command) {
     throw Error("raylab view: --capture-window needs --frames (it captures the last frame)", kExitUsage);
   }
   if (frames && *frames == 0) throw Error("raylab view: --frames must be at least 1", kExitUsage);
+  if (command.exitAtLimit && (frames || o.sppLimit == 0)) {
+    throw Error("raylab view: --exit-at-limit needs a --spp-limit above 0 and no --frames", kExitUsage);
+  }
   o.frames = frames;
+  o.exitWhenConverged = command.exitAtLimit;
   o.targetMs = command.targetMs;
   o.toneMap = parseToneMap(command.toneMap);
   o.render.jitter = !command.noAntialiasing;
@@ -129,6 +134,9 @@ void addViewCommand(CLI::App& raylab) {
            kMaxSamplesPerPixel);
   addToneOptions(command, o->viewer.exposure, o->toneMap, "the display");
   addFlag(command, "--no-panel", o->noPanel, "start with the panel hidden (F1 shows it)");
+  addFlag(command, "--exit-at-limit", o->exitAtLimit,
+          "exit once the still image has --spp-limit samples per pixel (after the script's last event), saving "
+          "--screenshot: the interactive schedule, budgeted frames and all, for scripts and tests");
   addOptionalCount(command, "--frames", o->frames,
                    "run N frames and exit; each frame without a change adds one full pass", 0, UINT32_MAX);
   addText(command, "--compare", o->compare, "MATERIAL=MODEL[:k=v,...]",
