@@ -217,7 +217,12 @@ gpu::MaterialRecord defaultRecord(std::uint32_t model) {
   const ParamInfo* diffuse = findRole(info, "diffuse");
   record.diffuseParam = diffuse != nullptr && diffuse->rgb ? diffuse->slot : gpu::kNoParam;
   record.delta = kDelta.defaultValue;
-  record.baseColorTexture = -1;
+  record.textures = -1;
+  const ParamInfo* roughness = findRole(info, "roughness");
+  const ParamInfo* metallic = findRole(info, "metallic");
+  const std::uint32_t roughnessSlot = roughness != nullptr && !roughness->rgb ? roughness->slot : gpu::kNoTextureParam;
+  const std::uint32_t metallicSlot = metallic != nullptr && !metallic->rgb ? metallic->slot : gpu::kNoTextureParam;
+  record.textureParams = roughnessSlot | (metallicSlot << 8u);
   return record;
 }
 

@@ -392,22 +392,43 @@ std::vector<PrimitiveMesh> convertMesh(Document& document, int meshIndex) {
           normalAccessor, {"NORMAL of " + where, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false}));
       expectCount(mesh.normals.size(), "NORMAL");
     }
-    if (const int uvAccessor = attribute("TEXCOORD_0"); uvAccessor >= 0) {
-      const AccessorUse uvUse{"TEXCOORD_0 of " + where,
+    const auto readUvs = [&](const char* name) {
+      std::vector<glm::vec2> out;
+      const int uvAccessor = attribute(name);
+      if (uvAccessor < 0) return out;
+      const AccessorUse uvUse{std::string(name) + " of " + where,
                               TINYGLTF_TYPE_VEC2,
                               {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
                               true};
       const std::vector<double> uvs = reader.read(uvAccessor, uvUse);
-      mesh.uvs.resize(uvs.size() / 2);
-      for (std::size_t i = 0; i < mesh.uvs.size(); ++i) {
-        mesh.uvs[i] = glm::vec2(float(uvs[2 * i]), float(uvs[2 * i + 1]));
-        if (!std::isfinite(mesh.uvs[i].x) || !std::isfinite(mesh.uvs[i].y)) {
+      out.resize(uvs.size() / 2);
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        out[i] = glm::vec2(float(uvs[2 * i]), float(uvs[2 * i + 1]));
+        if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y)) {
           document.fail("accessor " + std::to_string(uvAccessor) + " (" + uvUse.role + "): texture coordinate " +
                         std::to_string(i) + " is not finite");
         }
       }
-      expectCount(mesh.uvs.size(), "TEXCOORD_0");
+      expectCount(out.size(), name);
+      return out;
+    };
+    mesh.uvs = readUvs("TEXCOORD_0");
+    mesh.uvs1 = readUvs("TEXCOORD_1");
+    if (const int tangentAccessor = attribute("TANGENT"); tangentAccessor >= 0) {
+      const AccessorUse tangentUse{"TANGENT of " + where, TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false};
+      const std::vector<double> values = reader.read(tangentAccessor, tangentUse);
+      mesh.tangents.resize(values.size() / 4);
+      for (std::size_t i = 0; i < mesh.tangents.size(); ++i) {
+        const glm::dvec4 t(values[4 * i], values[4 * i + 1], values[4 * i + 2], values[4 * i + 3]);
+        if (!std::isfinite(t.x + t.y + t.z + t.w)) {
+          document.fail("accessor " + std::to_string(tangentAccessor) + " (" + tangentUse.role + "): tangent " +
+                        std::to_string(i) + " is not finite");
+        }
+        // w is +1 or -1 (glTF 3.7.2.1); its sign is what the bitangent needs.
+        mesh.tangents[i] = glm::vec4(glm::vec3(t), t.w < 0.0 ? -1.0f : 1.0f);
+      }
+      expectCount(mesh.tangents.size(), "TANGENT");
     }
 
     std::vector<std::uint32_t> vertices;

@@ -13,6 +13,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scene/camera_pivot.h"
+#include "scene/tangents.h"
 #include "gltf_read/gltf_document.h"
 #include "gltf_read/gltf_environment.h"
 #include "gltf_read/gltf_files.h"
@@ -334,6 +335,35 @@ class SceneBuilder {
     scene_.spheres.push_back({glm::vec3(world[3]), radius->get<float>() * scale.x, material});
   }
 
+  // The vertex data a material's textures read: the UV sets they use (a missing set is reported: the texture is
+  // then read at (0, 0)), and tangents for a normal map, generated from its UV set when the file has none
+  // (scene/tangents.h). Data no texture reads is dropped rather than uploaded.
+  void prepareForTextures(Mesh& mesh, const gpu::MaterialRecord& record) {
+    bool readsSet[2] = {false, false};
+    const gpu::TextureRef* normalMap = nullptr;
+    if (record.textures >= 0) {
+      const gpu::MaterialTextures& uses = scene_.materialTextures[std::size_t(record.textures)];
+      for (const gpu::TextureRef& ref : uses.refs) {
+        if (ref.texture >= 0) readsSet[ref.texCoord] = true;
+      }
+      if (uses.refs[gpu::kTextureNormal].texture >= 0) normalMap = &uses.refs[gpu::kTextureNormal];
+    }
+    const std::vector<glm::vec2>* sets[2] = {&mesh.uvs, &mesh.uvs1};
+    for (int set = 0; set < 2; ++set) {
+      if (readsSet[set] && sets[set]->empty()) {
+        document_.warnOnce("no uvs " + std::to_string(set),
+                           mesh.name + ": a textured material reads TEXCOORD_" + std::to_string(set) +
+                               ", which the mesh does not have (the texture is read at (0, 0))");
+      }
+    }
+    if (!readsSet[1]) mesh.uvs1.clear();
+    if (normalMap == nullptr) {
+      mesh.tangents.clear();
+    } else if (mesh.tangents.empty() && !sets[normalMap->texCoord]->empty()) {
+      mesh.tangents = generateTangents(mesh, *sets[normalMap->texCoord]);
+    }
+  }
+
   void addMeshInstances(int meshIndex, const glm::mat4& world, const std::string& where) {
     auto cached = meshes_.find(meshIndex);
     if (cached == meshes_.end()) {
@@ -341,11 +371,7 @@ class SceneBuilder {
       for (gltf::PrimitiveMesh& primitive : gltf::convertMesh(document_, meshIndex)) {
         const std::uint32_t material =
             primitive.material >= 0 ? std::uint32_t(primitive.material) : defaultMaterial_.index(scene_);
-        const gpu::MaterialRecord& record = scene_.materials[material].record;
-        if (record.baseColorTexture >= 0 && primitive.mesh.uvs.empty()) {
-          document_.warnOnce("no uvs", primitive.mesh.name + ": a textured material on a mesh without TEXCOORD_0 "
-                                                             "(the texture is sampled at (0, 0))");
-        }
+        prepareForTextures(primitive.mesh, scene_.materials[material].record);
         parts.emplace_back(std::uint32_t(scene_.meshes.size()), material);
         scene_.meshes.push_back(std::move(primitive.mesh));
       }

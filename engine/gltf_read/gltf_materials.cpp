@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
+#include <limits>
 #include <map>
 
 #include <stb_image.h>
@@ -105,6 +107,8 @@ class TextureConverter {
       const std::string samplerName = document_.label + ": " + describe("sampler", gltfTexture.sampler, sampler.name);
       texture.wrapS = wrapMode(sampler.wrapS, samplerName + " wrapS");
       texture.wrapT = wrapMode(sampler.wrapT, samplerName + " wrapT");
+      // Without mipmaps (textures.glsl) the minification filter has nothing to choose between.
+      texture.nearest = sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
     }
     if (!gltfTexture.name.empty()) texture.name = gltfTexture.name;
     scene_.textures.push_back(std::move(texture));
@@ -160,6 +164,53 @@ class TextureConverter {
   std::map<int, int> cache_;
   std::uint64_t decodedTexels_ = 0;
 };
+
+// KHR_texture_transform: uv' = T R S (u, v, 1), the extension's offset, rotation and scale matrices; their
+// product's rows are (cos sx, sin sy, ox) and (-sin sx, cos sy, oy).
+void applyTextureTransform(gpu::TextureRef& ref, const json& transform, const std::string& where) {
+  // Every value and the matrix built from them must be finite as floats (the kernel's).
+  const auto finite = [](double v) { return std::abs(v) <= double(std::numeric_limits<float>::max()); };
+  const auto pair = [&](const char* key, glm::dvec2 fallback) {
+    const json* value = findPath(transform, {key});
+    if (value == nullptr) return fallback;
+    const glm::dvec2 v((*value)[0].get<double>(), (*value)[1].get<double>());
+    if (!finite(v.x) || !finite(v.y)) throw Error(where + ".KHR_texture_transform." + key + " is not finite");
+    return v;
+  };
+  const glm::dvec2 offset = pair("offset", glm::dvec2(0.0));
+  const glm::dvec2 scale = pair("scale", glm::dvec2(1.0));
+  double rotation = 0.0;
+  if (const json* value = findPath(transform, {"rotation"})) rotation = value->get<double>();
+  if (!finite(rotation)) throw Error(where + ".KHR_texture_transform.rotation is not finite");
+  const double c = std::cos(rotation), s = std::sin(rotation);
+  ref.row0 = glm::vec3(float(c * scale.x), float(s * scale.y), float(offset.x));
+  ref.row1 = glm::vec3(float(-s * scale.x), float(c * scale.y), float(offset.y));
+  if (const json* texCoord = findPath(transform, {"texCoord"})) ref.texCoord = texCoord->get<std::uint32_t>();
+}
+
+// A glTF textureInfo object (baseColorTexture, normalTexture, ...) with its KHR_texture_transform as one use of
+// the scene texture `convert` gives for its index.
+gpu::TextureRef convertTextureUse(const json& info, const std::string& where, Document& document,
+                                  const std::function<int(int)>& convert) {
+  gpu::TextureRef ref = noTextureRef();
+  const int index = info.at("index").get<int>();
+  if (const json* texCoord = findPath(info, {"texCoord"})) ref.texCoord = texCoord->get<std::uint32_t>();
+  if (const json* scale = findPath(info, {"scale"})) {
+    // Checked as a double: converting one beyond float's range is undefined behaviour.
+    const double value = scale->get<double>();
+    if (!(std::abs(value) <= double(std::numeric_limits<float>::max()))) throw Error(where + ".scale is not finite");
+    ref.scale = float(value);
+  }
+  if (const json* transform = findPath(info, {"extensions", "KHR_texture_transform"})) {
+    applyTextureTransform(ref, *transform, where);
+  }
+  if (ref.texCoord > 1) {
+    document.ignore("textures on TEXCOORD_2 and above");
+    return noTextureRef();
+  }
+  ref.texture = convert(index);
+  return ref;
+}
 
 // A base-colour texture multiplies the model's diffuse colour (MaterialRecord::diffuseParam).
 bool hasDiffuseColour(std::uint32_t model) { return findRole(modelInfo(model), "diffuse") != nullptr; }
@@ -285,17 +336,30 @@ void convertMaterials(Document& document, Scene& scene) {
     gpu::MaterialRecord record = mapMetallicRoughness(input, where);
     if (const json* raylab = findPath(materialJson, {"extras", "raylab"})) applyRaylabMaterial(record, *raylab, where, &document);
 
-    if (pbr.baseColorTexture.index >= 0) {
-      if (pbr.baseColorTexture.texCoord != 0) {
-        document.ignore("base-colour textures on TEXCOORD_1 and above");
-      } else if (hasDiffuseColour(record.model)) {
-        record.baseColorTexture =
-            textures.convert(pbr.baseColorTexture.index, describe("material", int(i), material.name));
+    // The textures (glTF 3.9.2-3.9.3), each use with its UV set and transform; an occlusion texture is checked
+    // and not used: the path integrator computes occlusion (docs/gltf.md).
+    const std::string materialName = describe("material", int(i), material.name);
+    const auto use = [&](std::initializer_list<const char*> path) { return findPath(materialJson, path); };
+    const auto convertUse = [&](const json* info, const std::string& property) {
+      return convertTextureUse(*info, where + ": " + property, document,
+                               [&](int index) { return textures.convert(index, materialName + " " + property); });
+    };
+    gpu::MaterialTextures uses = noMaterialTextures();
+    if (const json* info = use({"pbrMetallicRoughness", "baseColorTexture"}); info && hasDiffuseColour(record.model)) {
+      uses.refs[gpu::kTextureBaseColor] = convertUse(info, "baseColorTexture");
+    }
+    if (const json* info = use({"pbrMetallicRoughness", "metallicRoughnessTexture"})) {
+      if (record.textureParams != (gpu::kNoTextureParam | (gpu::kNoTextureParam << 8u))) {
+        uses.refs[gpu::kTextureMetallicRoughness] = convertUse(info, "metallicRoughnessTexture");
       }
     }
-    if (pbr.metallicRoughnessTexture.index >= 0 || material.normalTexture.index >= 0 ||
-        material.occlusionTexture.index >= 0 || material.emissiveTexture.index >= 0) {
-      document.ignore("textures other than base colour");
+    if (const json* info = use({"normalTexture"})) uses.refs[gpu::kTextureNormal] = convertUse(info, "normalTexture");
+    if (const json* info = use({"occlusionTexture"})) convertUse(info, "occlusionTexture");
+    const bool textured = std::any_of(std::begin(uses.refs), std::end(uses.refs),
+                                      [](const gpu::TextureRef& ref) { return ref.texture >= 0; });
+    if (textured) {
+      record.textures = int(scene.materialTextures.size());
+      scene.materialTextures.push_back(uses);
     }
     record.emission = emittedRadiance(material, materialJson, document.label + ": " +
                                                                   describe("material", int(i), material.name));

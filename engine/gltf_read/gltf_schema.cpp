@@ -53,9 +53,13 @@ Property required(Property property) {
 }
 
 const Shape kAnyObject{};
-const Shape kTextureInfo{{required(index("index")), index("texCoord")}};
-const Shape kNormalTextureInfo{{required(index("index")), index("texCoord"), number("scale")}};
-const Shape kOcclusionTextureInfo{{required(index("index")), index("texCoord"), number("strength")}};
+const Shape kTextureTransform{{numbers("offset", 2), number("rotation"), numbers("scale", 2), index("texCoord")}};
+const Shape kTextureInfo{{required(index("index")), index("texCoord")},
+                         {object("KHR_texture_transform", kTextureTransform)}};
+const Shape kNormalTextureInfo{{required(index("index")), index("texCoord"), number("scale")},
+                               {object("KHR_texture_transform", kTextureTransform)}};
+const Shape kOcclusionTextureInfo{{required(index("index")), index("texCoord"), number("strength")},
+                                  {object("KHR_texture_transform", kTextureTransform)}};
 const Shape kPbr{{numbers("baseColorFactor", 4), object("baseColorTexture", kTextureInfo), number("metallicFactor"),
                   number("roughnessFactor"), object("metallicRoughnessTexture", kTextureInfo)}};
 const Shape kIor{{number("ior")}};

@@ -1,5 +1,6 @@
 #include "render/gpu_scene.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -28,6 +29,8 @@ struct PackedMeshes {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;
   std::vector<glm::vec2> uvs;
+  std::vector<glm::vec2> uvs1;      // only when some mesh has TEXCOORD_1 for its textures
+  std::vector<glm::vec4> tangents;  // only when some mesh has a normal map
   std::vector<std::uint32_t> indices;
   std::vector<std::uint32_t> firstVertex;
   std::vector<std::uint32_t> firstIndex;
@@ -36,6 +39,9 @@ struct PackedMeshes {
 
 PackedMeshes packMeshes(const Scene& scene) {
   PackedMeshes packed;
+  const bool anyUvs1 = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.uvs1.empty(); });
+  const bool anyTangents =
+      std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.tangents.empty(); });
   for (const Mesh& mesh : scene.meshes) {
     const std::size_t vertexCount = mesh.positions.size();
     if (!mesh.normals.empty() && mesh.normals.size() != vertexCount) {
@@ -44,6 +50,14 @@ PackedMeshes packMeshes(const Scene& scene) {
     }
     if (!mesh.uvs.empty() && mesh.uvs.size() != vertexCount) {
       throw Error("mesh '" + mesh.name + "': " + std::to_string(mesh.uvs.size()) + " UVs for " +
+                  std::to_string(vertexCount) + " positions");
+    }
+    if (!mesh.uvs1.empty() && mesh.uvs1.size() != vertexCount) {
+      throw Error("mesh '" + mesh.name + "': " + std::to_string(mesh.uvs1.size()) + " TEXCOORD_1 UVs for " +
+                  std::to_string(vertexCount) + " positions");
+    }
+    if (!mesh.tangents.empty() && mesh.tangents.size() != vertexCount) {
+      throw Error("mesh '" + mesh.name + "': " + std::to_string(mesh.tangents.size()) + " tangents for " +
                   std::to_string(vertexCount) + " positions");
     }
     if (mesh.indices.size() % 3 != 0) throw Error("mesh '" + mesh.name + "': index count is not a multiple of 3");
@@ -58,6 +72,8 @@ PackedMeshes packMeshes(const Scene& scene) {
     std::uint32_t flags = 0;
     if (!mesh.normals.empty()) flags |= gpu::kVertexHasNormals;
     if (!mesh.uvs.empty()) flags |= gpu::kVertexHasUvs;
+    if (!mesh.uvs1.empty()) flags |= gpu::kVertexHasUvs1;
+    if (!mesh.tangents.empty()) flags |= gpu::kVertexHasTangents;
     packed.vertexFlags.push_back(flags);
     packed.positions.insert(packed.positions.end(), mesh.positions.begin(), mesh.positions.end());
     // Absent attributes still get slots, so one index addresses all three arrays.
@@ -65,6 +81,14 @@ PackedMeshes packMeshes(const Scene& scene) {
     else packed.normals.insert(packed.normals.end(), mesh.normals.begin(), mesh.normals.end());
     if (mesh.uvs.empty()) packed.uvs.resize(packed.positions.size(), glm::vec2(0.0f));
     else packed.uvs.insert(packed.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+    if (anyUvs1) {
+      if (mesh.uvs1.empty()) packed.uvs1.resize(packed.positions.size(), glm::vec2(0.0f));
+      else packed.uvs1.insert(packed.uvs1.end(), mesh.uvs1.begin(), mesh.uvs1.end());
+    }
+    if (anyTangents) {
+      if (mesh.tangents.empty()) packed.tangents.resize(packed.positions.size(), glm::vec4(0.0f));
+      else packed.tangents.insert(packed.tangents.end(), mesh.tangents.begin(), mesh.tangents.end());
+    }
     packed.indices.insert(packed.indices.end(), mesh.indices.begin(), mesh.indices.end());
   }
   return packed;
@@ -79,7 +103,7 @@ void packTextures(const Scene& scene, std::vector<gpu::TextureRecord>& records, 
                   std::to_string(texture.width) + "x" + std::to_string(texture.height) + " RGBA8 texels");
     }
     records.push_back({static_cast<std::uint32_t>(texels.size()), texture.width, texture.height,
-                       texture.wrapS | (texture.wrapT << 2)});
+                       texture.wrapS | (texture.wrapT << 2) | (texture.nearest ? gpu::kFilterNearest : 0u)});
     for (std::size_t i = 0; i < count; ++i) {
       const std::uint8_t* t = &texture.rgba[i * 4];
       texels.push_back(std::uint32_t(t[0]) | std::uint32_t(t[1]) << 8 | std::uint32_t(t[2]) << 16 |
@@ -155,10 +179,18 @@ GpuScene uploadScene(const Device& device, const Scene& scene, bool spatialOrder
     if (sphere.material >= scene.materials.size()) throw Error("a sphere refers to a material that does not exist");
   }
   for (const Material& material : scene.materials) {
-    const int texture = material.record.baseColorTexture;
-    if (texture >= 0 && static_cast<std::size_t>(texture) >= scene.textures.size()) {
-      throw Error("material '" + material.name + "' refers to texture " + std::to_string(texture) +
+    const int textures = material.record.textures;
+    if (textures >= 0 && static_cast<std::size_t>(textures) >= scene.materialTextures.size()) {
+      throw Error("material '" + material.name + "' refers to texture set " + std::to_string(textures) +
                   ", which does not exist");
+    }
+  }
+  for (const gpu::MaterialTextures& uses : scene.materialTextures) {
+    for (const gpu::TextureRef& ref : uses.refs) {
+      if (ref.texture >= 0 && static_cast<std::size_t>(ref.texture) >= scene.textures.size()) {
+        throw Error("a material refers to texture " + std::to_string(ref.texture) + ", which does not exist");
+      }
+      if (ref.texCoord > 1) throw Error("a material reads TEXCOORD_" + std::to_string(ref.texCoord) + " (0 or 1)");
     }
   }
 
@@ -210,6 +242,8 @@ void fillGpuScene(const Device& device, const Scene& original, bool spatialOrder
                                                        "positions");
   gpuScene.normals = createBufferWithData<glm::vec3>(device, packed.normals, kStorage, "normals");
   gpuScene.uvs = createBufferWithData<glm::vec2>(device, packed.uvs, kStorage, "uvs");
+  gpuScene.uvs1 = createBufferWithData<glm::vec2>(device, packed.uvs1, kStorage, "uvs1");
+  gpuScene.tangents = createBufferWithData<glm::vec4>(device, packed.tangents, kStorage, "tangents");
   gpuScene.indices = createBufferWithData<std::uint32_t>(device, packed.indices, kStorage | kAsInputUsage,
                                                          "indices");
 
@@ -311,6 +345,8 @@ void fillGpuScene(const Device& device, const Scene& original, bool spatialOrder
   packTextures(original, textureRecords, texels);
   gpuScene.textures = createBufferWithData<gpu::TextureRecord>(device, textureRecords, kStorage, "textures");
   gpuScene.texels = createBufferWithData<std::uint32_t>(device, texels, kStorage, "texels");
+  gpuScene.materialTextures = createBufferWithData<gpu::MaterialTextures>(device, original.materialTextures, kStorage,
+                                                                          "material textures");
   const std::vector<float> environment = packEnvironment(original.environment, environmentTables, lights.environmentLight);
   gpuScene.environment = createBufferWithData<float>(device, environment, kStorage, "environment");
   gpuScene.brdfTables = createBrdfTables(device, gpuScene.measuredFiles);
@@ -334,7 +370,7 @@ void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
   for (Buffer* buffer : {&gpuScene.instances, &gpuScene.positions, &gpuScene.normals, &gpuScene.uvs,
                          &gpuScene.indices, &gpuScene.spheres, &gpuScene.sphereAabbs, &gpuScene.materials,
                          &gpuScene.lights, &gpuScene.textures, &gpuScene.texels, &gpuScene.environment,
-                         &gpuScene.brdfTables}) {
+                         &gpuScene.brdfTables, &gpuScene.uvs1, &gpuScene.tangents, &gpuScene.materialTextures}) {
     destroyBuffer(device, *buffer);
   }
   gpuScene = {};
@@ -368,6 +404,9 @@ std::vector<DescriptorBinding> sceneBindings() {
       {gpu::kBindingLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingTextures, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingTexels, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingMaterialTextures, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingUvs1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {gpu::kBindingTangents, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingEnvironment, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {gpu::kBindingBrdfTables, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   };
@@ -385,6 +424,9 @@ void writeSceneDescriptors(const Device& device, VkDescriptorSet set, const GpuS
   writeStorageBuffer(device, set, gpu::kBindingLights, gpuScene.lights.handle);
   writeStorageBuffer(device, set, gpu::kBindingTextures, gpuScene.textures.handle);
   writeStorageBuffer(device, set, gpu::kBindingTexels, gpuScene.texels.handle);
+  writeStorageBuffer(device, set, gpu::kBindingMaterialTextures, gpuScene.materialTextures.handle);
+  writeStorageBuffer(device, set, gpu::kBindingUvs1, gpuScene.uvs1.handle);
+  writeStorageBuffer(device, set, gpu::kBindingTangents, gpuScene.tangents.handle);
   writeStorageBuffer(device, set, gpu::kBindingEnvironment, gpuScene.environment.handle);
   writeStorageBuffer(device, set, gpu::kBindingBrdfTables, gpuScene.brdfTables.handle);
 }

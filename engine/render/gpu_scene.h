@@ -22,13 +22,16 @@ struct GpuScene {
   Buffer positions;
   Buffer normals;
   Buffer uvs;
+  Buffer uvs1;      // TEXCOORD_1, when a material reads it
+  Buffer tangents;  // vec4 per vertex, when a material has a normal map
   Buffer indices;
   Buffer spheres;
   Buffer sphereAabbs;
   Buffer materials;
   Buffer lights;    // LightRecord[]: every light, with the light-selection distribution (light_records.h)
   Buffer textures;  // TextureRecord[]
-  Buffer texels;    // RGBA8 sRGB texels of every texture
+  Buffer texels;    // RGBA8 texels of every texture
+  Buffer materialTextures;  // MaterialTextures[]
   Buffer environment;  // EnvironmentHeader, the environment image and its sampling tables
   Buffer brdfTables;   // the BRDF library's tables (brdf_tables/brdf_tables.h)
   std::vector<std::uint32_t> measuredFiles;  // the measured files in brdfTables, in block order

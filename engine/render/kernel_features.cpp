@@ -14,7 +14,7 @@ KernelFeatures featuresOf(const Scene& scene) {
     f.models |= 1u << material.record.model;
     if (isDeltaOnly(material.record.model)) f.features |= gpu::kFeatureDeltaBsdf;
     if (material.record.delta > 0.0f) f.features |= gpu::kFeatureMirror;
-    if (material.record.baseColorTexture >= 0) f.features |= gpu::kFeatureTextures;
+    if (material.record.textures >= 0) f.features |= gpu::kFeatureTextures;
   }
   if (scene.environment.hasImage()) f.features |= gpu::kFeatureEnvironment;
   f.lightKinds = lightKindsOf(scene);

@@ -11,6 +11,27 @@ gpu::MaterialRecord lambertMaterial(glm::vec3 rhoD, float delta) {
   return record;
 }
 
+gpu::TextureRef noTextureRef() {
+  gpu::TextureRef ref{};
+  ref.texture = -1;
+  ref.scale = 1.0f;
+  ref.row0 = glm::vec3(1.0f, 0.0f, 0.0f);
+  ref.row1 = glm::vec3(0.0f, 1.0f, 0.0f);
+  return ref;
+}
+
+gpu::TextureRef textureRef(int texture) {
+  gpu::TextureRef ref = noTextureRef();
+  ref.texture = texture;
+  return ref;
+}
+
+gpu::MaterialTextures noMaterialTextures() {
+  gpu::MaterialTextures textures{};
+  for (gpu::TextureRef& ref : textures.refs) ref = noTextureRef();
+  return textures;
+}
+
 PunctualLight pointLight(glm::vec3 position, glm::vec3 intensity) {
   PunctualLight light;
   light.type = gpu::kLightPoint;

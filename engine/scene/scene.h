@@ -30,7 +30,9 @@ struct Mesh {
   std::string name;
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;
-  std::vector<glm::vec2> uvs;
+  std::vector<glm::vec2> uvs;          // TEXCOORD_0
+  std::vector<glm::vec2> uvs1;         // TEXCOORD_1, when a material reads it
+  std::vector<glm::vec4> tangents;     // xyz and the bitangent's sign w, when a normal map needs them
   std::vector<std::uint32_t> indices;  // three per triangle
 };
 
@@ -52,7 +54,8 @@ struct Material {
   gpu::MaterialRecord record;
 };
 
-// An RGBA8 image with sRGB-encoded colour, rows from the top (a glTF base-colour texture).
+// An RGBA8 image as its file stores it, rows from the top; each use says whether it is sRGB colour or data
+// (gpu::TextureRef, gpu::MaterialTextures).
 struct Texture {
   std::string name;
   std::uint32_t width = 0;
@@ -60,6 +63,7 @@ struct Texture {
   std::vector<std::uint8_t> rgba;  // 4 bytes per texel
   std::uint32_t wrapS = gpu::kWrapRepeat;
   std::uint32_t wrapT = gpu::kWrapRepeat;
+  bool nearest = false;            // glTF magFilter NEAREST: no bilinear filtering
 };
 
 // A punctual light as a scene describes it (KHR_lights_punctual, or the headlight); the device sees it as one
@@ -85,7 +89,8 @@ struct Scene {
   std::vector<Mesh> meshes;
   std::vector<MeshInstance> instances;
   std::vector<Sphere> spheres;
-  std::vector<Material> materials;   // MaterialRecord.baseColorTexture indexes `textures`
+  std::vector<Material> materials;   // MaterialRecord.textures indexes `materialTextures`
+  std::vector<gpu::MaterialTextures> materialTextures;  // TextureRef.texture indexes `textures`
   std::vector<Texture> textures;
   std::vector<Light> lights;
   glm::vec3 background{0.0f};  // radiance of rays that leave the scene, when there is no environment image
@@ -93,6 +98,12 @@ struct Scene {
 };
 
 gpu::MaterialRecord lambertMaterial(glm::vec3 rhoD, float delta = 0.0f);
+
+// A use of no texture, and a use of `texture` on TEXCOORD_0 without a transform.
+gpu::TextureRef noTextureRef();
+gpu::TextureRef textureRef(int texture);
+// A MaterialTextures record with no texture in any use.
+gpu::MaterialTextures noMaterialTextures();
 
 // True when some mesh instance or sphere has a material with emission > 0 (the path integrator's emitters).
 bool emits(const Scene& scene, std::uint32_t material);

@@ -18,6 +18,24 @@ namespace raylab {
 
 namespace {
 
+// The textures the material reads: the use, the image's name and size, its UV set, and its transform or scale.
+void drawMaterialTextures(const Scene& scene, const gpu::MaterialRecord& record) {
+  if (record.textures < 0 || std::size_t(record.textures) >= scene.materialTextures.size()) return;
+  static const char* const kUses[gpu::kTextureUses] = {"base colour", "metallic-roughness", "normal", "emissive"};
+  const gpu::MaterialTextures& uses = scene.materialTextures[std::size_t(record.textures)];
+  for (std::uint32_t use = 0; use < gpu::kTextureUses; ++use) {
+    const gpu::TextureRef& ref = uses.refs[use];
+    if (ref.texture < 0 || std::size_t(ref.texture) >= scene.textures.size()) continue;
+    const Texture& texture = scene.textures[std::size_t(ref.texture)];
+    const bool transformed = ref.row0 != glm::vec3(1.0f, 0.0f, 0.0f) || ref.row1 != glm::vec3(0.0f, 1.0f, 0.0f);
+    std::string details = std::to_string(texture.width) + "x" + std::to_string(texture.height) + ", TEXCOORD_" +
+                          std::to_string(ref.texCoord);
+    if (transformed) details += ", transformed";
+    if (use == gpu::kTextureNormal && ref.scale != 1.0f) details += ", scale " + formatParamValue(glm::vec3(ref.scale), false);
+    ImGui::TextWrapped("%s texture: %s (%s)", kUses[use], texture.name.c_str(), details.c_str());
+  }
+}
+
 constexpr std::size_t kListRows = 6;  // list boxes scroll beyond this many names
 
 float listHeight(float rows) {
@@ -148,6 +166,7 @@ PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selec
     }
     ImGui::PushID("material");
     edits.materials |= drawMaterialEditor(scene.materials[selection.material].record);
+    drawMaterialTextures(scene, scene.materials[selection.material].record);
     ImGui::PopID();
   }
   if (materialSections) materialSections();

@@ -79,7 +79,7 @@ void switchModel(gpu::MaterialRecord& record, std::uint32_t model) {
   const Appearance a = appearanceOf(record);
   gpu::MaterialRecord next = defaultRecord(model);
   next.delta = record.delta;
-  next.baseColorTexture = record.baseColorTexture;
+  next.textures = record.textures;
   next.emission = record.emission;
   if (a.diffuse) carry(next, "diffuse", *a.diffuse);
   if (a.specular) carry(next, "specular", *a.specular);

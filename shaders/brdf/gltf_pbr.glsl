@@ -4,8 +4,8 @@
 // | parameter  | range  | default | kind        | meaning                                         |
 // |------------|--------|---------|-------------|-------------------------------------------------|
 // | base_color | [0, 1] | 0.8     | rgb diffuse | base colour: diffuse albedo, or a metal's F0    |
-// | metallic   | [0, 1] | 0       |             | 0 dielectric, 1 metal, a mix between            |
-// | roughness  | [0, 1] | 0.5     |             | perceptual roughness; alpha = roughness^2       |
+// | metallic   | [0, 1] | 0       | metallic    | 0 dielectric, 1 metal, a mix between            |
+// | roughness  | [0, 1] | 0.5     | roughness   | perceptual roughness; alpha = roughness^2       |
 // | ior        | [1, 3] | 1.5     | eta         | the dielectric's index of refraction (KHR_materials_ior) |
 // The Khronos Group, "glTF 2.0 Specification", Appendix B (as the glTF Sample Renderer evaluates it):
 //   alpha = max(roughness^2, 1e-3),  f0 = ((ior - 1)/(ior + 1))^2,  VH = |wo.H|,

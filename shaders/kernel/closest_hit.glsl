@@ -65,7 +65,7 @@ void glassHit(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
 }
 
 void closestHit(Hit hit, inout Payload p) {
-  const Surface s = surfaceAt(hit);
+  Surface s = surfaceAt(hit);
   MaterialRecord material = materials[s.material];
   const vec3 wo = -p.path.direction;
   p.done = true;

@@ -10,15 +10,73 @@
 #include "kernel/surface.glsl"
 #include "kernel/textures.glsl"
 
-// The base-colour texture, which multiplies the model's diffuse colour (the parameter of its `diffuse` role).
-void applyTextures(inout MaterialRecord material, Surface s) {
-  if (featureEnabled(kFeatureTextures) && material.baseColorTexture >= 0 && material.diffuseParam != kNoParam) {
-    const vec3 texel = sampleTexture(uint(material.baseColorTexture), s.uv).rgb;
+// A mapped normal makes at least this cosine with the geometric normal.
+const float kMinMappedNormalCos = 0.01;
+
+// glTF 3.9.3, normalTexture: the texel's linear RGB is 2 c - 1 in the frame of the tangent, the bitangent
+// (cross(normal, tangent) times the tangent's w) and the interpolated normal, x and y scaled by `scale`.
+void applyNormalMap(inout Surface s, TextureRef ref) {
+  const vec3 n = s.shadingNormal;
+  vec3 t = s.normalTangent.xyz - dot(s.normalTangent.xyz, n) * n;
+  if (!(dot(t, t) > 0.0)) return;  // no tangent (an analytic sphere, degenerate UVs): the map is not applied
+  t = normalize(t);
+  const vec3 b = s.normalTangent.w < 0.0 ? -cross(n, t) : cross(n, t);
+  vec3 m = sampleTextureRef(ref, s.uv, s.uv1, false).rgb * 2.0 - 1.0;
+  m.xy *= ref.scale;
+  const vec3 mapped = m.x * t + m.y * b + m.z * n;
+  if (!(dot(mapped, mapped) > 1e-12)) return;  // a zero texel has no direction
+  vec3 ns = normalize(mapped);
+  // A normal below the geometric surface (a large scale, a broken map) is tipped back just above it: the
+  // shading normal stays on the side of geometricNormal, as Surface promises.
+  const vec3 ng = s.geometricNormal;
+  const float below = kMinMappedNormalCos - dot(ns, ng);
+  if (below > 0.0) ns = normalize(ns + below * ng);
+  s.shadingNormal = ns;
+  s.normalMapped = true;
+}
+
+// The material's textures (MaterialTextures): the base colour multiplies the model's diffuse colour (the
+// parameter of its `diffuse` role), the metallic-roughness texture's G and B its roughness and metallic
+// parameters (roles `roughness`, `metallic`), and the normal map bends the shading normal. An emissive texture
+// is not read (the loader says so): next event estimation would have to see it too.
+void applyTextures(inout MaterialRecord material, inout Surface s) {
+  if (!featureEnabled(kFeatureTextures) || material.textures < 0) return;
+  const MaterialTextures uses = materialTextures[material.textures];
+  const TextureRef base = uses.refs[kTextureBaseColor];
+  if (base.texture >= 0 && material.diffuseParam != kNoParam) {
+    const vec3 texel = sampleTextureRef(base, s.uv, s.uv1, true).rgb;
     const uint slot = material.diffuseParam;
     material.params[slot] *= texel.r;
     material.params[slot + 1u] *= texel.g;
     material.params[slot + 2u] *= texel.b;
   }
+  const TextureRef metallicRoughness = uses.refs[kTextureMetallicRoughness];
+  if (metallicRoughness.texture >= 0) {
+    const vec4 texel = sampleTextureRef(metallicRoughness, s.uv, s.uv1, false);
+    const uint roughness = material.textureParams & 0xFFu;
+    const uint metallic = (material.textureParams >> 8u) & 0xFFu;
+    if (roughness != kNoTextureParam) material.params[roughness] *= texel.g;
+    if (metallic != kNoTextureParam) material.params[metallic] *= texel.b;
+  }
+  const TextureRef normal = uses.refs[kTextureNormal];
+  if (normal.texture >= 0) applyNormalMap(s, normal);
+}
+
+// A mapped shading normal bent towards ng just enough that the mirror direction of wo about it stays above the
+// geometric surface, by min(0.9 cos, 0.01) of wo's own elevation (the condition of Blender Cycles'
+// ensure_valid_reflection, solved here by bisection on the blend towards ng): a map that tilts the normal
+// away from the viewer otherwise sends reflections into the surface, where they are refused and the
+// surface darkens at grazing angles. ng faces wo.
+vec3 validReflectionNormal(vec3 ns, vec3 ng, vec3 wo) {
+  const float threshold = min(0.9 * dot(ng, wo), 0.01);
+  if (dot(reflect(-wo, ns), ng) >= threshold) return ns;
+  float low = 0.0, high = 1.0;  // the blend at `high` always satisfies it: reflect(-wo, ng).ng = wo.ng
+  for (int i = 0; i < 12; ++i) {
+    const float middle = 0.5 * (low + high);
+    if (dot(reflect(-wo, normalize(mix(ns, ng, middle))), ng) >= threshold) high = middle;
+    else low = middle;
+  }
+  return normalize(mix(ns, ng, high));
 }
 
 // The side of the surface a BSDF is shaded on, and its frame. A one-sided BRDF is shaded on the side the ray
@@ -39,6 +97,7 @@ ShadingSide shadingSide(Surface s, vec3 wo, uint flags) {
   side.ns = flip ? -s.shadingNormal : s.shadingNormal;
   // Interpolated normals can put the viewer on the other side of the shading normal near silhouettes; the true
   // surface cannot.
+  if (s.normalMapped && dot(side.ng, wo) > 0.0) side.ns = validReflectionNormal(side.ns, side.ng, wo);
   if (dot(side.ns, wo) * dot(side.ng, wo) <= 0.0) side.ns = side.ng;
   side.frame = makeShadingFrame(side.ns, s.tangent);
   return side;

@@ -63,7 +63,7 @@ void specularVertex(Surface s, MaterialRecord material, vec3 wo, inout Payload p
 }
 
 void closestHitPath(Hit hit, inout Payload p) {
-  const Surface s = surfaceAt(hit);
+  Surface s = surfaceAt(hit);
   MaterialRecord material = materials[s.material];
   const vec3 wo = -p.path.direction;
   p.done = true;

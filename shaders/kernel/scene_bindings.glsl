@@ -16,6 +16,11 @@ layout(set = 0, binding = kBindingMaterials, scalar) readonly buffer MaterialBuf
 layout(set = 0, binding = kBindingLights, scalar) readonly buffer LightBuffer { LightRecord lights[]; };
 layout(set = 0, binding = kBindingTextures, scalar) readonly buffer TextureBuffer { TextureRecord textures[]; };
 layout(set = 0, binding = kBindingTexels, scalar) readonly buffer TexelBuffer { uint texels[]; };
+layout(set = 0, binding = kBindingMaterialTextures, scalar) readonly buffer MaterialTextureBuffer {
+  MaterialTextures materialTextures[];
+};
+layout(set = 0, binding = kBindingUvs1, scalar) readonly buffer Uv1Buffer { vec2 uvs1[]; };
+layout(set = 0, binding = kBindingTangents, scalar) readonly buffer TangentBuffer { vec4 tangents[]; };
 layout(set = 0, binding = kBindingEnvironment, scalar) readonly buffer EnvironmentBuffer {
   EnvironmentHeader environment;
   float environmentData[];

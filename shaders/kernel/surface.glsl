@@ -11,7 +11,10 @@ struct Surface {
   vec3 geometricNormal;  // world space, unit, outward (counter-clockwise winding; outside of a sphere)
   vec3 shadingNormal;    // world space, unit, on the same side as geometricNormal
   vec3 tangent;          // world space; a hint for the shading frame (may be zero)
-  vec2 uv;
+  vec4 normalTangent;    // a normal map's tangent (world space) and bitangent sign; xyz zero: none
+  vec2 uv;               // TEXCOORD_0
+  vec2 uv1;              // TEXCOORD_1
+  bool normalMapped;     // shadingNormal comes from a normal map (hit_common.glsl, applyNormalMap)
   uint material;
   bool frontFace;        // the ray arrived from the side geometricNormal points to
 };
@@ -35,6 +38,9 @@ Surface sphereSurface(Hit hit, InstanceRecord instance) {
   // Azimuthal direction around the sphere's y axis, so anisotropic lobes run along "latitudes".
   s.tangent = transformVector(hit.objectToWorld, vec3(normal.z, 0.0, -normal.x));
   s.uv = vec2(atan(normal.x, normal.z) * (0.5 / 3.14159265358979) + 0.5, acos(clamp(normal.y, -1.0, 1.0)) / 3.14159265358979);
+  s.uv1 = s.uv;
+  s.normalTangent = vec4(0.0);  // normal maps need a mesh's tangents
+  s.normalMapped = false;
   s.material = sphere.material;
   s.frontFace = dot(hit.objectDirection, normal) < 0.0;
   return s;
@@ -67,7 +73,10 @@ Surface triangleSurface(Hit hit, InstanceRecord instance) {
   }
 
   s.uv = vec2(0.0);
+  s.uv1 = vec2(0.0);
   s.tangent = vec3(0.0);
+  s.normalTangent = vec4(0.0);
+  s.normalMapped = false;
   if ((instance.vertexFlags & kVertexHasUvs) != 0u) {
     const vec2 uv0 = uvs[i0];
     const vec2 duv1 = uvs[i1] - uv0;
@@ -76,6 +85,16 @@ Surface triangleSurface(Hit hit, InstanceRecord instance) {
     // dp/du from the UV parameterisation (pbrt-v4 Triangle::InteractionFromIntersection).
     const float determinant = duv1.x * duv2.y - duv1.y * duv2.x;
     if (abs(determinant) > 1e-20) s.tangent = transformVector(hit.objectToWorld, (duv2.y * e1 - duv1.y * e2) / determinant);
+  }
+  if ((instance.vertexFlags & kVertexHasUvs1) != 0u) {
+    s.uv1 = weights.x * uvs1[i0] + weights.y * uvs1[i1] + weights.z * uvs1[i2];
+  }
+  if ((instance.vertexFlags & kVertexHasTangents) != 0u) {
+    // glTF 3.7.2.1: the bitangent is cross(normal, tangent.xyz) * tangent.w, w the same at every vertex of a
+    // triangle. A mirroring transform (negative determinant) flips the handedness in world space.
+    const vec3 t = weights.x * tangents[i0].xyz + weights.y * tangents[i1].xyz + weights.z * tangents[i2].xyz;
+    const float mirror = determinant(mat3(hit.objectToWorld)) < 0.0 ? -1.0 : 1.0;
+    s.normalTangent = vec4(transformVector(hit.objectToWorld, t), tangents[i0].w * mirror);
   }
   s.material = instance.material;
   return s;

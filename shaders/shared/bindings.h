@@ -17,7 +17,10 @@ RL_CONST uint kBindingSpheres = 6;    // SphereRecord[]
 RL_CONST uint kBindingMaterials = 7;  // MaterialRecord[]
 RL_CONST uint kBindingLights = 8;     // LightRecord[]: every light, with the light-selection cdf
 RL_CONST uint kBindingTextures = 13;  // TextureRecord[]
-RL_CONST uint kBindingTexels = 14;    // uint[] RGBA8 sRGB texels of every texture, concatenated
+RL_CONST uint kBindingTexels = 14;    // uint[] RGBA8 texels of every texture, concatenated
+RL_CONST uint kBindingMaterialTextures = 25;  // MaterialTextures[], indexed by MaterialRecord.textures
+RL_CONST uint kBindingUvs1 = 26;      // vec2[] TEXCOORD_1 (same indexing as positions)
+RL_CONST uint kBindingTangents = 27;  // vec4[] tangents, w the bitangent's sign (same indexing as positions)
 RL_CONST uint kBindingEnvironment = 18;  // EnvironmentHeader, then the image and its sampling tables
 // The BRDF library's tables (shared/brdf_tables.h), bound for every kernel that evaluates BRDFs.
 RL_CONST uint kBindingBrdfTables = 24;

@@ -14,6 +14,8 @@ RL_CONST uint kGeometrySpheres = 1;  // AABB BLAS; primitive i is SphereRecord f
 // InstanceRecord.vertexFlags
 RL_CONST uint kVertexHasNormals = 1;
 RL_CONST uint kVertexHasUvs = 2;
+RL_CONST uint kVertexHasUvs1 = 4;      // TEXCOORD_1 (binding kBindingUvs1)
+RL_CONST uint kVertexHasTangents = 8;  // glTF TANGENT, or generated for a normal map (binding kBindingTangents)
 
 // One per TLAS instance; the TLAS instance custom index is this record's index.
 struct InstanceRecord {
@@ -58,27 +60,58 @@ RL_CONST uint kNoParam = 0xFFFFFFFFu;
 struct MaterialRecord {
   uint model;             // registry id: the order of shaders/brdf/models.cmake
   float delta;            // mirror-reflection weight of the direct integrator
-  int baseColorTexture;   // -1: none; else multiplies the parameter at diffuseParam
+  int textures;           // -1: none; else its MaterialTextures record (binding kBindingMaterialTextures)
   uint diffuseParam;      // slot of the model's diffuse colour (its `diffuse` role), kNoParam without one
   vec3 emission;          // emitted radiance L_e (linear RGB) from the front face; the path integrator shows it
-  uint reserved;
+  uint textureParams;     // slots a metallic-roughness texture scales: roughness in bits 0-7, metallic in 8-15
+                          // (the `roughness` and `metallic` roles), kNoTextureParam in either without one
   float params[kMaxMaterialParams];
 };
 RL_CHECK_SIZE(MaterialRecord, 96);
+RL_CONST uint kNoTextureParam = 0xFFu;
 
 // TextureRecord.wrap: bits 0-1 for s (u), bits 2-3 for t (v), as glTF samplers define them.
 RL_CONST uint kWrapRepeat = 0;
 RL_CONST uint kWrapClamp = 1;
 RL_CONST uint kWrapMirror = 2;
 
-// A base-colour texture: RGBA8 texels, sRGB-encoded, rows from the top, filtered bilinearly by the kernel.
+// TextureRecord.wrap bit 4: magnification by the nearest texel (glTF magFilter NEAREST) instead of bilinear.
+RL_CONST uint kFilterNearest = 16;
+
+// A texture: RGBA8 texels as the file stores them, rows from the top. Whether they are sRGB-encoded colour
+// (base colour, emissive) or linear data (metallic-roughness, normals) is the use's (TextureRef), so one image
+// is decoded once and shared by every use.
 struct TextureRecord {
   uint firstTexel;  // into the texel buffer
   uint width;
   uint height;
-  uint wrap;
+  uint wrap;        // the wrap modes, and kFilterNearest
 };
 RL_CHECK_SIZE(TextureRecord, 16);
+
+// One use of a texture by a material (glTF textureInfo): the UV set, KHR_texture_transform as the affine map
+// uv' = (dot(row0, (u, v, 1)), dot(row1, (u, v, 1))), and normalTexture.scale.
+struct TextureRef {
+  int texture;    // TextureRecord index; -1: none
+  uint texCoord;  // 0: TEXCOORD_0, 1: TEXCOORD_1
+  float scale;    // the normal map's scale of its x and y; 1 for the others
+  uint reserved;
+  vec3 row0;
+  vec3 row1;
+};
+RL_CHECK_SIZE(TextureRef, 40);
+
+// MaterialTextures.refs, one slot per use; every material with textures has a record with all of them.
+RL_CONST uint kTextureBaseColor = 0;          // sRGB; multiplies the diffuse colour
+RL_CONST uint kTextureMetallicRoughness = 1;  // linear; G scales roughness, B metallic
+RL_CONST uint kTextureNormal = 2;             // linear; tangent-space normal, 2 c - 1
+RL_CONST uint kTextureEmissive = 3;           // sRGB; multiplies the emitted radiance
+RL_CONST uint kTextureUses = 4;
+
+struct MaterialTextures {
+  TextureRef refs[kTextureUses];
+};
+RL_CHECK_SIZE(MaterialTextures, 160);
 
 // One light for next event estimation, of any kind (generated/light_kinds.h, from shaders/lights/lights.cmake):
 // punctual lights, emitting triangles and spheres in world space, the environment. What p0, p1, p2 and radiance

@@ -48,7 +48,8 @@ TEST_F(GltfAssimp, BoxTexturedLoadsInEveryPackaging) {
     EXPECT_EQ(scene.textures[0].width, 211u);
     EXPECT_EQ(scene.textures[0].rgba.size(), 211u * 211u * 4u);
     ASSERT_EQ(scene.materials.size(), 1u);
-    EXPECT_EQ(scene.materials[0].record.baseColorTexture, 0);
+    ASSERT_EQ(scene.materials[0].record.textures, 0);
+    EXPECT_EQ(scene.materialTextures[0].refs[gpu::kTextureBaseColor].texture, 0);
     EXPECT_FALSE(scene.meshes[0].uvs.empty());
     // No camera and no lights in the file: the documented defaults, each announced once.
     EXPECT_EQ(scene.camera.name, "default");

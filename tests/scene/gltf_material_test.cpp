@@ -247,7 +247,10 @@ TEST(GltfMaterial, BaseColourTexturesAreDecodedToRgba8WithTheirWrapModes) {
                    {{"source", 0}, {"sampler", 0}}}));
   const Scene scene = b.load();
   ASSERT_EQ(scene.textures.size(), 4u);
-  for (std::size_t m = 0; m < 4; ++m) EXPECT_EQ(scene.materials[m].record.baseColorTexture, int(m));
+  for (std::size_t m = 0; m < 4; ++m) {
+    ASSERT_EQ(scene.materials[m].record.textures, int(m));
+    EXPECT_EQ(scene.materialTextures[m].refs[gpu::kTextureBaseColor].texture, int(m));
+  }
 
   const Texture& rgb = scene.textures[0];
   EXPECT_EQ(rgb.width, 2u);
@@ -267,14 +270,70 @@ TEST(GltfMaterial, BaseColourTexturesAreDecodedToRgba8WithTheirWrapModes) {
   EXPECT_EQ(greyAlpha.wrapS, gpu::kWrapRepeat) << "no sampler: repeat";
 }
 
-TEST(GltfMaterial, OtherTextureSlotsAreIgnoredWithOneWarningPerFile) {
-  GltfBuilder b = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
-  b.doc()["materials"][0]["normalTexture"] = {{"index", 0}};
-  b.doc()["materials"].push_back({{"occlusionTexture", {{"index", 0}}}, {"emissiveTexture", {{"index", 0}}}});
+// Each use of a texture with its UV set, KHR_texture_transform and scale; one image shared by every use is
+// decoded once. The occlusion texture is checked and not used; an emissive texture is not read yet (warned).
+TEST(GltfMaterial, EveryTextureUseIsReadWithItsUvSetTransformAndScale) {
+  GltfBuilder b = texturedScene({kPngRgb}, json::array({{{"magFilter", 9728}}}), json::array({{{"source", 0}, {"sampler", 0}}}));
+  b.doc()["meshes"][1]["primitives"][0]["attributes"]["TEXCOORD_1"] = b.addFloats({0, 0, 2, 0, 2, 2, 0, 2}, "VEC2");
+  json& material = b.doc()["materials"][0];
+  material["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {
+      {"index", 0},
+      {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0.25}}, {"rotation", 1.5707963267948966},
+                                                 {"scale", {2.0, 3.0}}, {"texCoord", 1}}}}}};
+  material["normalTexture"] = {{"index", 0}, {"scale", 0.5}};
+  material["occlusionTexture"] = {{"index", 0}, {"strength", 0.3}};
   WarningCapture warnings;
   const Scene scene = b.load();
-  EXPECT_EQ(scene.materials[0].record.baseColorTexture, 0) << "the base colour is still sampled";
-  EXPECT_EQ(warnings.count("textures other than base colour"), 1);
+  ASSERT_EQ(scene.textures.size(), 1u) << "one image, decoded once for three uses";
+  EXPECT_TRUE(scene.textures[0].nearest) << "magFilter NEAREST";
+  ASSERT_EQ(scene.materials[0].record.textures, 0);
+  const gpu::MaterialTextures& uses = scene.materialTextures[0];
+  EXPECT_EQ(uses.refs[gpu::kTextureBaseColor].texture, 0);
+  EXPECT_EQ(uses.refs[gpu::kTextureBaseColor].texCoord, 0u);
+  const gpu::TextureRef& mr = uses.refs[gpu::kTextureMetallicRoughness];
+  EXPECT_EQ(mr.texture, 0);
+  EXPECT_EQ(mr.texCoord, 1u) << "the transform's texCoord overrides the textureInfo's";
+  // T R S with a quarter turn: u' = 0 u + 3 v + 0.5, v' = -2 u + 0 v + 0.25.
+  EXPECT_NEAR(mr.row0.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(mr.row0.y, 3.0f, 1e-6f);
+  EXPECT_NEAR(mr.row0.z, 0.5f, 1e-6f);
+  EXPECT_NEAR(mr.row1.x, -2.0f, 1e-6f);
+  EXPECT_NEAR(mr.row1.y, 0.0f, 1e-6f);
+  EXPECT_NEAR(mr.row1.z, 0.25f, 1e-6f);
+  EXPECT_EQ(uses.refs[gpu::kTextureNormal].texture, 0);
+  EXPECT_EQ(uses.refs[gpu::kTextureNormal].scale, 0.5f);
+  EXPECT_EQ(uses.refs[gpu::kTextureEmissive].texture, -1);
+  // The mesh keeps TEXCOORD_1 (read by the metallic-roughness texture) and gets tangents for the normal map.
+  const Mesh& mesh = scene.meshes[scene.instances[0].mesh];
+  EXPECT_EQ(mesh.uvs1.size(), 4u);
+  ASSERT_EQ(mesh.tangents.size(), 4u);
+  for (const glm::vec4& t : mesh.tangents) {
+    EXPECT_NEAR(glm::length(glm::vec3(t)), 1.0f, 1e-5f);
+    EXPECT_TRUE(t.w == 1.0f || t.w == -1.0f);
+  }
+  EXPECT_EQ(warnings.count("textures other than base colour"), 0);
+}
+
+TEST(GltfMaterial, AnEmissiveTextureIsNotReadYetAndSaysSo) {
+  GltfBuilder b = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+  b.doc()["materials"][0]["emissiveTexture"] = {{"index", 0}};
+  b.doc()["materials"][0]["emissiveFactor"] = {1.0, 1.0, 1.0};
+  WarningCapture warnings;
+  const Scene scene = b.load();
+  EXPECT_EQ(scene.materials[0].record.emission, glm::vec3(0.0f));
+  EXPECT_EQ(warnings.count("emissive texture"), 1);
+}
+
+TEST(GltfMaterial, TextureTransformsAndScalesThatAreNotFiniteAreErrorsNamingTheMaterial) {
+  for (const json& bad : {json{{"index", 0}, {"scale", 1e40}},
+                          json{{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"rotation", 1e39}}}}}}}) {
+    GltfBuilder b = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+    b.doc()["materials"][0]["normalTexture"] = bad;
+    const std::string error = errorOf([&] { b.load(); });
+    EXPECT_NE(error.find("material 0"), std::string::npos) << "[" << error << "]";
+    EXPECT_NE(error.find("normalTexture"), std::string::npos) << error;
+    EXPECT_NE(error.find("not finite"), std::string::npos) << error;
+  }
 }
 
 TEST(GltfMaterial, AnInvalidWrapModeIsAnErrorNamingTheSampler) {

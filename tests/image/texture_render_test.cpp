@@ -1,0 +1,197 @@
+// Material textures in whole renders, against what their texels say: a normal map tilts the Lambert shading to
+// the closed form of the mapped normal, a metallic-roughness texture renders as its factors scaled by the
+// texel, and a use's UV set and KHR_texture_transform choose the texel. Each runs on both integrators; every
+// scene's first render is also checked bit for bit on the other backend (renderImage).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "brdf_params/material_params.h"
+#include "render/kernel_features.h"
+#include "scene/tangents.h"
+#include "shared/features.h"
+#include "support/analytic.h"
+#include "support/gpu_test.h"
+
+namespace raylab::test {
+namespace {
+
+class TextureRenderTest : public GpuTest {};
+
+constexpr double kRho = 0.5;
+const glm::dvec3 kLight{2.0, 3.0, 0.5};
+constexpr double kIntensity = 10.0;
+
+// A 2x2 quad in the y = 0 plane facing +y, UVs (0, 0) to (1, 1) with u along +x and v along +z.
+Mesh texturedQuad() {
+  Mesh mesh;
+  mesh.name = "quad";
+  mesh.positions = {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}};
+  mesh.normals.assign(4, glm::vec3(0, 1, 0));
+  mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  mesh.indices = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from +y
+  return mesh;
+}
+
+Texture solidTexture(std::vector<std::uint8_t> rgba, std::uint32_t width = 1, std::uint32_t height = 1) {
+  Texture texture;
+  texture.name = "texels";
+  texture.width = width;
+  texture.height = height;
+  texture.rgba = std::move(rgba);
+  return texture;
+}
+
+// The quad under a point light, seen from above, with `record` and one texture in use `slot`.
+Scene quadScene(const gpu::MaterialRecord& record, std::uint32_t slot, const Texture& texture, const Mesh& mesh) {
+  Scene scene;
+  scene.name = "textured quad";
+  scene.meshes.push_back(mesh);
+  scene.instances.push_back({0, glm::mat4(1.0f), 0});
+  scene.textures.push_back(texture);
+  gpu::MaterialTextures uses = noMaterialTextures();
+  uses.refs[slot] = textureRef(0);
+  scene.materialTextures.push_back(uses);
+  scene.materials.push_back({"textured", record});
+  scene.materials[0].record.textures = 0;
+  scene.lights.push_back({"lamp", pointLight(glm::vec3(kLight), glm::vec3(float(kIntensity)))});
+  scene.camera.position = {0.0f, 4.0f, 0.01f};
+  scene.camera.target = {0.0f, 0.0f, 0.0f};
+  scene.camera.yfov = glm::radians(20.0f);
+  return scene;
+}
+
+RenderSettings settingsFor(const Scene& scene, std::uint32_t integrator) {
+  RenderSettings settings = pixelCentres(48, 48);
+  KernelFeatures kernel = featuresOf(scene);
+  kernel.integrator = integrator;
+  settings.kernel = kernel;
+  settings.maxDepth = 0;  // direct light only in both integrators: the closed form below
+  return settings;
+}
+
+// For every pixel whose centre ray hits the quad: rho/pi I max(0, ns.l) / r^2 with the normal the texel encodes
+// in the quad's frame (tangent +x, bitangent +z, normal +y). Returns how many pixels were compared.
+int expectMappedLambert(const Image& image, const gpu::FrameParams& params, glm::dvec3 mapped) {
+  const glm::dvec3 ns = glm::normalize(mapped.x * glm::dvec3(1, 0, 0) + mapped.y * glm::dvec3(0, 0, 1) +
+                                       mapped.z * glm::dvec3(0, 1, 0));
+  int compared = 0;
+  for (std::uint32_t y = 0; y < image.height; ++y) {
+    for (std::uint32_t x = 0; x < image.width; ++x) {
+      const Ray ray = pixelCenterRay(params, x, y);
+      const double t = -ray.origin.y / ray.direction.y;
+      const glm::dvec3 p = ray.origin + t * ray.direction;
+      if (std::abs(p.x) > 0.98 || std::abs(p.z) > 0.98) continue;  // off the quad, or at its edge
+      const glm::dvec3 toLight = kLight - p;
+      const double r2 = glm::dot(toLight, toLight);
+      const double expected = kRho / kPi * kIntensity * std::max(0.0, glm::dot(ns, toLight) / std::sqrt(r2)) / r2;
+      EXPECT_NEAR(image.at(x, y).r, expected, 2e-4 * expected + 1e-6) << "pixel " << x << "," << y;
+      ++compared;
+    }
+  }
+  return compared;
+}
+
+TEST_F(TextureRenderTest, ANormalMapShadesAsTheNormalItsTexelEncodes) {
+  // Texels tilting the normal towards +u (the light's side), towards -v, and the flat (128, 128, 255).
+  const std::uint8_t texels[][3] = {{200, 128, 230}, {128, 60, 240}, {128, 128, 255}};
+  Mesh mesh = texturedQuad();
+  mesh.tangents = generateTangents(mesh, mesh.uvs);
+  for (const glm::vec4& t : mesh.tangents) {
+    EXPECT_NEAR(t.x, 1.0f, 1e-6f) << "the tangent follows +u";
+    EXPECT_EQ(t.w, -1.0f) << "cross(n, t) is -z, so w = -1 turns the bitangent to +z, along +v";
+  }
+  for (const auto& texel : texels) {
+    const Scene scene = quadScene(lambertMaterial(glm::vec3(float(kRho))), gpu::kTextureNormal,
+                                  solidTexture({texel[0], texel[1], texel[2], 255}), mesh);
+    // Lavapipe's unpackUnorm4x8 is byte / 255.
+    const glm::dvec3 mapped = glm::dvec3(texel[0], texel[1], texel[2]) / 255.0 * 2.0 - 1.0;
+    for (const std::uint32_t integrator : {gpu::kIntegratorSlides, gpu::kIntegratorPath}) {
+      SCOPED_TRACE(integrator == gpu::kIntegratorPath ? "path" : "slides");
+      const RenderSettings settings = settingsFor(scene, integrator);
+      const Image image = renderImage(device(), scene, settings, 1);
+      EXPECT_GT(expectMappedLambert(image, frameFor(scene, 48, 48), mapped), 1000);
+    }
+  }
+}
+
+// A normal map whose texel points far below the horizon never leaves the shading normal under the surface: the
+// quad still renders finite, non-negative radiance, and lit where the clamped normal faces the light.
+TEST_F(TextureRenderTest, ANormalMapPointingIntoTheSurfaceIsClampedAboveIt) {
+  Mesh mesh = texturedQuad();
+  mesh.tangents = generateTangents(mesh, mesh.uvs);
+  const Scene scene = quadScene(lambertMaterial(glm::vec3(float(kRho))), gpu::kTextureNormal,
+                                solidTexture({255, 128, 0, 255}), mesh);  // (1, 0, -1): 45 degrees under
+  for (const std::uint32_t integrator : {gpu::kIntegratorSlides, gpu::kIntegratorPath}) {
+    const Image image = renderImage(device(), scene, settingsFor(scene, integrator), 1);
+    double sum = 0.0;
+    for (const float value : image.rgba) {
+      ASSERT_TRUE(std::isfinite(value) && value >= 0.0f);
+      sum += value;
+    }
+    EXPECT_GT(sum, 0.0) << "the clamped normal still sees the light on the +x side";
+  }
+}
+
+TEST_F(TextureRenderTest, AMetallicRoughnessTextureScalesTheFactorsByItsGreenAndBlue) {
+  gpu::MaterialRecord record = defaultRecord(modelId("gltf_pbr"));
+  setParam(record, "base_color", glm::vec3(0.9f, 0.6f, 0.3f), "test");
+  setParam(record, "metallic", glm::vec3(0.8f), "test");
+  setParam(record, "roughness", glm::vec3(0.9f), "test");
+  const std::uint8_t green = 90, blue = 200;
+  const Scene textured = quadScene(record, gpu::kTextureMetallicRoughness, solidTexture({17, green, blue, 255}),
+                                   texturedQuad());
+  // The same kernel variant (textures on) with a white texel and the factors scaled on the host.
+  Scene plain = textured;
+  plain.textures[0].rgba = {17, 255, 255, 255};
+  setParam(plain.materials[0].record, "roughness", glm::vec3(0.9f * float(green) / 255.0f), "test");
+  setParam(plain.materials[0].record, "metallic", glm::vec3(0.8f * float(blue) / 255.0f), "test");
+  // Both integrators apply textures in one function (kernel/hit_common.glsl); the normal map test runs both.
+  for (const std::uint32_t integrator : {gpu::kIntegratorPath}) {
+    const Image a = renderImage(device(), textured, settingsFor(textured, integrator), 1);
+    const Image b = renderImage(device(), plain, settingsFor(plain, integrator), 1);
+    int lit = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); ++i) {
+      EXPECT_NEAR(a.rgba[i], b.rgba[i], 1e-5f * b.rgba[i] + 1e-7f) << "value " << i;
+      lit += i % 4 == 0 && b.rgba[i] > 0.0f;
+    }
+    EXPECT_GT(lit, 1000);
+  }
+}
+
+// A 2x1 texture, red then green, read by the nearest texel: TEXCOORD_1 constant at u = 0.25 reads red, and a
+// KHR_texture_transform offset of 0.5 moves it to green; on TEXCOORD_0 the quad's halves show one each.
+TEST_F(TextureRenderTest, TheUvSetAndTheTransformChooseTheTexel) {
+  Mesh mesh = texturedQuad();
+  mesh.uvs1.assign(4, glm::vec2(0.25f, 0.5f));
+  Texture texture = solidTexture({255, 0, 0, 255, 0, 255, 0, 255}, 2, 1);
+  texture.nearest = true;
+  Scene scene = quadScene(lambertMaterial(glm::vec3(1.0f)), gpu::kTextureBaseColor, texture, mesh);
+  const auto colours = [&](const Scene& s) {
+    const Image image = renderImage(device(), s, settingsFor(s, gpu::kIntegratorSlides), 1);
+    int red = 0, green = 0;
+    for (std::uint32_t y = 0; y < image.height; ++y) {
+      for (std::uint32_t x = 0; x < image.width; ++x) {
+        const glm::vec4 pixel = image.at(x, y);
+        if (pixel.r > 0.0f && pixel.g == 0.0f) ++red;
+        if (pixel.g > 0.0f && pixel.r == 0.0f) ++green;
+      }
+    }
+    return std::pair{red, green};
+  };
+  scene.materialTextures[0].refs[gpu::kTextureBaseColor].texCoord = 1;
+  auto [red, green] = colours(scene);
+  EXPECT_GT(red, 1000);
+  EXPECT_EQ(green, 0);
+  scene.materialTextures[0].refs[gpu::kTextureBaseColor].row0.z = 0.5f;
+  std::tie(red, green) = colours(scene);
+  EXPECT_EQ(red, 0);
+  EXPECT_GT(green, 1000);
+  scene.materialTextures[0].refs[gpu::kTextureBaseColor] = textureRef(0);
+  std::tie(red, green) = colours(scene);
+  EXPECT_GT(red, 400);
+  EXPECT_GT(green, 400);
+}
+
+}  // namespace
+}  // namespace raylab::test
