@@ -345,7 +345,21 @@ void convertMaterials(Document& document, Scene& scene) {
                                [&](int index) { return textures.convert(index, materialName + " " + property); });
     };
     gpu::MaterialTextures uses = noMaterialTextures();
-    if (const json* info = use({"pbrMetallicRoughness", "baseColorTexture"}); info && hasDiffuseColour(record.model)) {
+    // glTF 3.9.4: MASK cuts holes where alpha < alphaCutoff, BLEND is (here) stochastic transparency; alpha is
+    // baseColorFactor's fourth value times the base-colour texture's alpha.
+    const std::string alphaMode = material.alphaMode.empty() ? "OPAQUE" : material.alphaMode;
+    if (alphaMode == "MASK" || alphaMode == "BLEND") {
+      uses.alphaMode = alphaMode == "MASK" ? gpu::kAlphaMask : gpu::kAlphaBlend;
+      uses.alpha = checkedFactor(pbr.baseColorFactor[3], 0.0, 1.0, where, "baseColorFactor[3]");
+      if (alphaMode == "MASK") {
+        uses.alphaCutoff = checkedFactor(material.alphaCutoff, 0.0, std::numeric_limits<float>::max(), where,
+                                         "alphaCutoff");
+      }
+    } else if (alphaMode != "OPAQUE") {
+      throw Error(where + ": alphaMode " + quote(json(alphaMode)) + " is not OPAQUE, MASK or BLEND");
+    }
+    const bool readsBaseColour = hasDiffuseColour(record.model) || uses.alphaMode != gpu::kAlphaOpaque;
+    if (const json* info = use({"pbrMetallicRoughness", "baseColorTexture"}); info && readsBaseColour) {
       uses.refs[gpu::kTextureBaseColor] = convertUse(info, "baseColorTexture");
     }
     if (const json* info = use({"pbrMetallicRoughness", "metallicRoughnessTexture"})) {
@@ -357,7 +371,7 @@ void convertMaterials(Document& document, Scene& scene) {
     if (const json* info = use({"occlusionTexture"})) convertUse(info, "occlusionTexture");
     const bool textured = std::any_of(std::begin(uses.refs), std::end(uses.refs),
                                       [](const gpu::TextureRef& ref) { return ref.texture >= 0; });
-    if (textured) {
+    if (textured || uses.alphaMode != gpu::kAlphaOpaque) {
       record.textures = int(scene.materialTextures.size());
       scene.materialTextures.push_back(uses);
     }
@@ -371,9 +385,6 @@ void convertMaterials(Document& document, Scene& scene) {
       document.warnOnce("emissive texture", describe("material", int(i), material.name) +
                                                 " has an emissive texture, which raylab does not read yet: it "
                                                 "emits nothing (docs/scenes.md)");
-    }
-    if (!material.alphaMode.empty() && material.alphaMode != "OPAQUE") {
-      document.ignore("alpha modes MASK and BLEND (surfaces are opaque)");
     }
     scene.materials.push_back({material.name.empty() ? "material " + std::to_string(i) : material.name, record});
   }

@@ -263,6 +263,11 @@ void fillGpuScene(const Device& device, const Scene& original, bool spatialOrder
   // One BLAS per mesh, plus one BLAS holding every sphere.
   std::vector<BlasInput> blasInputs;
   std::vector<std::uint32_t> meshBlas(scene.meshes.size(), UINT32_MAX);
+  // A mesh any of whose instances is alpha-tested or blended is non-opaque geometry.
+  std::vector<bool> meshOpaque(scene.meshes.size(), true);
+  for (const MeshInstance& instance : scene.instances) {
+    if (hasAlpha(original, scene.materials[instance.material].record)) meshOpaque[instance.mesh] = false;
+  }
   for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
     const Mesh& mesh = scene.meshes[i];
     if (mesh.indices.empty()) continue;
@@ -272,6 +277,7 @@ void fillGpuScene(const Device& device, const Scene& original, bool spatialOrder
     input.vertexCount = static_cast<std::uint32_t>(mesh.positions.size());
     input.indices = gpuScene.indices.address + packed.firstIndex[i] * sizeof(std::uint32_t);
     input.triangleCount = static_cast<std::uint32_t>(mesh.indices.size() / 3);
+    input.opaque = meshOpaque[i];
     meshBlas[i] = static_cast<std::uint32_t>(blasInputs.size());
     blasInputs.push_back(input);
   }

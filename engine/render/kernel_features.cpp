@@ -15,6 +15,7 @@ KernelFeatures featuresOf(const Scene& scene) {
     if (isDeltaOnly(material.record.model)) f.features |= gpu::kFeatureDeltaBsdf;
     if (material.record.delta > 0.0f) f.features |= gpu::kFeatureMirror;
     if (material.record.textures >= 0) f.features |= gpu::kFeatureTextures;
+    if (hasAlpha(scene, material.record)) f.features |= gpu::kFeatureAlpha;
   }
   if (scene.environment.hasImage()) f.features |= gpu::kFeatureEnvironment;
   f.lightKinds = lightKindsOf(scene);
@@ -51,7 +52,8 @@ std::string describe(const KernelFeatures& features) {
   };
   constexpr Named kNames[] = {{gpu::kFeatureDeltaBsdf, "glass"},
                               {gpu::kFeatureMirror, "mirror reflection"},
-                              {gpu::kFeatureTextures, "base-colour textures"},
+                              {gpu::kFeatureTextures, "textures"},
+                              {gpu::kFeatureAlpha, "alpha"},
                               {gpu::kFeatureEnvironment, "environment image"}};
   std::string list;
   for (const Named& named : kNames) {

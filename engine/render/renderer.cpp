@@ -18,13 +18,14 @@ namespace raylab {
 namespace {
 
 // The render programs, once per backend: render.comp, or the pipeline's raygen, the path
-// and shadow miss programs, and closest hit on both hit groups, the spheres' with their intersection program.
+// and shadow miss programs, and closest hit on both hit groups, the triangles' with the alpha test as any-hit
+// program (run only on non-opaque geometry), the spheres' with their intersection program.
 // Shadow rays, traced from the closest-hit program, are the one level of recursion.
 const TracePrograms kRenderPrograms{
     "render.comp", gpu::kRenderWorkgroupSize, gpu::kRenderWorkgroupSize,
     RayTracingProgram{"render.rgen",
                       {"render.rmiss", "shadow.rmiss"},
-                      {{"render.rchit", ""}, {"render.rchit", "sphere.rint"}},
+                      {{"render.rchit", "", "render.rahit"}, {"render.rchit", "sphere.rint"}},
                       2}};
 
 SpecializationConstants specializationFor(const KernelFeatures& kernel) {

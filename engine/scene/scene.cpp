@@ -29,7 +29,15 @@ gpu::TextureRef textureRef(int texture) {
 gpu::MaterialTextures noMaterialTextures() {
   gpu::MaterialTextures textures{};
   for (gpu::TextureRef& ref : textures.refs) ref = noTextureRef();
+  textures.alphaMode = gpu::kAlphaOpaque;
+  textures.alpha = 1.0f;
+  textures.alphaCutoff = 0.5f;
   return textures;
+}
+
+bool hasAlpha(const Scene& scene, const gpu::MaterialRecord& record) {
+  return record.textures >= 0 && std::size_t(record.textures) < scene.materialTextures.size() &&
+         scene.materialTextures[std::size_t(record.textures)].alphaMode != gpu::kAlphaOpaque;
 }
 
 PunctualLight pointLight(glm::vec3 position, glm::vec3 intensity) {

@@ -102,8 +102,10 @@ gpu::MaterialRecord lambertMaterial(glm::vec3 rhoD, float delta = 0.0f);
 // A use of no texture, and a use of `texture` on TEXCOORD_0 without a transform.
 gpu::TextureRef noTextureRef();
 gpu::TextureRef textureRef(int texture);
-// A MaterialTextures record with no texture in any use.
+// A MaterialTextures record with no texture in any use, opaque.
 gpu::MaterialTextures noMaterialTextures();
+// True when the material is alpha-tested or blended: its meshes are non-opaque geometry.
+bool hasAlpha(const Scene& scene, const gpu::MaterialRecord& record);
 
 // True when some mesh instance or sphere has a material with emission > 0 (the path integrator's emitters).
 bool emits(const Scene& scene, std::uint32_t material);

@@ -18,7 +18,8 @@ namespace raylab {
 
 namespace {
 
-// The textures the material reads: the use, the image's name and size, its UV set, and its transform or scale.
+// The textures the material reads (the use, the image's name and size, its UV set, and its transform or scale),
+// and its alpha mode.
 void drawMaterialTextures(const Scene& scene, const gpu::MaterialRecord& record) {
   if (record.textures < 0 || std::size_t(record.textures) >= scene.materialTextures.size()) return;
   static const char* const kUses[gpu::kTextureUses] = {"base colour", "metallic-roughness", "normal", "emissive"};
@@ -33,6 +34,11 @@ void drawMaterialTextures(const Scene& scene, const gpu::MaterialRecord& record)
     if (transformed) details += ", transformed";
     if (use == gpu::kTextureNormal && ref.scale != 1.0f) details += ", scale " + formatParamValue(glm::vec3(ref.scale), false);
     ImGui::TextWrapped("%s texture: %s (%s)", kUses[use], texture.name.c_str(), details.c_str());
+  }
+  if (uses.alphaMode == gpu::kAlphaMask) {
+    ImGui::Text("alpha mask: alpha %.3g, cutoff %.3g", double(uses.alpha), double(uses.alphaCutoff));
+  } else if (uses.alphaMode == gpu::kAlphaBlend) {
+    ImGui::Text("alpha blend (stochastic): alpha %.3g", double(uses.alpha));
   }
 }
 

@@ -43,7 +43,7 @@ AccelerationStructure createAccelerationStructure(const Device& device, VkAccele
 VkAccelerationStructureGeometryKHR describeGeometry(const BlasInput& input) {
   VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
   // Opaque: triangles need no any-hit program; AABB candidates are returned to the kernel regardless.
-  geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+  geometry.flags = input.opaque || input.kind == BlasInput::Kind::kAabbs ? VK_GEOMETRY_OPAQUE_BIT_KHR : 0u;
   if (input.kind == BlasInput::Kind::kTriangles) {
     geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
     auto& triangles = geometry.geometry.triangles;

@@ -29,6 +29,9 @@ struct BlasInput {
   std::uint32_t triangleCount = 0;
   VkDeviceAddress aabbs = 0;
   std::uint32_t aabbCount = 0;
+  // Triangles only: false for alpha-tested geometry, whose candidates the kernel decides (any-hit, or the ray
+  // query's candidate loop); opaque triangles commit inside the traversal.
+  bool opaque = true;
 };
 
 struct TlasInstance {

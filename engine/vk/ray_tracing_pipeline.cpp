@@ -49,7 +49,7 @@ VkPipeline createRayTracingPipeline(const Device& device, VkPipelineLayout layou
     throw Error(std::string(name) + " needs a ray recursion depth of " + std::to_string(program.maxRecursionDepth) +
                 ", over this device's maxRayRecursionDepth of " + std::to_string(device.report.maxRayRecursionDepth));
   }
-  // Stages in order: raygen, misses, then each hit group's closest hit and intersection; groups likewise.
+  // Stages in order: raygen, misses, then each hit group's closest hit, any hit and intersection; groups likewise.
   std::vector<VkShaderModule> modules;
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
@@ -68,7 +68,8 @@ VkPipeline createRayTracingPipeline(const Device& device, VkPipelineLayout layou
                                                  : VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR;
       group.generalShader = VK_SHADER_UNUSED_KHR;
       group.closestHitShader = addStage(hitGroup.closestHit, VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR);
-      group.anyHitShader = VK_SHADER_UNUSED_KHR;
+      group.anyHitShader =
+          hitGroup.anyHit.empty() ? VK_SHADER_UNUSED_KHR : addStage(hitGroup.anyHit, VK_SHADER_STAGE_ANY_HIT_BIT_KHR);
       group.intersectionShader = hitGroup.intersection.empty()
                                      ? VK_SHADER_UNUSED_KHR
                                      : addStage(hitGroup.intersection, VK_SHADER_STAGE_INTERSECTION_BIT_KHR);

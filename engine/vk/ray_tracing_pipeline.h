@@ -22,6 +22,7 @@ struct RayTracingProgram {
   struct HitGroup {
     std::string_view closestHit;
     std::string_view intersection;  // empty for triangles; procedural hit groups have one
+    std::string_view anyHit = {};   // empty: none (opaque geometry never runs one anyway)
   };
   std::string_view raygen;
   std::vector<std::string_view> misses;    // miss index i is misses[i]
@@ -32,7 +33,7 @@ struct RayTracingProgram {
 // Every stage a ray-tracing pipeline may hold: for descriptor-set and push-constant stage masks.
 inline constexpr VkShaderStageFlags kRayTracingStages =
     VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
-    VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
+    VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
 
 // Throws Error when a stage is not embedded or the depth exceeds the device's maxRayRecursionDepth.
 VkPipeline createRayTracingPipeline(const Device& device, VkPipelineLayout layout, const RayTracingProgram& program,

@@ -5,6 +5,7 @@
 #ifndef RAYLAB_KERNEL_TRACE_PIPELINE_GLSL
 #define RAYLAB_KERNEL_TRACE_PIPELINE_GLSL
 
+#include "common/specialization.glsl"
 #include "shared/ray_tracing.h"
 
 layout(location = kPayloadShadow) rayPayloadEXT uint shadowVisible;
@@ -12,9 +13,10 @@ layout(location = kPayloadShadow) rayPayloadEXT uint shadowVisible;
 // True when nothing lies on the ray in [0, tMax].
 bool traceVisibility(vec3 origin, vec3 direction, float tMax) {
   shadowVisible = 0u;
-  traceRayEXT(tlas,
-              gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT, 0xFFu,
-              0u, 1u, kMissShadow, origin, 0.0, direction, tMax, kPayloadShadow);
+  // Alpha-tested triangles run render.rahit (their geometry is not opaque); the others commit at once.
+  const uint opaque = featureEnabled(kFeatureAlpha) ? gl_RayFlagsNoneEXT : gl_RayFlagsOpaqueEXT;
+  traceRayEXT(tlas, opaque | gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT, 0xFFu, 0u, 1u,
+              kMissShadow, origin, 0.0, direction, tMax, kPayloadShadow);
   return shadowVisible != 0u;
 }
 

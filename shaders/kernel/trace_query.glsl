@@ -6,8 +6,22 @@
 #ifndef RAYLAB_KERNEL_TRACE_QUERY_GLSL
 #define RAYLAB_KERNEL_TRACE_QUERY_GLSL
 
+#include "kernel/alpha.glsl"
 #include "kernel/payload.glsl"
 #include "kernel/sphere_program.glsl"
+
+// Without alpha-tested surfaces every triangle is opaque and commits inside the traversal; with them the
+// opaque ones still do (their geometry is flagged opaque) and the others come back as candidates.
+uint opaqueRayFlag() { return featureEnabled(kFeatureAlpha) ? gl_RayFlagsNoneEXT : gl_RayFlagsOpaqueEXT; }
+
+// The any-hit program on the query's candidate triangle: confirms it where alphaPasses.
+void decideCandidateTriangle(rayQueryEXT query, vec3 origin, vec3 direction) {
+  if (alphaPasses(rayQueryGetIntersectionInstanceCustomIndexEXT(query, false),
+                  rayQueryGetIntersectionPrimitiveIndexEXT(query, false),
+                  rayQueryGetIntersectionBarycentricsEXT(query, false), origin, direction)) {
+    rayQueryConfirmIntersectionEXT(query);
+  }
+}
 
 // The intersection program on the query's AABB candidate.
 bool intersectCandidate(rayQueryEXT query, float tMin, float tMax, out float t) {
@@ -26,12 +40,14 @@ float committedT(rayQueryEXT query, float tMax) {
 // The closest hit along the ray in [tMin, tMax]; false on a miss.
 bool traceClosest(vec3 origin, vec3 direction, float tMin, float tMax, out Hit hit) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, tlas, gl_RayFlagsOpaqueEXT, 0xFFu, origin, tMin, direction, tMax);
+  rayQueryInitializeEXT(query, tlas, opaqueRayFlag(), 0xFFu, origin, tMin, direction, tMax);
   while (rayQueryProceedEXT(query)) {
-    // Opaque triangles commit inside the traversal; only AABB candidates come back here.
+    // Opaque triangles commit inside the traversal; AABB candidates and alpha-tested triangles come back here.
     if (rayQueryGetIntersectionTypeEXT(query, false) == gl_RayQueryCandidateIntersectionAABBEXT) {
       float t;
       if (intersectCandidate(query, tMin, committedT(query, tMax), t)) rayQueryGenerateIntersectionEXT(query, t);
+    } else {
+      decideCandidateTriangle(query, origin, direction);
     }
   }
   const uint type = rayQueryGetIntersectionTypeEXT(query, true);
@@ -52,12 +68,14 @@ bool traceClosest(vec3 origin, vec3 direction, float tMin, float tMax, out Hit h
 // True when nothing lies on the ray in [0, tMax]: the shadow ray, terminated by its first hit.
 bool traceVisibility(vec3 origin, vec3 direction, float tMax) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, tlas, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT, 0xFFu, origin, 0.0,
+  rayQueryInitializeEXT(query, tlas, opaqueRayFlag() | gl_RayFlagsTerminateOnFirstHitEXT, 0xFFu, origin, 0.0,
                         direction, tMax);
   while (rayQueryProceedEXT(query)) {
     if (rayQueryGetIntersectionTypeEXT(query, false) == gl_RayQueryCandidateIntersectionAABBEXT) {
       float t;
       if (intersectCandidate(query, 0.0, tMax, t)) rayQueryGenerateIntersectionEXT(query, t);
+    } else {
+      decideCandidateTriangle(query, origin, direction);
     }
   }
   return rayQueryGetIntersectionTypeEXT(query, true) == gl_RayQueryCommittedIntersectionNoneEXT;

@@ -18,7 +18,8 @@ RL_CONST uint kSpecLightKinds = 5;     // bit (1 << kLight...) per kind of light
 // kSpecFeatures bits.
 RL_CONST uint kFeatureDeltaBsdf = 1;         // delta BSDFs (glass): reflection and refraction along delta lobes
 RL_CONST uint kFeatureMirror = 2;            // some delta > 0: the mirror-reflection loop
-RL_CONST uint kFeatureTextures = 32;         // base-colour textures
+RL_CONST uint kFeatureTextures = 32;         // material textures
+RL_CONST uint kFeatureAlpha = 128;           // alpha-tested or stochastically transparent surfaces (non-opaque geometry)
 RL_CONST uint kFeatureEnvironment = 64;      // an environment image (else the background is uniform)
 
 // kSpecGlassFresnel values. Exact is the contract's; Schlick trades accuracy for speed (docs/performance.md).

@@ -108,10 +108,19 @@ RL_CONST uint kTextureNormal = 2;             // linear; tangent-space normal, 2
 RL_CONST uint kTextureEmissive = 3;           // sRGB; multiplies the emitted radiance
 RL_CONST uint kTextureUses = 4;
 
+// MaterialTextures.alphaMode (glTF alphaMode). Opaque surfaces are opaque geometry: traversal never asks.
+RL_CONST uint kAlphaOpaque = 0;
+RL_CONST uint kAlphaMask = 1;   // a hit counts where alpha >= alphaCutoff: holes elsewhere
+RL_CONST uint kAlphaBlend = 2;  // a hit counts with probability alpha (stochastic transparency)
+
 struct MaterialTextures {
   TextureRef refs[kTextureUses];
+  uint alphaMode;
+  float alpha;        // baseColorFactor's alpha; the base-colour texture's alpha multiplies it
+  float alphaCutoff;  // kAlphaMask only
+  uint reserved;
 };
-RL_CHECK_SIZE(MaterialTextures, 160);
+RL_CHECK_SIZE(MaterialTextures, 176);
 
 // One light for next event estimation, of any kind (generated/light_kinds.h, from shaders/lights/lights.cmake):
 // punctual lights, emitting triangles and spheres in world space, the environment. What p0, p1, p2 and radiance

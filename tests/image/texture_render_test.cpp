@@ -1,10 +1,14 @@
 // Material textures in whole renders, against what their texels say: a normal map tilts the Lambert shading to
-// the closed form of the mapped normal, a metallic-roughness texture renders as its factors scaled by the
-// texel, and a use's UV set and KHR_texture_transform choose the texel. Each runs on both integrators; every
-// scene's first render is also checked bit for bit on the other backend (renderImage).
+// the closed form of the mapped normal, a metallic-roughness texture renders as its factors scaled by the texel,
+// a use's UV set and KHR_texture_transform choose the texel, an alpha mask cuts holes that rays and shadows pass
+// through, and a blended surface is seen in proportion to its alpha. Every scene's first render is also checked
+// bit for bit on the other backend (renderImage). The integrators share applyTextures and the traversal, so each
+// test runs one of them: kernel variants are what this test's time goes to.
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "brdf_params/material_params.h"
 #include "render/kernel_features.h"
@@ -106,12 +110,10 @@ TEST_F(TextureRenderTest, ANormalMapShadesAsTheNormalItsTexelEncodes) {
                                   solidTexture({texel[0], texel[1], texel[2], 255}), mesh);
     // Lavapipe's unpackUnorm4x8 is byte / 255.
     const glm::dvec3 mapped = glm::dvec3(texel[0], texel[1], texel[2]) / 255.0 * 2.0 - 1.0;
-    for (const std::uint32_t integrator : {gpu::kIntegratorSlides, gpu::kIntegratorPath}) {
-      SCOPED_TRACE(integrator == gpu::kIntegratorPath ? "path" : "slides");
-      const RenderSettings settings = settingsFor(scene, integrator);
-      const Image image = renderImage(device(), scene, settings, 1);
-      EXPECT_GT(expectMappedLambert(image, frameFor(scene, 48, 48), mapped), 1000);
-    }
+    // The normal-map texel as the slides' integrator shades it; the path integrator shades through the same
+    // applyTextures and shadingSide (kernel/hit_common.glsl), and runs in the next test.
+    const Image image = renderImage(device(), scene, settingsFor(scene, gpu::kIntegratorSlides), 1);
+    EXPECT_GT(expectMappedLambert(image, frameFor(scene, 48, 48), mapped), 1000);
   }
 }
 
@@ -122,15 +124,13 @@ TEST_F(TextureRenderTest, ANormalMapPointingIntoTheSurfaceIsClampedAboveIt) {
   mesh.tangents = generateTangents(mesh, mesh.uvs);
   const Scene scene = quadScene(lambertMaterial(glm::vec3(float(kRho))), gpu::kTextureNormal,
                                 solidTexture({255, 128, 0, 255}), mesh);  // (1, 0, -1): 45 degrees under
-  for (const std::uint32_t integrator : {gpu::kIntegratorSlides, gpu::kIntegratorPath}) {
-    const Image image = renderImage(device(), scene, settingsFor(scene, integrator), 1);
-    double sum = 0.0;
-    for (const float value : image.rgba) {
-      ASSERT_TRUE(std::isfinite(value) && value >= 0.0f);
-      sum += value;
-    }
-    EXPECT_GT(sum, 0.0) << "the clamped normal still sees the light on the +x side";
+  const Image image = renderImage(device(), scene, settingsFor(scene, gpu::kIntegratorSlides), 1);
+  double sum = 0.0;
+  for (const float value : image.rgba) {
+    ASSERT_TRUE(std::isfinite(value) && value >= 0.0f);
+    sum += value;
   }
+  EXPECT_GT(sum, 0.0) << "the clamped normal still sees the light on the +x side";
 }
 
 TEST_F(TextureRenderTest, AMetallicRoughnessTextureScalesTheFactorsByItsGreenAndBlue) {
@@ -191,6 +191,117 @@ TEST_F(TextureRenderTest, TheUvSetAndTheTransformChooseTheTexel) {
   std::tie(red, green) = colours(scene);
   EXPECT_GT(red, 400);
   EXPECT_GT(green, 400);
+}
+
+// A 4x4 checker of alpha 0 and 255, read by the nearest texel.
+Texture alphaChecker() {
+  std::vector<std::uint8_t> rgba;
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      const bool solid = (x + y) % 2 == 0;
+      rgba.insert(rgba.end(), {255, 255, 255, std::uint8_t(solid ? 255 : 0)});
+    }
+  }
+  Texture texture = solidTexture(rgba, 4, 4);
+  texture.nearest = true;
+  return texture;
+}
+
+// An alpha-masked quad (white where the checker is solid) at y = 1 over a red floor at y = 0, seen from above
+// and lit from straight above: the floor shows through exactly the quad's holes, and the quad's shadow on the
+// floor is the checker, so the floor is lit only under the holes.
+TEST_F(TextureRenderTest, AnAlphaMaskCutsHolesThatRaysAndShadowsPassThrough) {
+  Scene scene = quadScene(lambertMaterial(glm::vec3(1.0f)), gpu::kTextureBaseColor, alphaChecker(), texturedQuad());
+  scene.materialTextures[0].alphaMode = gpu::kAlphaMask;
+  scene.materialTextures[0].alphaCutoff = 0.5f;
+  scene.instances[0].transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+  Mesh floor = texturedQuad();
+  for (glm::vec3& p : floor.positions) p *= glm::vec3(3.0f, 1.0f, 3.0f);
+  scene.meshes.push_back(floor);
+  scene.materials.push_back({"floor", lambertMaterial(glm::vec3(1.0f, 0.0f, 0.0f))});
+  scene.instances.push_back({1, glm::mat4(1.0f), 1});
+  scene.lights[0].record = pointLight(glm::vec3(0.0f, 50.0f, 0.0f), glm::vec3(2500.0f));
+  scene.camera.position = {0.0f, 8.0f, 0.001f};
+  scene.camera.yfov = glm::radians(20.0f);
+  const std::uint32_t size = 64;
+  // Both integrators trace through the same traversal (kernel/trace_query.glsl, or render.rahit): the path one
+  // here, and in the next test.
+  for (const std::uint32_t integrator : {gpu::kIntegratorPath}) {
+    RenderSettings settings = settingsFor(scene, integrator);
+    settings.width = settings.height = size;
+    const Image image = renderImage(device(), scene, settings, 1);
+    const gpu::FrameParams params = frameFor(scene, size, size);
+    int quad = 0, litFloor = 0, shadowedFloor = 0;
+    for (std::uint32_t y = 0; y < size; ++y) {
+      for (std::uint32_t x = 0; x < size; ++x) {
+        const Ray ray = pixelCenterRay(params, x, y);
+        const glm::dvec3 p = ray.origin + (1.0 - ray.origin.y) / ray.direction.y * ray.direction;  // at y = 1
+        if (std::abs(p.x) > 1.0 || std::abs(p.z) > 1.0) continue;
+        // The checker cell under the pixel (u along +x, v along +z), away from the cells' edges.
+        const double u = (p.x + 1.0) * 2.0, v = (p.z + 1.0) * 2.0;
+        if (std::abs(u - std::round(u)) < 0.1 || std::abs(v - std::round(v)) < 0.1) continue;
+        const bool solid = (int(u) + int(v)) % 2 == 0;
+        const glm::vec4 pixel = image.at(x, y);
+        if (solid) {
+          EXPECT_GT(pixel.g, 0.0f) << "the quad (white) at " << x << "," << y;
+          ++quad;
+        } else {
+          EXPECT_EQ(pixel.g, 0.0f) << "the red floor through a hole at " << x << "," << y;
+          // The light straight above: the floor seen through a hole is lit through the same hole, up to the
+          // parallax between the camera and the light (small here, and away from cell edges).
+          if (pixel.r > 0.0f) ++litFloor;
+          else ++shadowedFloor;
+        }
+      }
+    }
+    EXPECT_GT(quad, 500);
+    EXPECT_GT(litFloor, 500);
+    EXPECT_LT(shadowedFloor, litFloor / 20) << "the floor under the holes is lit through them";
+  }
+}
+
+// Stochastic transparency: a quad of alpha 0.25 over the red floor shows, averaged over samples, a quarter of
+// the quad and three quarters of the floor (the path integrator; z-test at a false-alarm rate of 1e-6).
+TEST_F(TextureRenderTest, ABlendedSurfaceIsSeenInProportionToItsAlpha) {
+  Scene scene = quadScene(lambertMaterial(glm::vec3(1.0f)), gpu::kTextureBaseColor,
+                          solidTexture({255, 255, 255, 255}), texturedQuad());
+  scene.materialTextures[0].alphaMode = gpu::kAlphaBlend;
+  scene.materialTextures[0].alpha = 0.25f;
+  scene.instances[0].transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+  Mesh floor = texturedQuad();
+  for (glm::vec3& p : floor.positions) p *= glm::vec3(3.0f, 1.0f, 3.0f);
+  scene.meshes.push_back(floor);
+  scene.materials.push_back({"floor", lambertMaterial(glm::vec3(1.0f, 0.0f, 0.0f))});
+  scene.instances.push_back({1, glm::mat4(1.0f), 1});
+  scene.camera.position = {0.0f, 8.0f, 0.001f};
+  scene.camera.yfov = glm::radians(10.0f);  // only the quad's middle in view
+  // A far light: the quad's radiance is the same everywhere, so a pixel's green counts its quad samples.
+  scene.lights[0].record = pointLight(glm::vec3(0.0f, 1000.0f, 0.0f), glm::vec3(1.0e6f));
+  RenderSettings settings = settingsFor(scene, gpu::kIntegratorPath);
+  settings.width = settings.height = 16;
+  // Jittered camera rays: the transparency decision hashes the ray, so rays through one point decide alike.
+  settings.jitter = true;
+  const std::uint32_t spp = 256;
+  const Image image = renderImage(device(), scene, settings, spp);
+  // Each sample sees the quad (green > 0) or the floor (green 0); the fraction of quad samples per pixel is
+  // green / green-of-the-quad, so test the fraction pooled over pixels with its binomial standard error.
+  double greenSum = 0.0;
+  for (std::uint32_t y = 0; y < 16; ++y) {
+    for (std::uint32_t x = 0; x < 16; ++x) greenSum += image.at(x, y).g;
+  }
+  const Image opaque = [&] {
+    Scene s = scene;
+    s.materialTextures[0].alpha = 1.0f;
+    return renderImage(device(), s, settings, 4);
+  }();
+  double quadGreen = 0.0;
+  for (std::uint32_t y = 0; y < 16; ++y) {
+    for (std::uint32_t x = 0; x < 16; ++x) quadGreen += opaque.at(x, y).g;
+  }
+  const double fraction = greenSum / quadGreen;
+  const double n = 16.0 * 16.0 * spp;
+  const double sigma = std::sqrt(0.25 * 0.75 / n);
+  EXPECT_NEAR(fraction, 0.25, 5.0 * sigma) << "5 sigma: a false alarm once in 1.7 million runs";
 }
 
 }  // namespace

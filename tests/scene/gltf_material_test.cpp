@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "gltf_test_support.h"
 #include "gltf_read/gltf_materials.h"
@@ -333,6 +334,44 @@ TEST(GltfMaterial, TextureTransformsAndScalesThatAreNotFiniteAreErrorsNamingTheM
     EXPECT_NE(error.find("material 0"), std::string::npos) << "[" << error << "]";
     EXPECT_NE(error.find("normalTexture"), std::string::npos) << error;
     EXPECT_NE(error.find("not finite"), std::string::npos) << error;
+  }
+}
+
+// glTF 3.9.4: MASK with its cutoff and BLEND are read with baseColorFactor's alpha; a material with alpha gets
+// a MaterialTextures record even without textures; a bad mode or cutoff is an error naming the material.
+TEST(GltfMaterial, AlphaModesAreReadAndBadOnesRefused) {
+  GltfBuilder b = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+  b.doc()["materials"][0]["alphaMode"] = "MASK";
+  b.doc()["materials"][0]["alphaCutoff"] = 0.3;
+  b.doc()["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {1.0, 1.0, 1.0, 0.8};
+  b.doc()["materials"].push_back({{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 0.4}}}}});
+  b.doc()["materials"].push_back({{"alphaMode", "OPAQUE"}});
+  WarningCapture warnings;
+  const Scene scene = b.load();
+  ASSERT_GE(scene.materials[0].record.textures, 0);
+  const gpu::MaterialTextures& mask = scene.materialTextures[std::size_t(scene.materials[0].record.textures)];
+  EXPECT_EQ(mask.alphaMode, gpu::kAlphaMask);
+  EXPECT_FLOAT_EQ(mask.alphaCutoff, 0.3f);
+  EXPECT_FLOAT_EQ(mask.alpha, 0.8f);
+  EXPECT_EQ(mask.refs[gpu::kTextureBaseColor].texture, 0);
+  ASSERT_GE(scene.materials[1].record.textures, 0) << "alpha without a texture still needs the record";
+  const gpu::MaterialTextures& blend = scene.materialTextures[std::size_t(scene.materials[1].record.textures)];
+  EXPECT_EQ(blend.alphaMode, gpu::kAlphaBlend);
+  EXPECT_FLOAT_EQ(blend.alpha, 0.4f);
+  EXPECT_EQ(scene.materials[2].record.textures, -1) << "opaque and untextured: nothing to read";
+  EXPECT_TRUE(hasAlpha(scene, scene.materials[0].record));
+  EXPECT_FALSE(hasAlpha(scene, scene.materials[2].record));
+  EXPECT_EQ(warnings.count("alpha"), 0);
+
+  for (const auto& [property, value, expected] :
+       {std::tuple<const char*, json, const char*>{"alphaCutoff", -0.5, "alphaCutoff = -0.5"},
+        {"alphaMode", "CUTOUT", "alphaMode \"CUTOUT\" is not OPAQUE, MASK or BLEND"}}) {
+    GltfBuilder bad = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+    bad.doc()["materials"][0]["alphaMode"] = "MASK";
+    bad.doc()["materials"][0][property] = value;
+    const std::string error = errorOf([&] { bad.load(); });
+    EXPECT_NE(error.find("material 0"), std::string::npos) << error;
+    EXPECT_NE(error.find(expected), std::string::npos) << error;
   }
 }
 
