@@ -38,11 +38,15 @@ def test_a_thousand_failed_creations_release_everything(scene):
 
 
 def test_renderers_made_and_dropped_keep_memory_flat(scene):
+    # A leak grows with every renderer; the process also takes one step of about 6 MiB at some point in its first
+    # few dozen renderers (an allocator arena; then flat for hundreds), which may fall in either interval. So of
+    # two intervals of 20 renderers at least one must stay flat: a leak of 50 KiB a renderer would fail both.
     resident = []
-    for i in range(40):
+    for i in range(50):
         renderer = raylab.Renderer(scene, width=8, height=8, integrator="slides")
         renderer.render(1)
         del renderer
-        if i in (9, 39):
+        if i in (9, 29, 49):
             resident.append(resident_mib())
-    assert resident[1] - resident[0] < 3.0, f"resident memory grew from {resident[0]:.1f} to {resident[1]:.1f} MiB"
+    growth = min(resident[1] - resident[0], resident[2] - resident[1])
+    assert growth < 1.0, f"resident memory grew in both intervals: {[round(r, 1) for r in resident]} MiB"
