@@ -37,6 +37,13 @@ struct PackedMeshes {
   std::vector<std::uint32_t> vertexFlags;
 };
 
+// A mesh's per-vertex attribute after the previous meshes', or zeros up to `vertexTotal` without one.
+template <typename T>
+void appendAttribute(std::vector<T>& packed, const std::vector<T>& attribute, std::size_t vertexTotal) {
+  if (attribute.empty()) packed.resize(vertexTotal, T(0.0f));
+  else packed.insert(packed.end(), attribute.begin(), attribute.end());
+}
+
 PackedMeshes packMeshes(const Scene& scene) {
   PackedMeshes packed;
   const bool anyUvs1 = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.uvs1.empty(); });
@@ -44,22 +51,16 @@ PackedMeshes packMeshes(const Scene& scene) {
       std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.tangents.empty(); });
   for (const Mesh& mesh : scene.meshes) {
     const std::size_t vertexCount = mesh.positions.size();
-    if (!mesh.normals.empty() && mesh.normals.size() != vertexCount) {
-      throw Error("mesh '" + mesh.name + "': " + std::to_string(mesh.normals.size()) + " normals for " +
-                  std::to_string(vertexCount) + " positions");
-    }
-    if (!mesh.uvs.empty() && mesh.uvs.size() != vertexCount) {
-      throw Error("mesh '" + mesh.name + "': " + std::to_string(mesh.uvs.size()) + " UVs for " +
-                  std::to_string(vertexCount) + " positions");
-    }
-    if (!mesh.uvs1.empty() && mesh.uvs1.size() != vertexCount) {
-      throw Error("mesh '" + mesh.name + "': " + std::to_string(mesh.uvs1.size()) + " TEXCOORD_1 UVs for " +
-                  std::to_string(vertexCount) + " positions");
-    }
-    if (!mesh.tangents.empty() && mesh.tangents.size() != vertexCount) {
-      throw Error("mesh '" + mesh.name + "': " + std::to_string(mesh.tangents.size()) + " tangents for " +
-                  std::to_string(vertexCount) + " positions");
-    }
+    const auto checkCount = [&](std::size_t count, const char* what) {
+      if (count != 0 && count != vertexCount) {
+        throw Error("mesh '" + mesh.name + "': " + std::to_string(count) + " " + what + " for " +
+                    std::to_string(vertexCount) + " positions");
+      }
+    };
+    checkCount(mesh.normals.size(), "normals");
+    checkCount(mesh.uvs.size(), "UVs");
+    checkCount(mesh.uvs1.size(), "TEXCOORD_1 UVs");
+    checkCount(mesh.tangents.size(), "tangents");
     if (mesh.indices.size() % 3 != 0) throw Error("mesh '" + mesh.name + "': index count is not a multiple of 3");
     for (std::uint32_t index : mesh.indices) {
       if (index >= vertexCount) {
@@ -76,19 +77,12 @@ PackedMeshes packMeshes(const Scene& scene) {
     if (!mesh.tangents.empty()) flags |= gpu::kVertexHasTangents;
     packed.vertexFlags.push_back(flags);
     packed.positions.insert(packed.positions.end(), mesh.positions.begin(), mesh.positions.end());
-    // Absent attributes still get slots, so one index addresses all three arrays.
-    if (mesh.normals.empty()) packed.normals.resize(packed.positions.size(), glm::vec3(0.0f));
-    else packed.normals.insert(packed.normals.end(), mesh.normals.begin(), mesh.normals.end());
-    if (mesh.uvs.empty()) packed.uvs.resize(packed.positions.size(), glm::vec2(0.0f));
-    else packed.uvs.insert(packed.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
-    if (anyUvs1) {
-      if (mesh.uvs1.empty()) packed.uvs1.resize(packed.positions.size(), glm::vec2(0.0f));
-      else packed.uvs1.insert(packed.uvs1.end(), mesh.uvs1.begin(), mesh.uvs1.end());
-    }
-    if (anyTangents) {
-      if (mesh.tangents.empty()) packed.tangents.resize(packed.positions.size(), glm::vec4(0.0f));
-      else packed.tangents.insert(packed.tangents.end(), mesh.tangents.begin(), mesh.tangents.end());
-    }
+    // Absent attributes still get slots, so one index addresses every array; TEXCOORD_1 and tangents only exist
+    // when some mesh has them.
+    appendAttribute(packed.normals, mesh.normals, packed.positions.size());
+    appendAttribute(packed.uvs, mesh.uvs, packed.positions.size());
+    if (anyUvs1) appendAttribute(packed.uvs1, mesh.uvs1, packed.positions.size());
+    if (anyTangents) appendAttribute(packed.tangents, mesh.tangents, packed.positions.size());
     packed.indices.insert(packed.indices.end(), mesh.indices.begin(), mesh.indices.end());
   }
   return packed;

@@ -207,19 +207,25 @@ Texture alphaChecker() {
   return texture;
 }
 
-// An alpha-masked quad (white where the checker is solid) at y = 1 over a red floor at y = 0, seen from above
-// and lit from straight above: the floor shows through exactly the quad's holes, and the quad's shadow on the
-// floor is the checker, so the floor is lit only under the holes.
-TEST_F(TextureRenderTest, AnAlphaMaskCutsHolesThatRaysAndShadowsPassThrough) {
-  Scene scene = quadScene(lambertMaterial(glm::vec3(1.0f)), gpu::kTextureBaseColor, alphaChecker(), texturedQuad());
-  scene.materialTextures[0].alphaMode = gpu::kAlphaMask;
-  scene.materialTextures[0].alphaCutoff = 0.5f;
+// A white quad with `texture` as its base colour at y = 1 over a red floor three times its size at y = 0.
+Scene quadOverRedFloor(const Texture& texture) {
+  Scene scene = quadScene(lambertMaterial(glm::vec3(1.0f)), gpu::kTextureBaseColor, texture, texturedQuad());
   scene.instances[0].transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
   Mesh floor = texturedQuad();
   for (glm::vec3& p : floor.positions) p *= glm::vec3(3.0f, 1.0f, 3.0f);
   scene.meshes.push_back(floor);
   scene.materials.push_back({"floor", lambertMaterial(glm::vec3(1.0f, 0.0f, 0.0f))});
   scene.instances.push_back({1, glm::mat4(1.0f), 1});
+  return scene;
+}
+
+// An alpha-masked quad (white where the checker is solid) at y = 1 over a red floor at y = 0, seen from above
+// and lit from straight above: the floor shows through exactly the quad's holes, and the quad's shadow on the
+// floor is the checker, so the floor is lit only under the holes.
+TEST_F(TextureRenderTest, AnAlphaMaskCutsHolesThatRaysAndShadowsPassThrough) {
+  Scene scene = quadOverRedFloor(alphaChecker());
+  scene.materialTextures[0].alphaMode = gpu::kAlphaMask;
+  scene.materialTextures[0].alphaCutoff = 0.5f;
   scene.lights[0].record = pointLight(glm::vec3(0.0f, 50.0f, 0.0f), glm::vec3(2500.0f));
   scene.camera.position = {0.0f, 8.0f, 0.001f};
   scene.camera.yfov = glm::radians(20.0f);
@@ -263,16 +269,9 @@ TEST_F(TextureRenderTest, AnAlphaMaskCutsHolesThatRaysAndShadowsPassThrough) {
 // Stochastic transparency: a quad of alpha 0.25 over the red floor shows, averaged over samples, a quarter of
 // the quad and three quarters of the floor (the path integrator; z-test at a false-alarm rate of 1e-6).
 TEST_F(TextureRenderTest, ABlendedSurfaceIsSeenInProportionToItsAlpha) {
-  Scene scene = quadScene(lambertMaterial(glm::vec3(1.0f)), gpu::kTextureBaseColor,
-                          solidTexture({255, 255, 255, 255}), texturedQuad());
+  Scene scene = quadOverRedFloor(solidTexture({255, 255, 255, 255}));
   scene.materialTextures[0].alphaMode = gpu::kAlphaBlend;
   scene.materialTextures[0].alpha = 0.25f;
-  scene.instances[0].transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-  Mesh floor = texturedQuad();
-  for (glm::vec3& p : floor.positions) p *= glm::vec3(3.0f, 1.0f, 3.0f);
-  scene.meshes.push_back(floor);
-  scene.materials.push_back({"floor", lambertMaterial(glm::vec3(1.0f, 0.0f, 0.0f))});
-  scene.instances.push_back({1, glm::mat4(1.0f), 1});
   scene.camera.position = {0.0f, 8.0f, 0.001f};
   scene.camera.yfov = glm::radians(10.0f);  // only the quad's middle in view
   // A far light: the quad's radiance is the same everywhere, so a pixel's green counts its quad samples.
