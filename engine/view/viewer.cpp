@@ -15,8 +15,9 @@ namespace raylab {
 namespace {
 
 // What a submitted frame did, for its completion (viewer_frames.cpp, completeFrame).
-void recordSubmission(Viewer& v, FrameSlot& slot, const FramePlan& plan, double now) {
+void recordSubmission(Viewer& v, FrameSlot& slot, const FramePlan& plan, double now, bool shown) {
   slot.submitSeconds = now;
+  slot.shown = shown;
   slot.pixelSamples = plan.pixelSamples;
   slot.traceExtent = v.scheduler.traceExtent;
   slot.preview = v.scheduler.preview;
@@ -92,8 +93,7 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
 
   const bool capture = !v.options.windowCapture.empty() && v.options.frames && v.frameIndex + 1 == *v.options.frames;
   recordFrame(v, slot, paused ? nullptr : &plan, imageIndex, capture, !paused && differenceStatsDue(v));
-  recordSubmission(v, slot, plan, now);
-  slot.shown = true;
+  recordSubmission(v, slot, plan, now, true);
   submitAndPresent(v, slot, imageIndex);
   v.lastShown = now;
   countSubmission(v, now);
@@ -103,8 +103,7 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
 void drawUnshownFrame(Viewer& v, FrameSlot& slot, double now) {
   const FramePlan plan = planFrame(v.scheduler, now, false, FrameKind::kUnshown);
   recordUnshownFrame(v, slot, plan);
-  recordSubmission(v, slot, plan, now);
-  slot.shown = false;
+  recordSubmission(v, slot, plan, now, false);
   submitUnshown(v, slot);
   countSubmission(v, now);
 }
