@@ -369,22 +369,20 @@ void convertMaterials(Document& document, Scene& scene) {
     }
     if (const json* info = use({"normalTexture"})) uses.refs[gpu::kTextureNormal] = convertUse(info, "normalTexture");
     if (const json* info = use({"occlusionTexture"})) convertUse(info, "occlusionTexture");
+    record.emission = emittedRadiance(material, materialJson, where);
+    // The factor multiplies the texture (glTF 2.0 3.9.3); with the factor's default of zero the texture emits
+    // nothing and is not uploaded.
+    if (const json* info = use({"emissiveTexture"}); info && glm::any(glm::greaterThan(record.emission, glm::vec3(0.0f)))) {
+      uses.refs[gpu::kTextureEmissive] = convertUse(info, "emissiveTexture");
+      // Without its texels (a source raylab cannot decode, reported) the factor alone would light the whole
+      // surface, labels as bright as their background: such a material emits nothing.
+      if (uses.refs[gpu::kTextureEmissive].texture < 0) record.emission = glm::vec3(0.0f);
+    }
     const bool textured = std::any_of(std::begin(uses.refs), std::end(uses.refs),
                                       [](const gpu::TextureRef& ref) { return ref.texture >= 0; });
     if (textured || uses.alphaMode != gpu::kAlphaOpaque) {
       record.textures = int(scene.materialTextures.size());
       scene.materialTextures.push_back(uses);
-    }
-    record.emission = emittedRadiance(material, materialJson, document.label + ": " +
-                                                                  describe("material", int(i), material.name));
-    // The factor multiplies the texture (glTF 2.0, 3.9.3): without the texture's texels, applying the factor
-    // alone would make the whole surface glow (labels as bright as their background), and such an "emitter"
-    // would also suppress the default light. Until emissive textures are read, such a material emits nothing.
-    if (material.emissiveTexture.index >= 0 && glm::any(glm::greaterThan(record.emission, glm::vec3(0.0f)))) {
-      record.emission = glm::vec3(0.0f);
-      document.warnOnce("emissive texture", describe("material", int(i), material.name) +
-                                                " has an emissive texture, which raylab does not read yet: it "
-                                                "emits nothing (docs/scenes.md)");
     }
     scene.materials.push_back({material.name.empty() ? "material " + std::to_string(i) : material.name, record});
   }

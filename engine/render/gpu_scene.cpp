@@ -289,7 +289,16 @@ void fillGpuScene(const Device& device, const Scene& original, bool spatialOrder
   std::vector<gpu::InstanceRecord> instanceRecords;
   std::vector<TlasInstance> tlasInstances;
   const EnvironmentTables environmentTables = buildEnvironmentTables(original.environment);
-  gpuScene.sceneLights = sceneLights(scene, environmentTables);
+  // Instance records in the order the loop below appends them: traced mesh instances, then the spheres' record.
+  EmitterSurfaces emitterSurfaces;
+  emitterSurfaces.textures = original.textures;
+  std::uint32_t tracedInstances = 0;
+  for (const MeshInstance& instance : scene.instances) {
+    emitterSurfaces.instanceRecords.push_back(meshBlas[instance.mesh] == UINT32_MAX ? gpu::kNoInstance
+                                                                                    : tracedInstances++);
+  }
+  if (sphereBlas != UINT32_MAX) emitterSurfaces.sphereInstanceRecord = tracedInstances;
+  gpuScene.sceneLights = sceneLights(scene, environmentTables, emitterSurfaces);
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     const MeshInstance& instance = scene.instances[i];
     if (meshBlas[instance.mesh] == UINT32_MAX) continue;

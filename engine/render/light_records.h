@@ -25,7 +25,20 @@ struct SceneLights {
   float sceneRadius = 0.0f;  // of the scene's bounding sphere: the disk the environment's power crosses
 };
 
-SceneLights sceneLights(const Scene& scene, const EnvironmentTables& environmentTables);
+// What the light records need besides the scene's geometry and materials: where the kernels find an emitter's
+// surface (LightRecord.texturedInstance), per scene.instances its InstanceRecord (gpu::kNoInstance when it is not
+// traced: an empty mesh) and the spheres' InstanceRecord; and the images emissive textures read (the upload's
+// spatially ordered copy of the geometry leaves them in the original scene).
+struct EmitterSurfaces {
+  std::vector<std::uint32_t> instanceRecords;
+  std::uint32_t sphereInstanceRecord = gpu::kNoInstance;
+  std::span<const Texture> textures;
+};
+
+// An emitter with an emissive texture is chosen in proportion to its power with the texture's mean over its
+// surface (the factor alone for the others), and tells the kernels its surface so that L_e is the texture's.
+SceneLights sceneLights(const Scene& scene, const EnvironmentTables& environmentTables,
+                        const EmitterSurfaces& surfaces);
 
 // Bit (1 << gpu::kLight...) per kind of light `scene` has: the kinds its kernel compiles in.
 std::uint32_t lightKindsOf(const Scene& scene);

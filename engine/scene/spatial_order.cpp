@@ -98,6 +98,7 @@ OrderedGeometry spatiallyOrderedGeometry(const Scene& scene, bool sort) {
   Scene& ordered = geometry.scene;
   // What the upload builds geometry and light records from; the images stay in the scene (see the header).
   ordered.materials = scene.materials;
+  ordered.materialTextures = scene.materialTextures;
   ordered.lights = scene.lights;
   ordered.environment.strength = scene.environment.strength;
   geometry.triangles.resize(scene.meshes.size());

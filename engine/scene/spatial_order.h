@@ -21,8 +21,9 @@ namespace raylab {
 std::vector<std::uint32_t> hilbertOrder(const std::vector<glm::vec3>& points, glm::vec3 low, glm::vec3 high);
 
 // The scene's geometry with each mesh's triangles, the spheres and the mesh instances in Hilbert order, with its
-// materials, lights and environment strength: what the device's geometry, light records and primitive ids are
-// built from. Nothing else is copied (no textures, no environment pixels, no camera): the upload reads those from
+// materials (and their texture uses), lights and environment strength: what the device's geometry, light records
+// and primitive ids are built from. Nothing else is copied (no texture images, no environment pixels, no camera):
+// the upload reads those from
 // the scene itself. Primitive ids on the device are positions in this order; nothing outside the upload sees them:
 // the orders map them back (the ray probe reports the scene's ids).
 struct OrderedGeometry {

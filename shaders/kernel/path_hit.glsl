@@ -15,6 +15,7 @@
 #ifndef RAYLAB_KERNEL_PATH_HIT_GLSL
 #define RAYLAB_KERNEL_PATH_HIT_GLSL
 
+#include "kernel/emission.glsl"
 #include "kernel/hit_common.glsl"
 #include "kernel/next_event.glsl"
 
@@ -72,7 +73,7 @@ void closestHitPath(Hit hit, inout Payload p) {
 
   // Emission from the front face only, the side the counter-clockwise winding's normal points to.
   if (s.frontFace && maxComponent(material.emission) > 0.0) {
-    p.path.radiance += p.path.throughput * material.emission * emissionWeight(hit, s, p);
+    p.path.radiance += p.path.throughput * emittedRadiance(material, s.uv, s.uv1) * emissionWeight(hit, s, p);
   }
   if (p.path.depth > params.maxDepth) return;  // the segment that reached here was the last one allowed
 

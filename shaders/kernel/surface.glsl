@@ -24,6 +24,11 @@ vec3 transformVector(mat4x3 m, vec3 v) { return mat3(m) * v; }
 // Normals transform with the inverse transpose of the object-to-world matrix.
 vec3 transformNormal(mat4x3 worldToObject, vec3 n) { return normalize(n * mat3(worldToObject)); }
 
+// A sphere's UVs at its unit normal (object space): longitude around y from +z, and colatitude from +y.
+vec2 sphereUv(vec3 normal) {
+  return vec2(atan(normal.x, normal.z) * (0.5 / 3.14159265358979) + 0.5, acos(clamp(normal.y, -1.0, 1.0)) / 3.14159265358979);
+}
+
 Surface sphereSurface(Hit hit, InstanceRecord instance) {
   const SphereRecord sphere = spheres[instance.firstSphere + hit.primitive];
   // Project the hit back onto the sphere: o + t d carries the error of t, the projection does not.
@@ -37,7 +42,7 @@ Surface sphereSurface(Hit hit, InstanceRecord instance) {
   s.shadingNormal = s.geometricNormal;
   // Azimuthal direction around the sphere's y axis, so anisotropic lobes run along "latitudes".
   s.tangent = transformVector(hit.objectToWorld, vec3(normal.z, 0.0, -normal.x));
-  s.uv = vec2(atan(normal.x, normal.z) * (0.5 / 3.14159265358979) + 0.5, acos(clamp(normal.y, -1.0, 1.0)) / 3.14159265358979);
+  s.uv = sphereUv(normal);
   s.uv1 = s.uv;
   s.normalTangent = vec4(0.0);  // normal maps need a mesh's tangents
   s.normalMapped = false;
@@ -98,6 +103,22 @@ Surface triangleSurface(Hit hit, InstanceRecord instance) {
   }
   s.material = instance.material;
   return s;
+}
+
+// TEXCOORD_0 and TEXCOORD_1 of triangle `primitive` of a mesh instance at barycentrics b (of its second and third
+// vertex); zero where the mesh has none.
+void triangleUvsAt(InstanceRecord instance, uint primitive, vec2 b, out vec2 uv0, out vec2 uv1) {
+  const uint base = instance.firstIndex + 3u * primitive;
+  const uint i0 = instance.firstVertex + indices[base];
+  const uint i1 = instance.firstVertex + indices[base + 1u];
+  const uint i2 = instance.firstVertex + indices[base + 2u];
+  const vec3 weights = vec3(1.0 - b.x - b.y, b);
+  uv0 = vec2(0.0);
+  uv1 = vec2(0.0);
+  if ((instance.vertexFlags & kVertexHasUvs) != 0u) uv0 = weights.x * uvs[i0] + weights.y * uvs[i1] + weights.z * uvs[i2];
+  if ((instance.vertexFlags & kVertexHasUvs1) != 0u) {
+    uv1 = weights.x * uvs1[i0] + weights.y * uvs1[i1] + weights.z * uvs1[i2];
+  }
 }
 
 Surface surfaceAt(Hit hit) {

@@ -1,4 +1,5 @@
-// An emitting sphere, in world space: p0 its centre, p1.x its radius, radiance its L_e. A direction uniform in
+// An emitting sphere, in world space: p0 its centre, p1.x its radius, radiance its L_e (with an emissive texture:
+// its material's at the point's UVs, kernel/emission.glsl). A direction uniform in
 // the cone of directions from x that reach it (Shirley et al. 1996; pbrt-v4's SampleSphere): density
 // 1 / (2 pi (1 - cos theta_max)) per unit solid angle, 0 from inside, whose back faces emit nothing.
 #ifndef RAYLAB_LIGHTS_SPHERE_GLSL
@@ -36,6 +37,13 @@ LightSample sphereLightSample(LightRecord light, vec3 x, vec3 u) {
   const float h2 = max(0.0, r * r - dot(closest, closest));
   s.distance = (b - sqrt(h2)) * (1.0 - kShortOfEmitter);
   s.radiance = light.radiance;
+  if (featureEnabled(kFeatureTextures) && light.texturedInstance != kNoInstance) {
+    // The spheres' instance has the identity transform: world and object space agree.
+    const vec3 normal = (x + (b - sqrt(h2)) * s.wi - light.p0) / r;
+    const SphereRecord sphere = spheres[instances[light.texturedInstance].firstSphere + light.primitive];
+    const vec2 uv = sphereUv(normal);
+    s.radiance = emittedRadiance(materials[sphere.material], uv, uv);
+  }
   s.pdf = 1.0 / (kTwoPiSphereLight * oneMinusCosMax);
   s.delta = false;
   return s;

@@ -30,6 +30,7 @@ struct InstanceRecord {
 RL_CHECK_SIZE(InstanceRecord, 28);
 
 RL_CONST uint kNoLight = 0xFFFFFFFFu;
+RL_CONST uint kNoInstance = 0xFFFFFFFFu;
 
 // The environment image (binding kBindingEnvironment): this header, then `data`, floats in four arrays of the
 // image's texels, rows from the top: linear RGB (3 per texel), then the sampling density f (luminance times
@@ -135,8 +136,12 @@ struct LightRecord {
   float cdf;
   vec3 radiance;  // L_e, or a punctual light's intensity (W/sr) or irradiance (W/m^2)
   float area;     // emitting surfaces: their area
+  // An emitting triangle whose material has an emissive texture: its InstanceRecord and primitive, whose UVs
+  // and material give L_e at each point (radiance is then the factor the texture multiplies); else kNoInstance.
+  uint texturedInstance;
+  uint primitive;
 };
-RL_CHECK_SIZE(LightRecord, 64);
+RL_CHECK_SIZE(LightRecord, 72);
 
 RL_NAMESPACE_END
 

@@ -315,14 +315,26 @@ TEST(GltfMaterial, EveryTextureUseIsReadWithItsUvSetTransformAndScale) {
   EXPECT_EQ(warnings.count("textures other than base colour"), 0);
 }
 
-TEST(GltfMaterial, AnEmissiveTextureIsNotReadYetAndSaysSo) {
-  GltfBuilder b = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
-  b.doc()["materials"][0]["emissiveTexture"] = {{"index", 0}};
-  b.doc()["materials"][0]["emissiveFactor"] = {1.0, 1.0, 1.0};
+// glTF 3.9.3: the emissive texture is multiplied by emissiveFactor, whose default is zero.
+TEST(GltfMaterial, AnEmissiveTextureMultipliesTheFactorAndIsSkippedUnderAZeroOne) {
+  GltfBuilder lit = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+  lit.doc()["materials"][0]["emissiveTexture"] = {{"index", 0}, {"texCoord", 0}};
+  lit.doc()["materials"][0]["emissiveFactor"] = {1.0, 0.5, 0.25};
   WarningCapture warnings;
-  const Scene scene = b.load();
-  EXPECT_EQ(scene.materials[0].record.emission, glm::vec3(0.0f));
-  EXPECT_EQ(warnings.count("emissive texture"), 1);
+  const Scene scene = lit.load();
+  const gpu::MaterialRecord& record = scene.materials[0].record;
+  EXPECT_EQ(record.emission, glm::vec3(1.0f, 0.5f, 0.25f));
+  ASSERT_GE(record.textures, 0);
+  EXPECT_EQ(scene.materialTextures[std::size_t(record.textures)].refs[gpu::kTextureEmissive].texture, 0);
+  EXPECT_EQ(warnings.count("emissive"), 0);
+  EXPECT_TRUE(scene.lights.empty()) << "an emitter replaces the default light";
+
+  GltfBuilder dark = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+  dark.doc()["materials"][0]["emissiveTexture"] = {{"index", 0}};
+  dark.doc()["materials"][0]["pbrMetallicRoughness"].erase("baseColorTexture");
+  const Scene unlit = dark.load();
+  EXPECT_EQ(unlit.materials[0].record.emission, glm::vec3(0.0f));
+  EXPECT_TRUE(unlit.textures.empty()) << "a texture nothing reads is not decoded";
 }
 
 TEST(GltfMaterial, TextureTransformsAndScalesThatAreNotFiniteAreErrorsNamingTheMaterial) {
@@ -409,19 +421,6 @@ TEST(GltfMaterial, EmissionIsTheFactorTimesTheStrength) {
     EXPECT_NE(error.find("test: material 0"), std::string::npos) << error;
     EXPECT_NE(error.find("emissive"), std::string::npos) << error;
   }
-}
-
-// An emissive texture is not read yet: its material emits nothing rather than its factor over the whole surface
-// (ClearCoatTest's labels, factor [1, 1, 1], glowed white and removed the default light), with one warning.
-TEST(GltfMaterial, AnEmissiveTextureTurnsItsMaterialsEmissionOffWithAWarning) {
-  GltfBuilder b = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
-  b.doc()["materials"][0]["emissiveTexture"] = {{"index", 0}};
-  b.doc()["materials"][0]["emissiveFactor"] = {1.0, 1.0, 1.0};
-  WarningCapture warnings;
-  const Scene scene = b.load();
-  EXPECT_EQ(scene.materials[0].record.emission, glm::vec3(0.0f));
-  EXPECT_EQ(warnings.count("has an emissive texture, which raylab does not read yet: it emits nothing"), 1);
-  EXPECT_EQ(scene.lights.size(), 1u) << "with no emitter left, the default light is added";
 }
 
 }  // namespace
