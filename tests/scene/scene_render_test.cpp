@@ -111,6 +111,37 @@ TEST_F(SceneRenderTest, RealGltfFilesRenderFinite) {
   }
 }
 
+// BoxTextured's binary (.glb) and embedded (data URI) encodings hold the same asset: the same image bit for bit.
+// Its .gltf variant differs only by its sampler's wrap modes: mirrored repeat along u, whose faces' UVs run over
+// [k, k + 1], so the faces of odd k show the logo mirrored; with its wrap modes set to the others' repeat, it too
+// renders bit for bit alike.
+TEST_F(SceneRenderTest, BoxTexturedsEncodingsRenderTheSameImage) {
+  ASSERT_TRUE(fs::is_directory(assimpDirectory()))
+      << assimpDirectory() << " is missing: install the assimp-testmodels package (run tools/setup.sh test)";
+  const auto boxImage = [&](const Scene& scene) { return render(device(), scene, 96, 72, 4); };
+  const Image binary = boxImage(loadQuietly(assimpDirectory() / "BoxTextured-glTF-Binary/BoxTextured.glb"));
+  const Image embedded = boxImage(loadQuietly(assimpDirectory() / "BoxTextured-glTF-Embedded/BoxTextured.gltf"));
+  Scene separate = loadQuietly(assimpDirectory() / "BoxTextured-glTF/BoxTextured.gltf");
+  ASSERT_EQ(separate.textures.size(), 1u);
+  EXPECT_EQ(separate.textures[0].wrapS, gpu::kWrapMirror);
+  EXPECT_EQ(separate.textures[0].wrapT, gpu::kWrapClamp);
+  const Image mirrored = boxImage(separate);
+  separate.textures[0].wrapS = separate.textures[0].wrapT = gpu::kWrapRepeat;
+  const Image repeated = boxImage(separate);
+
+  EXPECT_TRUE(binary.rgba == embedded.rgba) << "the binary and the embedded encoding render alike";
+  EXPECT_TRUE(binary.rgba == repeated.rgba) << "with the same wrap modes, the .gltf variant renders alike too";
+  std::size_t differing = 0, box = 0;
+  for (std::uint32_t y = 0; y < binary.height; ++y) {
+    for (std::uint32_t x = 0; x < binary.width; ++x) {
+      differing += binary.at(x, y) != mirrored.at(x, y);
+      box += binary.at(x, y) != glm::vec4(0.0f, 0.0f, 0.0f, binary.at(x, y).a);
+    }
+  }
+  EXPECT_GT(box, 1000u);
+  EXPECT_GT(differing, box / 10) << "the mirrored faces show";
+}
+
 // The luminance-like (r + g + b) / 3 of the pixels whose centres lie within kDiscFraction of a sphere's
 // projected radius from its projected centre, projecting as applyCamera sets the kernel's camera up.
 std::vector<float> discPixels(const Image& image, const Scene& scene, const Sphere& sphere) {
