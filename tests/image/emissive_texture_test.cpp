@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -188,6 +189,19 @@ TEST(EmissiveTextureLights, EachTriangleIsChosenByTheTexturesMeanOverIt) {
     EXPECT_EQ(record.radiance, glm::vec3(3.0f)) << "the factor; the texture multiplies it in the kernel";
   }
   EXPECT_EQ(lights.records[1].primitive, 1u);
+}
+
+// Broken UVs (NaN, infinite, far off) under an emissive texture still give every triangle a finite power.
+TEST(EmissiveTextureLights, BrokenUvsGiveFinitePowers) {
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  Mesh mesh = quad(1.0f);
+  mesh.uvs = {{nan, 0.0f}, {inf, -inf}, {1e30f, -1e30f}, {0.5f, nan}};
+  const Scene scene = emitterScene(mesh, texture(3, 2, kSixTexels), textureRef(0), glm::vec3(3.0f));
+  EmitterSurfaces surfaces;
+  surfaces.instanceRecords = {0};
+  surfaces.textures = scene.textures;
+  const SceneLights lights = sceneLights(scene, EnvironmentTables{}, surfaces);
+  for (double power : lights.powers) EXPECT_TRUE(std::isfinite(power) && power >= 0.0) << power;
 }
 
 }  // namespace
