@@ -12,13 +12,13 @@ namespace raylab {
 
 namespace {
 
-// The probe once per backend: trace_rays.comp, or its raygen with the probe's closest-hit and
-// miss programs (the hit goes back to the raygen) and the shadow rays' miss program.
+// The probe once per backend: trace_rays.comp, or its raygen with the probe's closest-hit, the alpha test's
+// any-hit and miss programs (the hit goes back to the raygen) and the shadow rays' miss program.
 const TracePrograms kProbePrograms{
     "trace_rays.comp", gpu::kProbeWorkgroupSize, 1,
     RayTracingProgram{"trace_rays.rgen",
                       {"probe.rmiss", "shadow.rmiss"},
-                      {{"probe.rchit", ""}, {"probe.rchit", "sphere.rint"}},
+                      {{"probe.rchit", "", "alpha.rahit"}, {"probe.rchit", "sphere.rint"}},
                       1}};
 
 void recordProbe(VkCommandBuffer cmd, const RayProbe& probe, std::uint32_t rayCount, std::uint32_t mode) {

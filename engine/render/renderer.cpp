@@ -25,7 +25,7 @@ const TracePrograms kRenderPrograms{
     "render.comp", gpu::kRenderWorkgroupSize, gpu::kRenderWorkgroupSize,
     RayTracingProgram{"render.rgen",
                       {"render.rmiss", "shadow.rmiss"},
-                      {{"render.rchit", "", "render.rahit"}, {"render.rchit", "sphere.rint"}},
+                      {{"render.rchit", "", "alpha.rahit"}, {"render.rchit", "sphere.rint"}},
                       2}};
 
 SpecializationConstants specializationFor(const KernelFeatures& kernel) {

@@ -4,12 +4,19 @@
 #include <cmath>
 #include <limits>
 
+#include "scene/texture_lookup.h"
+
 namespace raylab {
 
 namespace {
 
+struct TriangleHit {
+  double t;
+  double b1, b2;  // barycentrics of the second and third vertex
+};
+
 // Möller-Trumbore in double precision: a single ray, so accuracy costs nothing.
-std::optional<double> hitTriangle(glm::dvec3 o, glm::dvec3 d, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
+std::optional<TriangleHit> hitTriangle(glm::dvec3 o, glm::dvec3 d, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
   const glm::dvec3 e1 = b - a, e2 = c - a;
   const glm::dvec3 p = glm::cross(d, e2);
   const double det = glm::dot(e1, p);
@@ -21,7 +28,29 @@ std::optional<double> hitTriangle(glm::dvec3 o, glm::dvec3 d, glm::dvec3 a, glm:
   const double v = glm::dot(d, q) / det;
   if (v < 0.0 || u + v > 1.0) return std::nullopt;
   const double t = glm::dot(e2, q) / det;
-  return t > 0.0 ? std::optional<double>(t) : std::nullopt;
+  return t > 0.0 ? std::optional<TriangleHit>(TriangleHit{t, u, v}) : std::nullopt;
+}
+
+// Whether a hit on triangle `first` (its first index) of a mesh of `material` is seen: an alpha-masked surface
+// is not where its alpha is under the cutoff, a blended one not where its alpha is 0 (the kernels' alphaPasses,
+// kernel/alpha.glsl; a blended surface partly seen counts, so that a click on it picks it).
+bool seenAt(const Scene& scene, const gpu::MaterialRecord& material, const Mesh& mesh, std::size_t first,
+            const TriangleHit& hit) {
+  if (material.textures < 0) return true;
+  const gpu::MaterialTextures& uses = scene.materialTextures[std::size_t(material.textures)];
+  if (uses.alphaMode == gpu::kAlphaOpaque) return true;
+  double alpha = uses.alpha;
+  const gpu::TextureRef& base = uses.refs[gpu::kTextureBaseColor];
+  if (base.texture >= 0 && std::size_t(base.texture) < scene.textures.size()) {
+    const auto interpolate = [&](const std::vector<glm::vec2>& set) {
+      if (set.empty()) return glm::dvec2(0.0);
+      const glm::dvec2 a(set[mesh.indices[first]]), b(set[mesh.indices[first + 1]]), c(set[mesh.indices[first + 2]]);
+      return (1.0 - hit.b1 - hit.b2) * a + hit.b1 * b + hit.b2 * c;
+    };
+    const Texture& texture = scene.textures[std::size_t(base.texture)];
+    alpha *= sampleTexture(texture, textureUv(base, interpolate(mesh.uvs), interpolate(mesh.uvs1)), false).a;
+  }
+  return uses.alphaMode == gpu::kAlphaMask ? alpha >= uses.alphaCutoff : alpha > 0.0;
 }
 
 std::optional<double> hitSphere(glm::dvec3 o, glm::dvec3 d, glm::dvec3 center, double radius) {
@@ -48,8 +77,9 @@ std::optional<SceneHit> firstHit(const Scene& scene, glm::vec3 origin, glm::vec3
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
       glm::dvec3 v[3];
       for (int k = 0; k < 3; ++k) v[k] = glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[i + k]]), 1.0));
-      if (const auto t = hitTriangle(o, d, v[0], v[1], v[2]); t && *t < best) {
-        best = *t;
+      const std::optional<TriangleHit> hit = hitTriangle(o, d, v[0], v[1], v[2]);
+      if (hit && hit->t < best && seenAt(scene, scene.materials[instance.material].record, mesh, i, *hit)) {
+        best = hit->t;
         material = instance.material;
       }
     }

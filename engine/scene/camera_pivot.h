@@ -12,7 +12,8 @@ namespace raylab {
 
 // The first triangle or sphere of `scene` along the unit `direction` from `origin`: its distance and material.
 // A plain CPU ray cast over every triangle, in double precision: for a loaded camera's pivot and for the
-// viewer's picking (a click), not per pixel.
+// viewer's picking (a click), not per pixel. Rays pass through the holes of alpha-masked surfaces and the fully
+// transparent parts of blended ones, as the kernels' rays do.
 struct SceneHit {
   float distance = 0.0f;
   std::uint32_t material = 0;

@@ -1,6 +1,6 @@
 // Alpha-tested and blended surfaces (glTF 3.9.4, alphaMode MASK and BLEND) as the traversal's candidate test:
 // the ray-query loop (kernel/trace_query.glsl) confirms a candidate triangle, and the pipeline's any-hit program
-// (render.rahit) keeps it, only where alphaPasses. Alpha is MaterialTextures.alpha (baseColorFactor's) times the
+// (alpha.rahit) keeps it, only where alphaPasses. Alpha is MaterialTextures.alpha (baseColorFactor's) times the
 // base-colour texture's alpha at the candidate's UV. MASK keeps a hit where alpha >= alphaCutoff, so rays and
 // shadow rays pass through the holes (a leaf's shadow is leaf-shaped). BLEND keeps it with probability alpha
 // (stochastic transparency): the path integrator's average over samples is the blend; the number is a hash of
@@ -12,18 +12,8 @@
 
 #include "common/rng.glsl"
 #include "common/specialization.glsl"
+#include "kernel/surface.glsl"
 #include "kernel/textures.glsl"
-
-// The UV of set 0 and 1 at barycentrics b of triangle `primitive` of `instance`.
-void candidateUvs(InstanceRecord instance, uint primitive, vec2 b, out vec2 uv0, out vec2 uv1) {
-  const uint base = instance.firstIndex + 3u * primitive;
-  const uint i0 = instance.firstVertex + indices[base];
-  const uint i1 = instance.firstVertex + indices[base + 1u];
-  const uint i2 = instance.firstVertex + indices[base + 2u];
-  const vec3 w = vec3(1.0 - b.x - b.y, b);
-  uv0 = (instance.vertexFlags & kVertexHasUvs) != 0u ? w.x * uvs[i0] + w.y * uvs[i1] + w.z * uvs[i2] : vec2(0.0);
-  uv1 = (instance.vertexFlags & kVertexHasUvs1) != 0u ? w.x * uvs1[i0] + w.y * uvs1[i1] + w.z * uvs1[i2] : vec2(0.0);
-}
 
 // True when the candidate hit on triangle `primitive` of instance record `instanceIndex` counts.
 bool alphaPasses(uint instanceIndex, uint primitive, vec2 barycentrics, vec3 origin, vec3 direction) {
@@ -38,7 +28,7 @@ bool alphaPasses(uint instanceIndex, uint primitive, vec2 barycentrics, vec3 ori
   const TextureRef base = materialTextures[textures].refs[kTextureBaseColor];
   if (base.texture >= 0) {
     vec2 uv0, uv1;
-    candidateUvs(instance, primitive, barycentrics, uv0, uv1);
+    triangleUvsAt(instance, primitive, barycentrics, uv0, uv1);
     alpha *= sampleTextureRef(base, uv0, uv1, false).a;  // alpha is linear; only colour is sRGB-encoded
   }
   if (mode == kAlphaMask) return alpha >= materialTextures[textures].alphaCutoff;

@@ -13,7 +13,7 @@ layout(location = kPayloadShadow) rayPayloadEXT uint shadowVisible;
 // True when nothing lies on the ray in [0, tMax].
 bool traceVisibility(vec3 origin, vec3 direction, float tMax) {
   shadowVisible = 0u;
-  // Alpha-tested triangles run render.rahit (their geometry is not opaque); the others commit at once.
+  // Alpha-tested triangles run alpha.rahit (their geometry is not opaque); the others commit at once.
   const uint opaque = featureEnabled(kFeatureAlpha) ? gl_RayFlagsNoneEXT : gl_RayFlagsOpaqueEXT;
   traceRayEXT(tlas, opaque | gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT, 0xFFu, 0u, 1u,
               kMissShadow, origin, 0.0, direction, tMax, kPayloadShadow);

@@ -253,7 +253,7 @@ TEST_F(TextureRenderTest, AnAlphaMaskCutsHolesThatRaysAndShadowsPassThrough) {
   scene.camera.position = {0.0f, 8.0f, 0.001f};
   scene.camera.yfov = glm::radians(20.0f);
   const std::uint32_t size = 64;
-  // Both integrators trace through the same traversal (kernel/trace_query.glsl, or render.rahit): the path one
+  // Both integrators trace through the same traversal (kernel/trace_query.glsl, or alpha.rahit): the path one
   // here, and in the next test.
   for (const std::uint32_t integrator : {gpu::kIntegratorPath}) {
     RenderSettings settings = settingsFor(scene, integrator);
@@ -286,6 +286,29 @@ TEST_F(TextureRenderTest, AnAlphaMaskCutsHolesThatRaysAndShadowsPassThrough) {
     EXPECT_GT(quad, 500);
     EXPECT_GT(litFloor, 500);
     EXPECT_LT(shadowedFloor, litFloor / 20) << "the floor under the holes is lit through them";
+  }
+}
+
+// The ray probe (both backends: the query loop and the pipeline's any-hit program) passes through the same holes:
+// rays straight down meet the quad on its solid cells and the floor under its holes.
+TEST_F(TextureRenderTest, ProbeRaysPassThroughAnAlphaMasksHoles) {
+  Scene scene = quadOverRedFloor(alphaChecker());
+  scene.materialTextures[0].alphaMode = gpu::kAlphaMask;
+  scene.materialTextures[0].alphaCutoff = 0.5f;
+  std::vector<gpu::ProbeRay> rays;
+  std::vector<bool> solid;
+  for (int cy = 0; cy < 4; ++cy) {
+    for (int cx = 0; cx < 4; ++cx) {
+      // The centre of checker cell (cx, cy): u along +x, v along +z over the quad's [-1, 1]^2.
+      const glm::vec3 origin(-1.0f + 0.5f * (float(cx) + 0.5f), 5.0f, -1.0f + 0.5f * (float(cy) + 0.5f));
+      rays.push_back({origin, 0.0f, glm::vec3(0.0f, -1.0f, 0.0f), 100.0f});
+      solid.push_back((cx + cy) % 2 == 0);
+    }
+  }
+  const std::vector<gpu::ProbeHit> hits = traceProbeRays(device(), scene, rays);
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    EXPECT_EQ(hits[i].instance, solid[i] ? 0u : 1u) << "cell " << i;
+    EXPECT_NEAR(hits[i].t, solid[i] ? 4.0f : 5.0f, 1e-4f) << "cell " << i;
   }
 }
 
