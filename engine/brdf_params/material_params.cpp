@@ -218,11 +218,13 @@ gpu::MaterialRecord defaultRecord(std::uint32_t model) {
   record.diffuseParam = diffuse != nullptr && diffuse->rgb ? diffuse->slot : gpu::kNoParam;
   record.delta = kDelta.defaultValue;
   record.textures = -1;
-  const ParamInfo* roughness = findRole(info, "roughness");
-  const ParamInfo* metallic = findRole(info, "metallic");
-  const std::uint32_t roughnessSlot = roughness != nullptr && !roughness->rgb ? roughness->slot : gpu::kNoTextureParam;
-  const std::uint32_t metallicSlot = metallic != nullptr && !metallic->rgb ? metallic->slot : gpu::kNoTextureParam;
-  record.textureParams = roughnessSlot | (metallicSlot << 8u);
+  // The slots textures scale, by role: a scalar's, and specular_tint's first of three.
+  const auto slotOf = [&](const char* role, bool rgb) {
+    const ParamInfo* param = findRole(info, role);
+    return param != nullptr && param->rgb == rgb ? param->slot : gpu::kNoTextureParam;
+  };
+  record.textureParams = slotOf("roughness", false) | (slotOf("metallic", false) << 8u) |
+                         (slotOf("specular_weight", false) << 16u) | (slotOf("specular_tint", true) << 24u);
   return record;
 }
 

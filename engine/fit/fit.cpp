@@ -47,8 +47,13 @@ std::vector<Variable> variablesOf(const ModelInfo& model, bool isotropic) {
     return nullptr;
   };
   for (const ParamInfo& param : model.params) {
-    // Not fitted: a file, a 0/1 switch, and a transmittance (the pairs are reflections: it changes nothing).
-    if (isFileParam(param) || isSwitch(param) || param.role == "transmittance") continue;
+    // Not fitted: a file, a 0/1 switch, a transmittance (the pairs are reflections: it changes nothing), and
+    // KHR_materials_specular's strength and colour (gltf_pbr's F0 is its ior's to fit; with them it would have
+    // many equal answers).
+    if (isFileParam(param) || isSwitch(param) || param.role == "transmittance" || param.role == "specular_weight" ||
+        param.role == "specular_tint") {
+      continue;
+    }
     if (isotropic) {
       if (const ParamInfo* x = partner(param.role)) {
         for (Variable& v : variables) {

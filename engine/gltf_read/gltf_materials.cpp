@@ -247,6 +247,16 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
          formatNumber(iorMax) + "; using " + formatNumber(iorMax));
   }
   setParam(record, "ior", glm::vec3(std::min(input.ior, iorMax)), where + " (KHR_materials_ior)");
+  setParam(record, "specular", glm::vec3(input.specular), where + " (KHR_materials_specular)");
+  // The colour reaches F0 only through min(f0 colour, 1); the model's largest colour, 25, already lifts the default
+  // ior's f0 of 0.04 to 1. Larger colours (valid glTF) are used as the largest, with a warning.
+  const float colourMax = findParam(modelInfo(record.model), "specular_color")->max;
+  if (glm::any(glm::greaterThan(input.specularColor, glm::vec3(colourMax)))) {
+    warn(where + ": KHR_materials_specular.specularColorFactor is above gltf_pbr's " + formatNumber(colourMax) +
+         "; using " + formatNumber(colourMax));
+  }
+  setParam(record, "specular_color", glm::min(input.specularColor, glm::vec3(colourMax)),
+           where + " (KHR_materials_specular)");
   return record;
 }
 
@@ -330,7 +340,17 @@ void convertMaterials(Document& document, Scene& scene) {
       }
     }
     if (findPath(materialJson, {"extensions", "KHR_materials_transmission", "transmissionTexture"})) {
-      document.ignore("textures other than base colour");
+      document.ignore("transmission textures");
+    }
+    if (const json* factor = findPath(materialJson, {"extensions", "KHR_materials_specular", "specularFactor"})) {
+      input.specular = checkedFactor(factor->get<double>(), 0.0, 1.0, where, "KHR_materials_specular.specularFactor");
+    }
+    if (const json* colour = findPath(materialJson, {"extensions", "KHR_materials_specular", "specularColorFactor"})) {
+      for (int c = 0; c < 3; ++c) {
+        input.specularColor[c] = checkedFactor((*colour)[std::size_t(c)].get<double>(), 0.0,
+                                               std::numeric_limits<float>::max(), where,
+                                               "KHR_materials_specular.specularColorFactor[" + std::to_string(c) + "]");
+      }
     }
 
     gpu::MaterialRecord record = mapMetallicRoughness(input, where);
@@ -365,6 +385,17 @@ void convertMaterials(Document& document, Scene& scene) {
     if (const json* info = use({"pbrMetallicRoughness", "metallicRoughnessTexture"})) {
       if (record.textureParams != (gpu::kNoTextureParam | (gpu::kNoTextureParam << 8u))) {
         uses.refs[gpu::kTextureMetallicRoughness] = convertUse(info, "metallicRoughnessTexture");
+      }
+    }
+    // KHR_materials_specular's textures, for a model with the roles they scale (gltf_pbr).
+    if (const json* info = use({"extensions", "KHR_materials_specular", "specularTexture"})) {
+      if (((record.textureParams >> 16u) & 0xFFu) != gpu::kNoTextureParam) {
+        uses.refs[gpu::kTextureSpecular] = convertUse(info, "KHR_materials_specular.specularTexture");
+      }
+    }
+    if (const json* info = use({"extensions", "KHR_materials_specular", "specularColorTexture"})) {
+      if ((record.textureParams >> 24u) != gpu::kNoTextureParam) {
+        uses.refs[gpu::kTextureSpecularColor] = convertUse(info, "KHR_materials_specular.specularColorTexture");
       }
     }
     if (const json* info = use({"normalTexture"})) uses.refs[gpu::kTextureNormal] = convertUse(info, "normalTexture");

@@ -22,6 +22,8 @@ struct MetallicRoughness {
   float roughness = 1.0f;
   float ior = 1.5f;
   float transmission = 0.0f;
+  float specular = 1.0f;                // KHR_materials_specular.specularFactor
+  glm::vec3 specularColor{1.0f};        // KHR_materials_specular.specularColorFactor
 };
 
 // glass (eta = ior, tint = base colour) when transmission is 1, else gltf_pbr, glTF's own BRDF, with the factors

@@ -22,7 +22,8 @@ namespace {
 // and its alpha mode.
 void drawMaterialTextures(const Scene& scene, const gpu::MaterialRecord& record) {
   if (record.textures < 0 || std::size_t(record.textures) >= scene.materialTextures.size()) return;
-  static const char* const kUses[gpu::kTextureUses] = {"base colour", "metallic-roughness", "normal", "emissive"};
+  static const char* const kUses[gpu::kTextureUses] = {"base colour", "metallic-roughness", "normal", "emissive",
+                                                        "specular", "specular colour"};
   const gpu::MaterialTextures& uses = scene.materialTextures[std::size_t(record.textures)];
   for (std::uint32_t use = 0; use < gpu::kTextureUses; ++use) {
     const gpu::TextureRef& ref = uses.refs[use];

@@ -37,8 +37,9 @@ void applyNormalMap(inout Surface s, TextureRef ref) {
 
 // The material's textures (MaterialTextures): the base colour multiplies the model's diffuse colour (the
 // parameter of its `diffuse` role), the metallic-roughness texture's G and B its roughness and metallic
-// parameters (roles `roughness`, `metallic`), and the normal map bends the shading normal. An emissive texture
-// is not read (the loader says so): next event estimation would have to see it too.
+// parameters (roles `roughness`, `metallic`), KHR_materials_specular's textures its A and RGB the specular
+// strength and colour (roles `specular_weight`, `specular_tint`), and the normal map bends the shading normal.
+// The emissive texture is read where emission is (kernel/emission.glsl).
 void applyTextures(inout MaterialRecord material, inout Surface s) {
   if (!featureEnabled(kFeatureTextures) || material.textures < 0) return;
   const MaterialTextures uses = materialTextures[material.textures];
@@ -57,6 +58,19 @@ void applyTextures(inout MaterialRecord material, inout Surface s) {
     const uint metallic = (material.textureParams >> 8u) & 0xFFu;
     if (roughness != kNoTextureParam) material.params[roughness] *= texel.g;
     if (metallic != kNoTextureParam) material.params[metallic] *= texel.b;
+  }
+  const TextureRef specular = uses.refs[kTextureSpecular];
+  const uint specularSlot = (material.textureParams >> 16u) & 0xFFu;
+  if (specular.texture >= 0 && specularSlot != kNoTextureParam) {
+    material.params[specularSlot] *= sampleTextureRef(specular, s.uv, s.uv1, false).a;
+  }
+  const TextureRef specularColor = uses.refs[kTextureSpecularColor];
+  const uint tintSlot = material.textureParams >> 24u;
+  if (specularColor.texture >= 0 && tintSlot != kNoTextureParam) {
+    const vec3 texel = sampleTextureRef(specularColor, s.uv, s.uv1, true).rgb;
+    material.params[tintSlot] *= texel.r;
+    material.params[tintSlot + 1u] *= texel.g;
+    material.params[tintSlot + 2u] *= texel.b;
   }
   const TextureRef normal = uses.refs[kTextureNormal];
   if (normal.texture >= 0) applyNormalMap(s, normal);

@@ -64,8 +64,9 @@ struct MaterialRecord {
   int textures;           // -1: none; else its MaterialTextures record (binding kBindingMaterialTextures)
   uint diffuseParam;      // slot of the model's diffuse colour (its `diffuse` role), kNoParam without one
   vec3 emission;          // emitted radiance L_e (linear RGB) from the front face; the path integrator shows it
-  uint textureParams;     // slots a metallic-roughness texture scales: roughness in bits 0-7, metallic in 8-15
-                          // (the `roughness` and `metallic` roles), kNoTextureParam in either without one
+  uint textureParams;     // slots textures scale, by role, kNoTextureParam in any without one: roughness
+                          // (bits 0-7) and metallic (8-15) by the metallic-roughness texture, specular_weight
+                          // (16-23) and specular_tint's first (24-31) by KHR_materials_specular's
   float params[kMaxMaterialParams];
 };
 RL_CHECK_SIZE(MaterialRecord, 96);
@@ -107,7 +108,9 @@ RL_CONST uint kTextureBaseColor = 0;          // sRGB; multiplies the diffuse co
 RL_CONST uint kTextureMetallicRoughness = 1;  // linear; G scales roughness, B metallic
 RL_CONST uint kTextureNormal = 2;             // linear; tangent-space normal, 2 c - 1
 RL_CONST uint kTextureEmissive = 3;           // sRGB; multiplies the emitted radiance
-RL_CONST uint kTextureUses = 4;
+RL_CONST uint kTextureSpecular = 4;           // linear; A scales the specular_weight role (KHR_materials_specular)
+RL_CONST uint kTextureSpecularColor = 5;      // sRGB; RGB scales the specular_tint role (KHR_materials_specular)
+RL_CONST uint kTextureUses = 6;
 
 // MaterialTextures.alphaMode (glTF alphaMode). Opaque surfaces are opaque geometry: traversal never asks.
 RL_CONST uint kAlphaOpaque = 0;
@@ -121,7 +124,7 @@ struct MaterialTextures {
   float alphaCutoff;  // kAlphaMask only
   uint reserved;
 };
-RL_CHECK_SIZE(MaterialTextures, 176);
+RL_CHECK_SIZE(MaterialTextures, 256);
 
 // One light for next event estimation, of any kind (generated/light_kinds.h, from shaders/lights/lights.cmake):
 // punctual lights, emitting triangles and spheres in world space, the environment. What p0, p1, p2 and radiance
