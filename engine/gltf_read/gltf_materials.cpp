@@ -74,6 +74,23 @@ std::uint32_t wrapMode(int glMode, const std::string& where) {
 }
 
 // Base-colour textures as RGBA8, each glTF texture converted once however many materials use it.
+// A PNG's size from its IHDR chunk. stb_image refuses to report the size of a PNG past 2^30 bytes of pixels
+// ("too large"), which would otherwise read as "not a PNG"; the limits below then name the size instead.
+bool pngHeaderSize(const std::vector<unsigned char>& bytes, int& width, int& height) {
+  static const unsigned char kSignature[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (bytes.size() < 24 || !std::equal(std::begin(kSignature), std::end(kSignature), bytes.begin()) ||
+      std::string(bytes.begin() + 12, bytes.begin() + 16) != "IHDR") {
+    return false;
+  }
+  const auto be32 = [&](std::size_t at) {
+    return std::uint32_t(bytes[at]) << 24 | std::uint32_t(bytes[at + 1]) << 16 | std::uint32_t(bytes[at + 2]) << 8 |
+           std::uint32_t(bytes[at + 3]);
+  };
+  width = int(std::min<std::uint32_t>(be32(16), INT32_MAX));
+  height = int(std::min<std::uint32_t>(be32(20), INT32_MAX));
+  return true;
+}
+
 class TextureConverter {
  public:
   TextureConverter(Document& document, Scene& scene) : document_(document), scene_(scene) {}
@@ -98,7 +115,7 @@ class TextureConverter {
       document_.fail(textureName + ": image " + std::to_string(gltfTexture.source) + " does not exist (the file has " +
                      std::to_string(model.images.size()) + ")");
     }
-    Texture texture = decode(model.images[std::size_t(gltfTexture.source)], gltfTexture.source);
+    Texture texture = decoded(gltfTexture.source, where);
     if (gltfTexture.sampler >= 0) {
       if (std::size_t(gltfTexture.sampler) >= model.samplers.size()) {
         document_.fail(textureName + ": sampler " + std::to_string(gltfTexture.sampler) + " does not exist");
@@ -116,11 +133,19 @@ class TextureConverter {
   }
 
  private:
+  // Image `imageIndex` decoded, once however many textures use it (each with its own sampler); `use` (the material
+  // and the texture use) starts the messages of its errors.
+  Texture decoded(int imageIndex, const std::string& use) {
+    const auto cached = images_.find(imageIndex);
+    if (cached != images_.end()) return cached->second;
+    return images_[imageIndex] = decode(document_.model.images[std::size_t(imageIndex)], imageIndex, use);
+  }
+
   // The image's bytes are still encoded (gltf_files.h, keepEncodedImage): its size is read from the header
   // and checked against the limits before anything is decoded. stb converts any channel count and 8 or 16
   // bits to RGBA8, with the colour still sRGB-encoded.
-  Texture decode(const tinygltf::Image& image, int imageIndex) {
-    const std::string where = describe("image", imageIndex, image.name) +
+  Texture decode(const tinygltf::Image& image, int imageIndex, const std::string& use) {
+    const std::string where = use + ": " + describe("image", imageIndex, image.name) +
                               (!image.uri.empty() && !tinygltf::IsDataURI(image.uri) ? " ('" + image.uri + "')" : "");
     const auto* bytes = image.image.data();
     const int size = static_cast<int>(std::min<std::size_t>(image.image.size(), INT32_MAX));
@@ -131,7 +156,8 @@ class TextureConverter {
       document_.fail(where + (external ? ": its file is missing or unreadable (URIs resolve against the scene's folder)"
                                        : ": has no image data"));
     }
-    if (!stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
+    if (!stbi_info_from_memory(bytes, size, &width, &height, &channels) &&
+        !pngHeaderSize(image.image, width, height)) {
       document_.fail(where + ": is not a PNG or JPEG image raylab can read (" + std::string(stbi_failure_reason()) +
                      ")");
     }
@@ -161,7 +187,8 @@ class TextureConverter {
 
   Document& document_;
   Scene& scene_;
-  std::map<int, int> cache_;
+  std::map<int, int> cache_;       // glTF texture -> scene texture
+  std::map<int, Texture> images_;  // glTF image -> its texels
   std::uint64_t decodedTexels_ = 0;
 };
 

@@ -106,7 +106,8 @@ TEST(GltfHostile, ImagesNoMaterialUsesAreNotDecoded) {
   const int material = b.addMaterial({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
   b.doc()["meshes"][0]["primitives"][0]["material"] = material;
   const std::string error = errorOf([&] { b.load(); });
-  EXPECT_NE(error.find("test: image 0: is 16384x16384, over raylab's limit of 33554432 texels"), std::string::npos)
+  EXPECT_NE(error.find("test: material 0 baseColorTexture: image 0: is 16384x16384, over raylab's limit of 33554432 texels"),
+            std::string::npos)
       << error;
 }
 

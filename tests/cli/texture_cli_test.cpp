@@ -1,0 +1,93 @@
+// Bad textures as `raylab render` users meet them: each is exit 1 with a message naming the material and the
+// texture use, and nothing written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "../scene/gltf_test_support.h"
+#include "support/run_command.h"
+
+namespace raylab::test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// A PNG signature and header claiming width x height, with no pixel data: enough for the size check.
+std::string pngHeader(std::uint32_t width, std::uint32_t height) {
+  std::string bytes = "\x89PNG\r\n\x1a\n";
+  const auto be32 = [&](std::uint32_t v) {
+    for (int shift = 24; shift >= 0; shift -= 8) bytes += char((v >> shift) & 0xFF);
+  };
+  be32(13);
+  bytes += "IHDR";
+  be32(width);
+  be32(height);
+  bytes += std::string("\x08\x02\x00\x00\x00", 5);
+  be32(0);
+  return bytes;
+}
+
+// A quad with TEXCOORD_0 whose material 'panel' reads image `uri` through `use` (a JSON path under the material).
+GltfBuilder texturedQuad(const std::string& uri, const std::vector<std::string>& use) {
+  GltfBuilder b;
+  const int mesh = b.addQuad();
+  b.doc()["meshes"][mesh]["primitives"][0]["attributes"]["TEXCOORD_0"] = b.addFloats({0, 0, 1, 0, 1, 1, 0, 1}, "VEC2");
+  b.doc()["images"] = json::array({{{"uri", uri}}});
+  b.doc()["textures"] = json::array({{{"source", 0}}});
+  json material = {{"name", "panel"}};
+  json* at = &material;
+  for (const std::string& key : use) at = &(*at)[key];
+  *at = {{"index", 0}};
+  b.doc()["meshes"][mesh]["primitives"][0]["material"] = b.addMaterial(material);
+  b.addNode({{"mesh", mesh}});
+  return b;
+}
+
+TEST(TextureCli, BadTexturesExitOneNamingTheMaterialAndTextureAndWriteNothing) {
+  const fs::path dir = freshDir("texture_cli", "bad_textures");
+  std::ofstream(dir / "corrupt.png") << "not a PNG at all";
+  std::ofstream(dir / "huge.png", std::ios::binary) << pngHeader(20000, 20000);
+  struct Case {
+    const char* name;
+    GltfBuilder scene;
+    const char* mentions;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"missing image", texturedQuad("missing.png", {"pbrMetallicRoughness", "baseColorTexture"}),
+                   "material 0 'panel' baseColorTexture: image 0 ('missing.png'): its file is missing"});
+  GltfBuilder emissive = texturedQuad("corrupt.png", {"emissiveTexture"});
+  emissive.doc()["materials"][0]["emissiveFactor"] = {1.0, 1.0, 1.0};  // the default 0 reads no texture
+  cases.push_back({"corrupt image", emissive,
+                   "material 0 'panel' emissiveTexture: image 0 ('corrupt.png'): is not a PNG or JPEG image"});
+  cases.push_back({"normal map over the size limit", texturedQuad("huge.png", {"normalTexture"}),
+                   "material 0 'panel' normalTexture: image 0 ('huge.png'): is 20000x20000, over raylab's limit"});
+  GltfBuilder outOfRange = texturedQuad("corrupt.png", {"pbrMetallicRoughness", "metallicRoughnessTexture"});
+  outOfRange.doc()["materials"][0]["pbrMetallicRoughness"]["metallicRoughnessTexture"]["index"] = 7;
+  cases.push_back({"texture index out of range", outOfRange,
+                   "material 0 'panel' metallicRoughnessTexture: texture 7 does not exist (the file has 1)"});
+  for (const double cutoff : {-0.5, 1e39}) {  // below 0; beyond a float (JSON has no NaN)
+    GltfBuilder masked = texturedQuad("corrupt.png", {"occlusionTexture"});
+    masked.doc()["materials"][0].erase("occlusionTexture");
+    masked.doc()["materials"][0]["alphaMode"] = "MASK";
+    masked.doc()["materials"][0]["alphaCutoff"] = cutoff;
+    cases.push_back({"bad alphaCutoff", masked, "material 0 'panel': alphaCutoff"});
+  }
+  const std::string out = (dir / "image.exr").string(), png = (dir / "image.png").string();
+  for (const Case& c : cases) {
+    fs::remove(out);
+    fs::remove(png);
+    const fs::path scene = dir / "scene.gltf";
+    std::ofstream(scene) << c.scene.text();
+    const CommandResult result = runRaylab({"render", scene.string(), "--out", out, "--png", png, "--spp", "1",
+                                            "--width", "16", "--height", "16"});
+    EXPECT_EQ(result.exitCode, 1) << c.name << ": " << result.output;
+    EXPECT_NE(result.output.find(c.mentions), std::string::npos) << c.name << ": " << result.output;
+    EXPECT_FALSE(fs::exists(out)) << c.name;
+    EXPECT_FALSE(fs::exists(png)) << c.name;
+  }
+}
+
+}  // namespace
+}  // namespace raylab::test
