@@ -142,8 +142,8 @@ class TextureConverter {
   }
 
   // The image's bytes are still encoded (gltf_files.h, keepEncodedImage): its size is read from the header
-  // and checked against the limits before anything is decoded. stb converts any channel count and 8 or 16
-  // bits to RGBA8, with the colour still sRGB-encoded.
+  // and checked against the limits before anything is decoded. stb converts any channel count to RGBA, 8-bit
+  // images to RGBA8 and 16-bit ones to RGBA16, with the colour still sRGB-encoded.
   Texture decode(const tinygltf::Image& image, int imageIndex, const std::string& use) {
     const std::string where = use + ": " + describe("image", imageIndex, image.name) +
                               (!image.uri.empty() && !tinygltf::IsDataURI(image.uri) ? " ('" + image.uri + "')" : "");
@@ -167,21 +167,30 @@ class TextureConverter {
                      ", over raylab's limit of " + std::to_string(kMaxImageTexels) +
                      " texels and " + std::to_string(kMaxImageSide) + " a side (docs/scenes.md, Limits); scale it down");
     }
-    decodedTexels_ += texels;
+    // A 16-bit image keeps its precision (a normal map's slopes, a roughness ramp) and takes twice the memory.
+    const bool sixteen = stbi_is_16_bit_from_memory(bytes, size) != 0;
+    decodedTexels_ += sixteen ? 2 * texels : texels;
     if (decodedTexels_ > kMaxSceneTexels) {
       document_.fail(where + ": the scene's textures together exceed raylab's limit of " +
-                     std::to_string(kMaxSceneTexels) + " texels (docs/scenes.md, Limits)");
+                     std::to_string(kMaxSceneTexels) + " texels (16-bit images count twice; docs/scenes.md, Limits)");
     }
-    stbi_uc* pixels = stbi_load_from_memory(bytes, size, &width, &height, &channels, 4);
-    if (pixels == nullptr) document_.fail(where + ": cannot be decoded (" + std::string(stbi_failure_reason()) + ")");
     Texture texture;
+    if (sixteen) {
+      stbi_us* pixels = stbi_load_16_from_memory(bytes, size, &width, &height, &channels, 4);
+      if (pixels == nullptr) document_.fail(where + ": cannot be decoded (" + std::string(stbi_failure_reason()) + ")");
+      texture.rgba16.assign(pixels, pixels + texels * 4);
+      stbi_image_free(pixels);
+    } else {
+      stbi_uc* pixels = stbi_load_from_memory(bytes, size, &width, &height, &channels, 4);
+      if (pixels == nullptr) document_.fail(where + ": cannot be decoded (" + std::string(stbi_failure_reason()) + ")");
+      texture.rgba.assign(pixels, pixels + texels * 4);
+      stbi_image_free(pixels);
+    }
     texture.name = !image.name.empty() ? image.name
                    : (!image.uri.empty() && !tinygltf::IsDataURI(image.uri)) ? image.uri
                                                                              : "image " + std::to_string(imageIndex);
     texture.width = std::uint32_t(width);
     texture.height = std::uint32_t(height);
-    texture.rgba.assign(pixels, pixels + texels * 4);
-    stbi_image_free(pixels);
     return texture;
   }
 

@@ -88,20 +88,30 @@ PackedMeshes packMeshes(const Scene& scene) {
   return packed;
 }
 
-// Every texture's texels one after another, as packed RGBA8 words, and the record saying where each starts.
+// Every texture's texels one after another, as packed RGBA8 words (RGBA16: two words a texel), and the record
+// saying where each starts.
 void packTextures(const Scene& scene, std::vector<gpu::TextureRecord>& records, std::vector<std::uint32_t>& texels) {
   for (const Texture& texture : scene.textures) {
     const std::size_t count = std::size_t(texture.width) * texture.height;
-    if (count == 0 || texture.rgba.size() != count * 4) {
-      throw Error("texture '" + texture.name + "': " + std::to_string(texture.rgba.size()) + " bytes for " +
-                  std::to_string(texture.width) + "x" + std::to_string(texture.height) + " RGBA8 texels");
+    const bool sixteen = !texture.rgba16.empty();
+    const std::size_t values = sixteen ? texture.rgba16.size() : texture.rgba.size();
+    if (count == 0 || values != count * 4) {
+      throw Error("texture '" + texture.name + "': " + std::to_string(values) + " channel values for " +
+                  std::to_string(texture.width) + "x" + std::to_string(texture.height) + " RGBA texels");
     }
     records.push_back({static_cast<std::uint32_t>(texels.size()), texture.width, texture.height,
-                       texture.wrapS | (texture.wrapT << 2) | (texture.nearest ? gpu::kFilterNearest : 0u)});
+                       texture.wrapS | (texture.wrapT << 2) | (texture.nearest ? gpu::kFilterNearest : 0u) |
+                           (sixteen ? gpu::kTexels16 : 0u)});
     for (std::size_t i = 0; i < count; ++i) {
-      const std::uint8_t* t = &texture.rgba[i * 4];
-      texels.push_back(std::uint32_t(t[0]) | std::uint32_t(t[1]) << 8 | std::uint32_t(t[2]) << 16 |
-                       std::uint32_t(t[3]) << 24);
+      if (sixteen) {
+        const std::uint16_t* t = &texture.rgba16[i * 4];
+        texels.push_back(std::uint32_t(t[0]) | std::uint32_t(t[1]) << 16);
+        texels.push_back(std::uint32_t(t[2]) | std::uint32_t(t[3]) << 16);
+      } else {
+        const std::uint8_t* t = &texture.rgba[i * 4];
+        texels.push_back(std::uint32_t(t[0]) | std::uint32_t(t[1]) << 8 | std::uint32_t(t[2]) << 16 |
+                         std::uint32_t(t[3]) << 24);
+      }
     }
   }
 }
@@ -133,10 +143,13 @@ void checkDeviceLimits(const Device& device, const Scene& scene) {
                   ": split the mesh into several primitives");
     }
   }
-  for (const Texture& texture : scene.textures) texels += std::uint64_t(texture.width) * texture.height;
+  // Texel words: one per RGBA8 texel, two per RGBA16 one.
+  for (const Texture& texture : scene.textures) {
+    texels += std::uint64_t(texture.width) * texture.height * (texture.rgba16.empty() ? 1 : 2);
+  }
   checkBuffer("vertex positions (" + std::to_string(vertices) + ")", vertices * sizeof(glm::vec3));
   checkBuffer("triangle indices (" + std::to_string(indices) + ")", indices * sizeof(std::uint32_t));
-  checkBuffer("texture texels (" + std::to_string(texels) + ")", texels * sizeof(std::uint32_t));
+  checkBuffer("texture texels (" + std::to_string(texels) + " words)", texels * sizeof(std::uint32_t));
   checkBuffer("spheres (" + std::to_string(scene.spheres.size()) + ")",
               scene.spheres.size() * sizeof(gpu::SphereRecord));
   std::uint64_t emitting = scene.lights.size() + scene.spheres.size() + 1;

@@ -54,13 +54,14 @@ struct Material {
   gpu::MaterialRecord record;
 };
 
-// An RGBA8 image as its file stores it, rows from the top; each use says whether it is sRGB colour or data
-// (gpu::TextureRef, gpu::MaterialTextures).
+// An RGBA image as its file stores it, 8 or 16 bits a channel, rows from the top; each use says whether it is sRGB
+// colour or data (gpu::TextureRef, gpu::MaterialTextures).
 struct Texture {
   std::string name;
   std::uint32_t width = 0;
   std::uint32_t height = 0;
-  std::vector<std::uint8_t> rgba;  // 4 bytes per texel
+  std::vector<std::uint8_t> rgba;     // 4 bytes per texel, or empty for a 16-bit image
+  std::vector<std::uint16_t> rgba16;  // a 16-bit image (a normal map's precision): 4 values per texel
   std::uint32_t wrapS = gpu::kWrapRepeat;
   std::uint32_t wrapT = gpu::kWrapRepeat;
   bool nearest = false;            // glTF magFilter NEAREST: no bilinear filtering

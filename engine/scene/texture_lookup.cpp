@@ -20,8 +20,11 @@ long long wrapTexel(long long i, long long size, std::uint32_t mode) {
 glm::dvec4 texel(const Texture& texture, long long x, long long y, bool srgb) {
   const long long wx = wrapTexel(x, texture.width, texture.wrapS);
   const long long wy = wrapTexel(y, texture.height, texture.wrapT);
-  const std::uint8_t* bytes = &texture.rgba[4 * std::size_t(wy * texture.width + wx)];
-  glm::dvec4 value(bytes[0] / 255.0, bytes[1] / 255.0, bytes[2] / 255.0, bytes[3] / 255.0);
+  const std::size_t at = 4 * std::size_t(wy * texture.width + wx);
+  glm::dvec4 value;
+  for (int c = 0; c < 4; ++c) {
+    value[c] = texture.rgba16.empty() ? texture.rgba[at + std::size_t(c)] / 255.0 : texture.rgba16[at + std::size_t(c)] / 65535.0;
+  }
   if (srgb) {
     for (int c = 0; c < 3; ++c) value[c] = srgbToLinear(value[c]);
   }

@@ -1,4 +1,4 @@
-// Material textures: RGBA8 texels, decoded from sRGB for colour uses and read as they are for data (metallic-
+// Material textures: RGBA8 or RGBA16 texels, decoded from sRGB for colour uses and read as they are for data (metallic-
 // roughness, normals), filtered bilinearly (or by the nearest texel, glTF's magFilter NEAREST) with glTF's wrap
 // modes, at the use's UV set through its KHR_texture_transform. Compute kernels have no derivatives for mip
 // selection, so there is no mipmapping; jittered supersampling averages the texture over each pixel instead.
@@ -23,7 +23,11 @@ int wrapTexel(int i, int size, uint mode) {
 vec4 fetchTexel(TextureRecord texture, int x, int y, bool srgb) {
   const int wx = wrapTexel(x, int(texture.width), texture.wrap & 3u);
   const int wy = wrapTexel(y, int(texture.height), (texture.wrap >> 2u) & 3u);
-  const vec4 texel = unpackUnorm4x8(texels[texture.firstTexel + uint(wy) * texture.width + uint(wx)]);
+  const uint at = uint(wy) * texture.width + uint(wx);
+  const vec4 texel = (texture.wrap & kTexels16) != 0u
+                         ? vec4(unpackUnorm2x16(texels[texture.firstTexel + 2u * at]),
+                                unpackUnorm2x16(texels[texture.firstTexel + 2u * at + 1u]))
+                         : unpackUnorm4x8(texels[texture.firstTexel + at]);
   return srgb ? vec4(srgbToLinear(texel.rgb), texel.a) : texel;  // decode before filtering: sRGB values do not average
 }
 

@@ -79,15 +79,17 @@ RL_CONST uint kWrapMirror = 2;
 
 // TextureRecord.wrap bit 4: magnification by the nearest texel (glTF magFilter NEAREST) instead of bilinear.
 RL_CONST uint kFilterNearest = 16;
+// TextureRecord.wrap bit 5: RGBA16 texels, two words each (R | G << 16, B | A << 16), instead of one RGBA8 word.
+RL_CONST uint kTexels16 = 32;
 
-// A texture: RGBA8 texels as the file stores them, rows from the top. Whether they are sRGB-encoded colour
-// (base colour, emissive) or linear data (metallic-roughness, normals) is the use's (TextureRef), so one image
-// is decoded once and shared by every use.
+// A texture: RGBA8 (or RGBA16) texels as the file stores them, rows from the top. Whether they are sRGB-encoded
+// colour (base colour, emissive) or linear data (metallic-roughness, normals) is the use's (TextureRef), so one
+// image is decoded once and shared by every use.
 struct TextureRecord {
-  uint firstTexel;  // into the texel buffer
+  uint firstTexel;  // its first word in the texel buffer
   uint width;
   uint height;
-  uint wrap;        // the wrap modes, and kFilterNearest
+  uint wrap;        // the wrap modes, kFilterNearest and kTexels16
 };
 RL_CHECK_SIZE(TextureRecord, 16);
 

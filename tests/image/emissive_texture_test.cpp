@@ -77,19 +77,25 @@ const std::vector<std::uint8_t> kSixTexels = {10, 200, 30, 255, 250, 40, 90, 255
 
 // Seen straight from above by pixel-centre rays, with the path integrator at depth 0, each pixel is L_e at its
 // point: the factor times the CPU reference's lookup. Repeat, mirror and clamp, bilinear and nearest, both UV
-// sets, a transform that rotates, scales and offsets the UVs over several periods.
+// sets, 8- and 16-bit texels, a transform that rotates, scales and offsets the UVs over several periods.
 TEST_F(EmissiveTextureTest, EachPointEmitsTheTexelTheCpuReferenceReads) {
   struct Case {
     std::uint32_t wrapS, wrapT;
     bool nearest;
     std::uint32_t texCoord;
+    bool sixteen = false;  // RGBA16 texels, between the 8-bit values
   };
   const glm::vec3 factor(2.0f, 1.0f, 0.5f);
   Mesh mesh = quad(1.0f);
   mesh.uvs1 = {{0.3f, 1.0f}, {0.9f, 0.8f}, {1.1f, -0.2f}, {0.2f, 0.1f}};  // a second, skewed parameterisation
   for (const Case& c : {Case{gpu::kWrapRepeat, gpu::kWrapMirror, false, 0}, Case{gpu::kWrapMirror, gpu::kWrapClamp, true, 1},
-                        Case{gpu::kWrapClamp, gpu::kWrapRepeat, false, 1}}) {
+                        Case{gpu::kWrapClamp, gpu::kWrapRepeat, false, 1},
+                        Case{gpu::kWrapRepeat, gpu::kWrapRepeat, false, 0, true}}) {
     Texture t = texture(3, 2, kSixTexels);
+    if (c.sixteen) {
+      for (std::uint8_t v : kSixTexels) t.rgba16.push_back(std::uint16_t(std::min(65535, v * 257 + 97)));
+      t.rgba.clear();
+    }
     t.wrapS = c.wrapS;
     t.wrapT = c.wrapT;
     t.nearest = c.nearest;
@@ -124,7 +130,7 @@ TEST_F(EmissiveTextureTest, EachPointEmitsTheTexelTheCpuReferenceReads) {
         for (int k = 0; k < 3; ++k) {
           ASSERT_NEAR(pixel[k], expected[k], 2e-4 * std::max(1.0, expected[k]))
               << "channel " << k << " at pixel " << x << "," << y << ", wrap " << c.wrapS << "/" << c.wrapT
-              << (c.nearest ? " nearest" : " bilinear") << ", TEXCOORD_" << c.texCoord;
+              << (c.nearest ? " nearest" : " bilinear") << ", TEXCOORD_" << c.texCoord << (c.sixteen ? ", 16-bit" : "");
         }
         ++compared;
       }

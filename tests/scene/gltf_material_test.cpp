@@ -240,7 +240,7 @@ GltfBuilder texturedScene(const std::vector<std::string>& images, const json& sa
   return b;
 }
 
-TEST(GltfMaterial, BaseColourTexturesAreDecodedToRgba8WithTheirWrapModes) {
+TEST(GltfMaterial, BaseColourTexturesAreDecodedToRgbaWithTheirWrapModes) {
   const GltfBuilder b = texturedScene(
       {kPngRgb, kPngGrey16, kPngGreyAlpha},
       json::array({{{"wrapS", 33071}, {"wrapT", 33648}}, {{"wrapS", 33648}}}),
@@ -261,8 +261,10 @@ TEST(GltfMaterial, BaseColourTexturesAreDecodedToRgba8WithTheirWrapModes) {
   EXPECT_EQ(rgb.wrapT, gpu::kWrapMirror);
 
   const Texture& grey = scene.textures[1];
-  EXPECT_EQ(grey.rgba, (std::vector<std::uint8_t>{0, 0, 0, 255, 128, 128, 128, 255, 255, 255, 255, 255}))
-      << "16 bits round to 8, grey expands to RGB";
+  EXPECT_TRUE(grey.rgba.empty());
+  EXPECT_EQ(grey.rgba16, (std::vector<std::uint16_t>{0, 0, 0, 65535, 0x8080, 0x8080, 0x8080, 65535, 65535, 65535,
+                                                     65535, 65535}))
+      << "16 bits kept, grey expands to RGB";
   EXPECT_EQ(grey.wrapS, gpu::kWrapMirror);
   EXPECT_EQ(grey.wrapT, gpu::kWrapRepeat) << "glTF's default wrap";
 
