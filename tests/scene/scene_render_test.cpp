@@ -142,6 +142,48 @@ TEST_F(SceneRenderTest, BoxTexturedsEncodingsRenderTheSameImage) {
   EXPECT_GT(differing, box / 10) << "the mirrored faces show";
 }
 
+// TextureTransformTest (Khronos) renders as its KHR_texture_transforms baked into the meshes' UVs say it must:
+// the transform is affine, so transforming each vertex's UVs on the host and dropping the transform gives the same
+// image up to float rounding (a few pixels on texel edges); and it is not the image without the transforms.
+TEST_F(SceneRenderTest, TextureTransformTestEqualsItsTransformsBakedIntoTheUvs) {
+  ASSERT_TRUE(fs::is_directory(assimpDirectory()))
+      << assimpDirectory() << " is missing: install the assimp-testmodels package (run tools/setup.sh test)";
+  const Scene scene = loadQuietly(assimpDirectory() / "textureTransform/TextureTransformTest.gltf");
+  Scene baked = scene, ignored = scene;
+  int transformed = 0;
+  for (const MeshInstance& instance : scene.instances) {
+    const int textures = scene.materials[instance.material].record.textures;
+    if (textures < 0) continue;
+    const gpu::TextureRef& ref = scene.materialTextures[std::size_t(textures)].refs[gpu::kTextureBaseColor];
+    if (ref.row0 == glm::vec3(1, 0, 0) && ref.row1 == glm::vec3(0, 1, 0) && ref.texCoord == 0) continue;
+    Mesh& mesh = baked.meshes[instance.mesh];
+    const std::vector<glm::vec2>& set = ref.texCoord == 1 ? scene.meshes[instance.mesh].uvs1 : scene.meshes[instance.mesh].uvs;
+    ASSERT_EQ(set.size(), mesh.positions.size());
+    for (std::size_t v = 0; v < set.size(); ++v) {
+      const glm::vec3 uv(set[v], 1.0f);
+      mesh.uvs[v] = glm::vec2(glm::dot(ref.row0, uv), glm::dot(ref.row1, uv));
+    }
+    for (Scene* s : {&baked, &ignored}) s->materialTextures[std::size_t(textures)].refs[gpu::kTextureBaseColor] = textureRef(ref.texture);
+    ++transformed;
+  }
+  EXPECT_EQ(transformed, 6) << "offset U, V and UV, rotation, scale, all";
+  const Image a = render(device(), scene, 160, 120, 1);
+  const Image b = render(device(), baked, 160, 120, 1);
+  const Image c = render(device(), ignored, 160, 120, 1);
+  std::size_t differBaked = 0, differIgnored = 0;
+  for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+    const float dB = std::max({std::abs(a.rgba[i] - b.rgba[i]), std::abs(a.rgba[i + 1] - b.rgba[i + 1]),
+                               std::abs(a.rgba[i + 2] - b.rgba[i + 2])});
+    const float dC = std::max({std::abs(a.rgba[i] - c.rgba[i]), std::abs(a.rgba[i + 1] - c.rgba[i + 1]),
+                               std::abs(a.rgba[i + 2] - c.rgba[i + 2])});
+    differBaked += dB > 1e-3f;
+    differIgnored += dC > 1e-3f;
+  }
+  const std::size_t pixels = a.rgba.size() / 4;
+  EXPECT_LT(differBaked, pixels / 200) << "baked UVs render alike, but for texel edges";
+  EXPECT_GT(differIgnored, pixels / 50) << "without the transforms the squares show other texels";
+}
+
 // The luminance-like (r + g + b) / 3 of the pixels whose centres lie within kDiscFraction of a sphere's
 // projected radius from its projected centre, projecting as applyCamera sets the kernel's camera up.
 std::vector<float> discPixels(const Image& image, const Scene& scene, const Sphere& sphere) {
