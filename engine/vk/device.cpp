@@ -437,12 +437,15 @@ Device createDevice(const Instance& instance, const DeviceReport& report, VkSurf
   poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   poolInfo.queueFamilyIndex = device.queueFamily;
   VK_CHECK(vkCreateCommandPool(device.handle, &poolInfo, nullptr, &device.commandPool));
+  VkPipelineCacheCreateInfo cacheInfo{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+  VK_CHECK(vkCreatePipelineCache(device.handle, &cacheInfo, nullptr, &device.pipelineCache));
   return device;
 }
 
 void destroyDevice(Device& device) {
   if (device.handle == VK_NULL_HANDLE) return;
   vkDeviceWaitIdle(device.handle);
+  vkDestroyPipelineCache(device.handle, device.pipelineCache, nullptr);
   vkDestroyCommandPool(device.handle, device.commandPool, nullptr);
   vkDestroyDevice(device.handle, nullptr);
   device = {};

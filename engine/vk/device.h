@@ -79,6 +79,9 @@ struct Device {
   VkQueue queue = VK_NULL_HANDLE;  // graphics+compute where available: the viewer presents from it too
   std::uint32_t queueFamily = 0;
   VkCommandPool commandPool = VK_NULL_HANDLE;
+  // Every pipeline of the process is created through it: a kernel variant created again (the viewer's swaps, a
+  // test's many renders) is found in memory instead of compiled from SPIR-V again.
+  VkPipelineCache pipelineCache = VK_NULL_HANDLE;
   DeviceReport report;
   VkPhysicalDeviceProperties properties{};
   VkPhysicalDeviceMemoryProperties memory{};

@@ -85,7 +85,7 @@ VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, 
   VkPipeline pipeline = VK_NULL_HANDLE;
   const VkResult result = injectedCreationFailure("vkCreateComputePipelines")
                               ? VK_ERROR_OUT_OF_DEVICE_MEMORY
-                              : vkCreateComputePipelines(device.handle, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+                              : vkCreateComputePipelines(device.handle, device.pipelineCache, 1, &info, nullptr, &pipeline);
   vkDestroyShaderModule(device.handle, module, nullptr);
   VK_CHECK(result);
   setDebugName(device, pipeline, name.c_str());

@@ -83,7 +83,7 @@ VkPipeline createRayTracingPipeline(const Device& device, VkPipelineLayout layou
     info.pGroups = groups.data();
     info.maxPipelineRayRecursionDepth = program.maxRecursionDepth;
     info.layout = layout;
-    VK_CHECK(device.ext.createRayTracingPipelines(device.handle, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &info, nullptr,
+    VK_CHECK(device.ext.createRayTracingPipelines(device.handle, VK_NULL_HANDLE, device.pipelineCache, 1, &info, nullptr,
                                                   &pipeline));
   } catch (...) {
     for (VkShaderModule module : modules) vkDestroyShaderModule(device.handle, module, nullptr);
