@@ -14,21 +14,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// A PNG signature and header claiming width x height, with no pixel data: enough for the size check.
-std::string pngHeader(std::uint32_t width, std::uint32_t height) {
-  std::string bytes = "\x89PNG\r\n\x1a\n";
-  const auto be32 = [&](std::uint32_t v) {
-    for (int shift = 24; shift >= 0; shift -= 8) bytes += char((v >> shift) & 0xFF);
-  };
-  be32(13);
-  bytes += "IHDR";
-  be32(width);
-  be32(height);
-  bytes += std::string("\x08\x02\x00\x00\x00", 5);
-  be32(0);
-  return bytes;
-}
-
 // A quad with TEXCOORD_0 whose material 'panel' reads image `uri` through `use` (a JSON path under the material).
 GltfBuilder texturedQuad(const std::string& uri, const std::vector<std::string>& use) {
   GltfBuilder b;

@@ -19,22 +19,6 @@ void writeFile(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
 }
 
-// The first 33 bytes of a PNG: signature and IHDR, claiming width x height RGB8. stb reads the size from this
-// alone; decoding it fails (no pixel data), so a load that decoded it would fail.
-std::string pngHeader(std::uint32_t width, std::uint32_t height) {
-  std::string bytes = "\x89PNG\r\n\x1a\n";
-  const auto be32 = [&](std::uint32_t v) {
-    for (int shift = 24; shift >= 0; shift -= 8) bytes += char((v >> shift) & 0xFF);
-  };
-  be32(13);
-  bytes += "IHDR";
-  be32(width);
-  be32(height);
-  bytes += std::string("\x08\x02\x00\x00\x00", 5);
-  be32(0);  // CRC, which stb does not check
-  return bytes;
-}
-
 std::string base64(const std::string& bytes) {
   static const char* kDigits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;

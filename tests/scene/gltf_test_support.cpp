@@ -153,4 +153,18 @@ std::string GltfBuilder::text() const {
 
 Scene GltfBuilder::load(const GltfOptions& options) const { return loadGltfText(text(), "", "test", options); }
 
+std::string pngHeader(std::uint32_t width, std::uint32_t height) {
+  std::string bytes = "\x89PNG\r\n\x1a\n";
+  const auto be32 = [&](std::uint32_t v) {
+    for (int shift = 24; shift >= 0; shift -= 8) bytes += char((v >> shift) & 0xFF);
+  };
+  be32(13);
+  bytes += "IHDR";
+  be32(width);
+  be32(height);
+  bytes += std::string("\x08\x02\x00\x00\x00", 5);
+  be32(0);  // CRC, which stb does not check
+  return bytes;
+}
+
 }  // namespace raylab::test

@@ -26,6 +26,10 @@ std::vector<std::filesystem::path> assetFiles();
 // An empty scratch directory TempDir()/raylab_gltf_<suite>/<name>, for files a test writes.
 std::filesystem::path freshDir(const std::string& suite, const std::string& name);
 
+// A PNG signature and IHDR chunk claiming width x height (8-bit RGB) with no pixel data: enough for the size check
+// that comes before decoding.
+std::string pngHeader(std::uint32_t width, std::uint32_t height);
+
 // Collects warn() messages while alive, so tests can check them and the log stays quiet.
 class WarningCapture {
  public:
