@@ -18,31 +18,12 @@
 #include "shared/features.h"
 #include "support/analytic.h"
 #include "support/gpu_test.h"
+#include "texture_scenes.h"
 
 namespace raylab::test {
 namespace {
 
 class EmissiveTextureTest : public GpuTest {};
-
-// A quad of half-size `half` in the y = 0 plane facing +y, UVs (0, 0) to (1, 1) with u along +x and v along +z.
-Mesh quad(float half) {
-  Mesh mesh;
-  mesh.name = "quad";
-  mesh.positions = {{-half, 0, -half}, {half, 0, -half}, {half, 0, half}, {-half, 0, half}};
-  mesh.normals.assign(4, glm::vec3(0, 1, 0));
-  mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  mesh.indices = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from +y
-  return mesh;
-}
-
-Texture texture(std::uint32_t width, std::uint32_t height, std::vector<std::uint8_t> rgba) {
-  Texture t;
-  t.name = "emissive";
-  t.width = width;
-  t.height = height;
-  t.rgba = std::move(rgba);
-  return t;
-}
 
 // A black Lambert material emitting `factor` times texture 0 through `ref`.
 Scene emitterScene(const Mesh& mesh, const Texture& emissive, const gpu::TextureRef& ref, glm::vec3 factor) {
@@ -86,12 +67,12 @@ TEST_F(EmissiveTextureTest, EachPointEmitsTheTexelTheCpuReferenceReads) {
     bool sixteen = false;  // RGBA16 texels, between the 8-bit values
   };
   const glm::vec3 factor(2.0f, 1.0f, 0.5f);
-  Mesh mesh = quad(1.0f);
+  Mesh mesh = texturedQuad(1.0f);
   mesh.uvs1 = {{0.3f, 1.0f}, {0.9f, 0.8f}, {1.1f, -0.2f}, {0.2f, 0.1f}};  // a second, skewed parameterisation
   for (const Case& c : {Case{gpu::kWrapRepeat, gpu::kWrapMirror, false, 0}, Case{gpu::kWrapMirror, gpu::kWrapClamp, true, 1},
                         Case{gpu::kWrapClamp, gpu::kWrapRepeat, false, 1},
                         Case{gpu::kWrapRepeat, gpu::kWrapRepeat, false, 0, true}}) {
-    Texture t = texture(3, 2, kSixTexels);
+    Texture t = solidTexture(kSixTexels, 3, 2);
     if (c.sixteen) {
       for (std::uint8_t v : kSixTexels) t.rgba16.push_back(std::uint16_t(std::min(65535, v * 257 + 97)));
       t.rgba.clear();
@@ -143,14 +124,14 @@ TEST_F(EmissiveTextureTest, EachPointEmitsTheTexelTheCpuReferenceReads) {
 // over a grey floor. Only the texture says where on the emitter light leaves: an estimator that ignored it (the
 // factor alone) would be three times too bright, one that misplaced the texels would be lopsided.
 Scene texturedLampOverFloor() {
-  Texture t = texture(2, 2, {0, 255, 0, 255, 0, 0, 0, 255, 90, 90, 0, 255, 20, 40, 20, 255});
+  Texture t = solidTexture({0, 255, 0, 255, 0, 0, 0, 255, 90, 90, 0, 255, 20, 40, 20, 255}, 2, 2);
   t.nearest = true;
-  Mesh lamp = quad(0.5f);
+  Mesh lamp = texturedQuad(0.5f);
   for (glm::vec3& n : lamp.normals) n = -n;
   lamp.indices = {0, 1, 2, 0, 2, 3};  // counter-clockwise seen from below: it emits downwards
   Scene scene = emitterScene(lamp, t, textureRef(0), glm::vec3(30.0f));
   scene.instances[0].transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-  scene.meshes.push_back(quad(2.0f));
+  scene.meshes.push_back(texturedQuad(2.0f));
   scene.materials.push_back({"floor", lambertMaterial(glm::vec3(0.5f))});
   scene.instances.push_back({1, glm::mat4(1.0f), 1});
   // The floor around the lamp's foot, seen from above at an angle; no grazing floor far away, where BSDF
@@ -176,10 +157,10 @@ TEST_F(EmissiveTextureTest, NextEventEstimationSeesTheTextureAsContinuationsDo) 
 // The selection distribution: a quad whose two triangles lie on the two texels of a white-and-black texture
 // (nearest) gives all its power to the white one; the black one is never picked.
 TEST(EmissiveTextureLights, EachTriangleIsChosenByTheTexturesMeanOverIt) {
-  Mesh mesh = quad(1.0f);
+  Mesh mesh = texturedQuad(1.0f);
   // The diagonal from vertex 0 to 2 runs along u = 0.5, the texel edge: triangle (0, 2, 1) covers u > 0.5.
   mesh.uvs = {{0.5f, 0.0f}, {1.0f, 0.5f}, {0.5f, 1.0f}, {0.0f, 0.5f}};
-  Texture t = texture(2, 1, {0, 0, 0, 255, 255, 255, 255, 255});
+  Texture t = solidTexture({0, 0, 0, 255, 255, 255, 255, 255}, 2, 1);
   t.nearest = true;
   const Scene scene = emitterScene(mesh, t, textureRef(0), glm::vec3(3.0f));
   EmitterSurfaces surfaces;
@@ -200,9 +181,9 @@ TEST(EmissiveTextureLights, EachTriangleIsChosenByTheTexturesMeanOverIt) {
 // Broken UVs (NaN, infinite, far off) under an emissive texture still give every triangle a finite power.
 TEST(EmissiveTextureLights, BrokenUvsGiveFinitePowers) {
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-  Mesh mesh = quad(1.0f);
+  Mesh mesh = texturedQuad(1.0f);
   mesh.uvs = {{nan, 0.0f}, {inf, -inf}, {1e30f, -1e30f}, {0.5f, nan}};
-  const Scene scene = emitterScene(mesh, texture(3, 2, kSixTexels), textureRef(0), glm::vec3(3.0f));
+  const Scene scene = emitterScene(mesh, solidTexture(kSixTexels, 3, 2), textureRef(0), glm::vec3(3.0f));
   EmitterSurfaces surfaces;
   surfaces.instanceRecords = {0};
   surfaces.textures = scene.textures;

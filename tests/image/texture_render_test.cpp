@@ -17,6 +17,7 @@
 #include "shared/features.h"
 #include "support/analytic.h"
 #include "support/gpu_test.h"
+#include "texture_scenes.h"
 
 namespace raylab::test {
 namespace {
@@ -26,26 +27,6 @@ class TextureRenderTest : public GpuTest {};
 constexpr double kRho = 0.5;
 const glm::dvec3 kLight{2.0, 3.0, 0.5};
 constexpr double kIntensity = 10.0;
-
-// A 2x2 quad in the y = 0 plane facing +y, UVs (0, 0) to (1, 1) with u along +x and v along +z.
-Mesh texturedQuad() {
-  Mesh mesh;
-  mesh.name = "quad";
-  mesh.positions = {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}};
-  mesh.normals.assign(4, glm::vec3(0, 1, 0));
-  mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  mesh.indices = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from +y
-  return mesh;
-}
-
-Texture solidTexture(std::vector<std::uint8_t> rgba, std::uint32_t width = 1, std::uint32_t height = 1) {
-  Texture texture;
-  texture.name = "texels";
-  texture.width = width;
-  texture.height = height;
-  texture.rgba = std::move(rgba);
-  return texture;
-}
 
 // The quad under a point light, seen from above, with `record` and one texture in use `slot`.
 Scene quadScene(const gpu::MaterialRecord& record, std::uint32_t slot, const Texture& texture, const Mesh& mesh) {
