@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,9 +23,16 @@ const char* fitMetricName(FitMetric metric);
 struct FitOptions {
   std::vector<std::string> models;  // empty: every model fitModels can fit
   FitMetric metric = FitMetric::kCosine;
-  int starts = 4;                   // the defaults, then random points of the parameter box
-  unsigned seed = 1;                // of the random starts: the same seed gives the same fits
-  int threads = 0;                  // starts solved at once; 0: one per core
+  // The search (docs/fitting.md, "How a fit finds its basin"): `searchPoints` points of the nonlinear parameters
+  // (the defaults, then a stratified random sample of their box) are scored with the parameters that enter f
+  // linearly solved in closed form; Levenberg-Marquardt then starts from the best `starts` distinct ones.
+  // searchPoints 0: no search, the LM starts are the defaults and random points of the whole box (the plain
+  // multi-start of tools/fit_basins.py's reference).
+  int starts = 4;
+  int searchPoints = 256;
+  unsigned seed = 1;                // of the random points: the same seed gives the same fits
+  int threads = 0;                  // starts solved at once; 0: one per core (never more than the cores)
+  std::optional<bool> isotropic;    // tie x and y parameters; empty: as the target says (MERL files and slices)
   // Called after each start, from the thread that solved it, one call at a time.
   std::function<void(int startsDone, int startsTotal, const std::string& model, double seconds)> progress;
 };
@@ -34,8 +42,13 @@ struct FitResult {
   gpu::MaterialRecord record;  // the fitted material (every other parameter at its default)
   double error = 0.0;          // sqrt(sum over pairs and channels of weight * residual^2 / 3): an RMS
   double relativeError = 0.0;  // error over the same RMS of the target alone
-  double seconds = 0.0;        // CPU seconds of all its starts
+  double seconds = 0.0;        // CPU seconds of its search and all its starts
   int iterations = 0;          // of the best start
+  int starts = 0;              // LM solves run
+  int failedStarts = 0;        // LM solves that ended without a usable solution (not counted as fitted)
+  // Why the fit should not be trusted as it stands: a term the data clearly shows that the fit left at zero, a
+  // parameter the data does not constrain. Empty for a clean fit.
+  std::vector<std::string> warnings;
 };
 
 // The models fitted by default: every model of the library with a density that is not read from a file (not delta,

@@ -1,6 +1,8 @@
 #include "fit/fit_target.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <random>
@@ -90,6 +92,26 @@ FitTarget merlFitTarget(const std::string& path) {
   return target;
 }
 
+FitTarget sliceFitTarget(const std::string& path, SliceBin bin) {
+  const MerlSlice slice = readMerlSlice(path);
+  const double cosMax = std::cos(kFitMaxThetaDegrees * kPi / 180.0);
+  FitTarget target;
+  target.name = path;
+  target.isotropic = true;
+  for (int d = 0; d < kSliceThetaD; ++d) {
+    for (int h = 0; h < kSliceThetaH; ++h) {
+      FitPair pair;
+      merlDirections(sliceThetaH(h, bin), sliceThetaD(d, bin), 0.5 * kPi, &pair.wi, &pair.wo);
+      if (!(pair.wi.z > cosMax && pair.wo.z > cosMax)) continue;
+      pair.f = slice.at(h, d);
+      pair.weight = sliceBinMeasure(h, d);
+      target.pairs.push_back(pair);
+    }
+  }
+  normaliseWeights(target.pairs);
+  return target;
+}
+
 FitTarget csvFitTarget(const std::string& path) {
   const std::string text = readInputFile(path, kMaxSampleFileBytes);
   constexpr std::string_view kHeader = "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b";
@@ -98,11 +120,13 @@ FitTarget csvFitTarget(const std::string& path) {
   std::size_t start = 0;
   int line = 0;
   bool header = false;
+  int fields = 9;  // 10 with the weight column
   while (start < text.size()) {
     const std::size_t end = std::min(text.find('\n', start), text.size());
-    const std::string_view row = trimmed(std::string_view(text).substr(start, end - start));
+    std::string_view row = trimmed(std::string_view(text).substr(start, end - start));
     start = end + 1;
     ++line;
+    if (line == 1 && row.starts_with("\xEF\xBB\xBF")) row.remove_prefix(3);  // a UTF-8 byte order mark
     if (row.empty() || row.front() == '#') continue;
     const std::string where = path + ":" + std::to_string(line);
     if (!header) {
@@ -110,24 +134,32 @@ FitTarget csvFitTarget(const std::string& path) {
       for (char c : row) {
         if (c != ' ') compact += c;
       }
-      if (compact != kHeader) throw Error(where + ": expected the header '" + std::string(kHeader) + "'");
+      if (compact == std::string(kHeader) + ",weight") {
+        fields = 10;
+      } else if (compact != kHeader) {
+        throw Error(where + ": expected the header '" + std::string(kHeader) + "' (optionally ',weight')", kExitUsage);
+      }
       header = true;
       continue;
     }
-    double v[9];
+    double v[10];
     std::size_t from = 0;
-    for (int i = 0; i < 9; ++i) {
-      const std::size_t comma = i < 8 ? row.find(',', from) : row.size();
-      if (comma == std::string_view::npos) throw Error(where + ": expected 9 numbers separated by commas");
+    for (int i = 0; i < fields; ++i) {
+      const std::size_t comma = i < fields - 1 ? row.find(',', from) : row.size();
+      if (comma == std::string_view::npos) {
+        throw Error(where + ": expected " + std::to_string(fields) + " numbers separated by commas", kExitUsage);
+      }
       const std::string_view field = trimmed(row.substr(from, comma - from));
+      if (field.find(',') != std::string_view::npos) {
+        throw Error(where + ": more than " + std::to_string(fields) + " fields", kExitUsage);
+      }
       const auto [ptr, error] = std::from_chars(field.data(), field.data() + field.size(), v[i]);
       if (error != std::errc() || ptr != field.data() + field.size() || !std::isfinite(v[i])) {
-        throw Error(where + ": field " + std::to_string(i + 1) + " '" + std::string(field) + "' is not a finite number");
+        const std::string shown = field.size() > 40 ? std::string(field.substr(0, 40)) + "..." : std::string(field);
+        throw Error(where + ": field " + std::to_string(i + 1) + " '" + shown + "' is not a finite number",
+                    kExitUsage);
       }
       from = comma + 1;
-    }
-    if (from <= row.size() && row.find(',', from) != std::string_view::npos) {
-      throw Error(where + ": more than 9 fields");
     }
     FitPair pair;
     pair.wi = {v[0], v[1], v[2]};
@@ -135,15 +167,33 @@ FitTarget csvFitTarget(const std::string& path) {
     pair.f = {v[6], v[7], v[8]};
     for (glm::dvec3* w : {&pair.wi, &pair.wo}) {
       const double length = glm::length(*w);
-      if (!(length > 1e-6 && length < 1e6)) throw Error(where + ": a direction of length " + std::to_string(length));
+      if (!(length > 1e-6 && length < 1e6)) {
+        char shown[64];
+        std::snprintf(shown, sizeof shown, "%.9g", length);
+        throw Error(where + ": a direction of length " + shown + " (expected about 1)", kExitUsage);
+      }
       *w /= length;
     }
-    if (!(pair.wi.z > 0.0 && pair.wo.z > 0.0)) throw Error(where + ": wi and wo must lie above the surface (z > 0)");
-    if (pair.f.x < 0.0 || pair.f.y < 0.0 || pair.f.z < 0.0) throw Error(where + ": f is negative");
+    if (!(pair.wi.z > 0.0 && pair.wo.z > 0.0)) {
+      throw Error(where + ": wi and wo must lie above the surface (z > 0)", kExitUsage);
+    }
+    if (pair.f.x < 0.0 || pair.f.y < 0.0 || pair.f.z < 0.0) throw Error(where + ": f is negative", kExitUsage);
+    if (fields == 10) {
+      if (v[9] < 0.0) throw Error(where + ": the weight is negative", kExitUsage);
+      pair.weight = v[9];
+    }
     target.pairs.push_back(pair);
   }
-  if (!header) throw Error(path + ": empty; expected the header '" + std::string(kHeader) + "' and samples");
-  if (target.pairs.empty()) throw Error(path + ": no samples after the header");
+  if (!header) {
+    throw Error(path + ": empty; expected the header '" + std::string(kHeader) + "' and samples", kExitUsage);
+  }
+  if (target.pairs.empty()) throw Error(path + ": no samples after the header", kExitUsage);
+  double total = 0.0;
+  for (const FitPair& p : target.pairs) total += p.weight;
+  if (!(total > 0.0 && std::isfinite(total))) {
+    throw Error(path + ": the weights sum to " + (total > 0.0 ? std::string("more than a double holds") : "zero") +
+                "; give some sample a positive weight", kExitUsage);
+  }
   normaliseWeights(target.pairs);
   return target;
 }
@@ -159,20 +209,67 @@ FitTarget materialFitTarget(const gpu::MaterialRecord& record, const std::string
 }
 
 FitTarget loadFitTarget(const std::string& text, const std::string& fileBase) {
+  // MODEL:k=v,... first: `measured:file=gold.binary` names a material, not a file.
+  const std::size_t modelEnd = text.find(':');
+  const bool material = modelEnd != std::string::npos && findModel(text.substr(0, modelEnd)) != nullptr;
   const std::string extension = std::filesystem::path(text).extension().string();
-  if (extension == ".binary") return merlFitTarget(text);
-  if (extension == ".csv") return csvFitTarget(text);
+  if (!material && extension == ".binary") return merlFitTarget(text);
+  if (!material && extension == ".slice") return sliceFitTarget(text);
+  if (!material && extension == ".csv") return csvFitTarget(text);
   const std::size_t colon = text.find(':');
   const std::string modelName = text.substr(0, colon);
   const ModelInfo* model = findModel(modelName);
   if (model == nullptr) {
-    throw Error("'" + text + "' is neither a MERL .binary file, a .csv of samples, nor MODEL[:k=v,...] (models: " +
+    throw Error("'" + text + "' is neither a MERL .binary file, a .slice, a .csv of samples, nor MODEL[:k=v,...] "
+                "(models: " +
                 modelNames() + ")");
   }
   gpu::MaterialRecord record = defaultRecord(model->id);
   if (colon != std::string::npos) applyParamList(record, std::string_view(text).substr(colon + 1), text, fileBase);
   checkFileParams(record, text);
   return materialFitTarget(record, text);
+}
+
+TargetSummary summarizeTarget(const FitTarget& target) {
+  TargetSummary summary;
+  summary.samples = target.pairs.size();
+  summary.minThetaH = summary.minThetaD = 180.0;
+  summary.minPositiveF = INFINITY;
+  const double degrees = 180.0 / kPi;
+  for (const FitPair& pair : target.pairs) {
+    const glm::dvec3 h = glm::normalize(pair.wi + pair.wo);
+    const double thetaH = std::acos(std::clamp(h.z, -1.0, 1.0)) * degrees;
+    const double thetaD = std::acos(std::clamp(glm::dot(h, pair.wi), -1.0, 1.0)) * degrees;
+    summary.maxThetaI = std::max(summary.maxThetaI, std::acos(pair.wi.z) * degrees);
+    summary.maxThetaO = std::max(summary.maxThetaO, std::acos(pair.wo.z) * degrees);
+    summary.minThetaH = std::min(summary.minThetaH, thetaH);
+    summary.maxThetaH = std::max(summary.maxThetaH, thetaH);
+    summary.minThetaD = std::min(summary.minThetaD, thetaD);
+    summary.maxThetaD = std::max(summary.maxThetaD, thetaD);
+    for (int c = 0; c < 3; ++c) {
+      const double f = pair.f[c];
+      summary.maxF = std::max(summary.maxF, f);
+      if (f > 0.0) {
+        summary.minPositiveF = std::min(summary.minPositiveF, f);
+      } else {
+        ++summary.zeroValues;
+      }
+    }
+    summary.meanF += pair.weight * pair.f;
+  }
+  if (!std::isfinite(summary.minPositiveF)) summary.minPositiveF = 0.0;
+  return summary;
+}
+
+std::string TargetSummary::text() const {
+  char line[512];
+  const double decades = minPositiveF > 0.0 ? std::log10(maxF / minPositiveF) : 0.0;
+  std::snprintf(line, sizeof line,
+                "%zu samples; theta_i, theta_o up to %.1f, %.1f deg; theta_h %.2f-%.1f deg, theta_d %.1f-%.1f deg; "
+                "f %.3g-%.3g 1/sr (%.1f decades, %zu zero values); weighted mean f %.3g/%.3g/%.3g",
+                samples, maxThetaI, maxThetaO, minThetaH, maxThetaH, minThetaD, maxThetaD, minPositiveF, maxF, decades,
+                zeroValues, meanF.x, meanF.y, meanF.z);
+  return line;
 }
 
 }  // namespace raylab

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "fit/merl_slice.h"
 #include "shared/scene_records.h"
 
 namespace raylab {
@@ -20,7 +21,9 @@ struct FitPair {
 struct FitTarget {
   std::string name;              // as the user gave it
   std::vector<FitPair> pairs;    // weights summing to 1
-  bool isotropic = false;        // a MERL file: anisotropic models are fitted with alpha_x = alpha_y (and the like)
+  // A MERL file or slice: anisotropy cannot be observed, so by default anisotropic models are fitted with alpha_x =
+  // alpha_y (and the like); FitOptions::isotropic overrides it for any target.
+  bool isotropic = false;
 };
 
 // The directions above which measured data is unreliable and which the error leaves out, as Ngan et al. 2005 do.
@@ -35,13 +38,30 @@ std::vector<FitPair> merlGridPairs(unsigned azimuthSeed = 0);
 
 // A MERL file: its samples at merlGridPairs (missing ones left out). Throws Error naming the file.
 FitTarget merlFitTarget(const std::string& path);
-// A CSV of measured samples: header `wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b`, one sample per line, equal
-// weights. Throws Error naming the file and line.
+// A MERL phi_d = 90 slice (fit/merl_slice.h): a pair per bin at the bin's start or centre, both directions within
+// kFitMaxThetaDegrees of the normal, each weighted by its bin's measure (sliceBinMeasure). Throws Error (exit code
+// 2) naming the file.
+FitTarget sliceFitTarget(const std::string& path, SliceBin bin = SliceBin::kCentre);
+// A CSV of measured samples: header `wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b[,weight]`, one sample per line;
+// equal weights without the weight column. Throws Error (exit code 2) naming the file and line.
 FitTarget csvFitTarget(const std::string& path);
 // A material of the library, evaluated by the reference at merlGridPairs turned by random azimuths.
 FitTarget materialFitTarget(const gpu::MaterialRecord& record, const std::string& name);
-// TEXT as the command line gives it: a .binary file (MERL), a .csv file, or MODEL[:k=v,...] (a material). A file
+// TEXT as the command line gives it: a .binary file (MERL), a .slice file, a .csv file, or MODEL[:k=v,...]. A file
 // parameter inside a material is relative to `fileBase`. Throws Error.
 FitTarget loadFitTarget(const std::string& text, const std::string& fileBase = "");
+
+// What a target holds, for people, before anything is fitted: samples, the angles they cover, the range of f.
+struct TargetSummary {
+  std::size_t samples = 0;
+  double maxThetaI = 0.0, maxThetaO = 0.0;        // degrees
+  double minThetaH = 0.0, maxThetaH = 0.0;        // degrees
+  double minThetaD = 0.0, maxThetaD = 0.0;        // degrees
+  double minPositiveF = 0.0, maxF = 0.0;          // over pairs and channels
+  std::size_t zeroValues = 0;                     // pair-channels with f = 0
+  glm::dvec3 meanF{0.0};                          // weighted
+  std::string text() const;                       // one line
+};
+TargetSummary summarizeTarget(const FitTarget& target);
 
 }  // namespace raylab

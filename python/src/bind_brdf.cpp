@@ -17,6 +17,7 @@
 #include "brdf_eval/cpu_evaluator.h"
 #include "brdf_params/material_params.h"
 #include "device_context.h"
+#include "errors.h"
 #include "fit/fit.h"
 #include "measured/merl.h"
 #include "util/atomic_file.h"
@@ -257,10 +258,8 @@ void bindBrdf(py::module_& parent) {
   m.def(
       "tabulate",
       [](const std::string& model, const py::object& params, const py::object& pathObject) {
-        if (!py::isinstance<py::str>(pathObject) && !py::hasattr(pathObject, "__fspath__")) {
-          usage("raylab.brdf.tabulate: path is a str or os.PathLike");
-        }
-        const std::string path = py::str(py::module_::import("os").attr("fspath")(pathObject)).cast<std::string>();
+        const std::string path = pathArgument(pathObject, "raylab.brdf.tabulate: path");
+        if (!path.ends_with(".binary")) usage("raylab.brdf.tabulate: path must end in .binary (a MERL file): " + path);
         const gpu::MaterialRecord record = material(model, params);
         if (isDeltaOnly(record.model)) usage("raylab.brdf.tabulate: " + model + " is a delta BSDF and has no f");
         try {
@@ -281,22 +280,26 @@ void bindBrdf(py::module_& parent) {
   m.def(
       "fit",
       [](const py::object& targetObject, const std::optional<std::vector<std::string>>& models,
-         const std::string& metric, std::uint32_t starts, std::uint32_t seed, std::uint32_t threads) {
-        if (!py::isinstance<py::str>(targetObject) && !py::hasattr(targetObject, "__fspath__")) {
-          usage("raylab.brdf.fit: target is a path (.binary, .csv) or 'MODEL[:k=v,...]'");
-        }
-        const std::string target = py::str(py::module_::import("os").attr("fspath")(targetObject)).cast<std::string>();
+         const std::string& metric, std::uint32_t starts, std::uint32_t search, std::uint32_t seed,
+         std::uint32_t threads, std::optional<bool> isotropic) {
+        const std::string target = pathArgument(targetObject, "raylab.brdf.fit: target");
         if (starts < 1 || starts > 64) usage("raylab.brdf.fit: starts must be within 1..64");
+        if (search > 65536) usage("raylab.brdf.fit: search must be within 0..65536");
         FitOptions options;
         options.starts = int(starts);
+        options.searchPoints = int(search);
         options.seed = seed;
         options.threads = int(threads);
+        options.isotropic = isotropic;
         std::vector<FitResult> fits;
+        bool targetIsotropic = false;
         try {
           options.metric = parseFitMetric(metric, "raylab.brdf.fit");
           if (models) options.models = *models;
           py::gil_scoped_release release;
-          fits = fitModels(loadFitTarget(target), options);
+          const FitTarget loaded = loadFitTarget(target);
+          targetIsotropic = loaded.isotropic;
+          fits = fitModels(loaded, options);
         } catch (const FileError&) {
           throw;
         } catch (const Error& error) {
@@ -311,22 +314,51 @@ void bindBrdf(py::module_& parent) {
           py::dict row;
           row["model"] = f.model;
           row["params"] = params;
+          row["param_list"] = fitParamList(f);
           row["error"] = f.error;
           row["relative_error"] = f.relativeError;
           row["seconds"] = f.seconds;
           row["iterations"] = f.iterations;
+          row["starts"] = f.starts;
+          row["failed_starts"] = f.failedStarts;
+          row["warnings"] = f.warnings;
           row["metric"] = std::string(fitMetricName(options.metric));
+          row["isotropic"] = options.isotropic.value_or(targetIsotropic);
           row["target"] = target;
           table.append(row);
         }
         return table;
       },
       py::arg("target"), py::kw_only(), py::arg("models") = py::none(), py::arg("metric") = "cosine",
-      py::arg("starts") = 4, py::arg("seed") = 1, py::arg("threads") = 0,
-      "Fits the analytic models (all, or `models`) to target: a MERL .binary file, a .csv of samples, or "
-      "'MODEL[:k=v,...]'. Returns the ranking of `raylab brdf fit --json`: a list of dicts with model, params "
-      "(name -> value, RGB as a list), error, relative_error, seconds, iterations, metric and target, best first "
-      "(docs/fitting.md). metric is 'cosine' (Ngan et al. 2005) or 'log'.");
+      py::arg("starts") = 4, py::arg("search") = 256, py::arg("seed") = 1, py::arg("threads") = 0,
+      py::arg("isotropic") = py::none(),
+      "Fits the analytic models (all, or `models`) to target: a MERL .binary file, a MERL phi_d = 90 .slice, a "
+      ".csv of samples (optional weight column), or 'MODEL[:k=v,...]'. Returns the ranking of `raylab brdf fit "
+      "--json`: a list of dicts with model, params (name -> value, RGB as a list), param_list (as --material takes "
+      "it), error, relative_error, seconds, iterations, starts, failed_starts, warnings, metric, isotropic and "
+      "target, best first (docs/fitting.md). metric is 'cosine' (Ngan et al. 2005) or 'log'; search points of the "
+      "nonlinear parameters pick the `starts` Levenberg-Marquardt starts; isotropic ties x and y parameters (None: "
+      "as the target says, True for MERL files and slices).");
+  m.def(
+      "fit_error",
+      [](const py::object& targetObject, const std::string& model, const py::object& params,
+         const std::string& metric) {
+        const std::string target = pathArgument(targetObject, "raylab.brdf.fit_error: target");
+        const gpu::MaterialRecord record = material(model, params);
+        double relative = 0.0, error = 0.0;
+        try {
+          const FitMetric m = parseFitMetric(metric, "raylab.brdf.fit_error");
+          py::gil_scoped_release release;
+          error = fitError(loadFitTarget(target), record, m, &relative);
+        } catch (const FileError&) {
+          throw;
+        } catch (const Error& e) {
+          usage(e.what());
+        }
+        return py::make_tuple(error, relative);
+      },
+      py::arg("target"), py::arg("model"), py::arg("params") = py::none(), py::kw_only(), py::arg("metric") = "cosine",
+      "The error of one material against a fit target, as `fit` reports it: (error, relative_error).");
   m.def(
       "albedo",
       [](const std::string& model, const py::object& params, const DoubleArray& theta, double phi,

@@ -47,4 +47,16 @@ void requireFile(const std::string& path, const std::string& what, std::uint64_t
   if (!message.empty()) throw FileError(what + ": " + path + ": " + message, problem);
 }
 
+std::string pathArgument(const pybind11::object& value, const std::string& where) {
+  namespace py = pybind11;
+  if (!py::isinstance<py::str>(value) && !py::isinstance<py::bytes>(value) && !py::hasattr(value, "__fspath__")) {
+    throw Error(where + ": expected a path (str, bytes or os.PathLike)", kExitUsage);
+  }
+  const py::module_ os = py::module_::import("os");
+  const std::string path = os.attr("fsdecode")(os.attr("fspath")(value)).cast<std::string>();
+  if (path.find('\0') != std::string::npos) throw Error(where + ": the path has a NUL character", kExitUsage);
+  if (path.empty()) throw Error(where + ": the path is empty", kExitUsage);
+  return path;
+}
+
 }  // namespace raylab::python

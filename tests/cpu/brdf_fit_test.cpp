@@ -52,7 +52,7 @@ double param(const FitResult& fit, const std::string& name, int channel = 0) {
   return getParam(fit.record, name)[channel];
 }
 
-FitOptions options(std::vector<std::string> models, int starts = 1) {
+FitOptions options(std::vector<std::string> models, int starts = 4) {
   FitOptions o;
   o.models = std::move(models);
   o.starts = starts;

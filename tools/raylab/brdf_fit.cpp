@@ -29,7 +29,10 @@ struct FitCommandOptions {
   std::string metric = "cosine";
   std::uint32_t starts = 4;
   std::uint32_t seed = 1;
+  std::uint32_t search = 256;
   std::uint32_t threads = 0;
+  bool isotropic = false;
+  bool anisotropic = false;
   std::string jsonPath;
 };
 
@@ -62,6 +65,12 @@ int fit(const FitCommandOptions& o) {
   options.starts = int(o.starts);
   options.seed = o.seed;
   options.threads = int(o.threads);
+  options.searchPoints = int(o.search);
+  if (o.isotropic && o.anisotropic) {
+    throw Error(std::string(kCommand) + ": --isotropic and --anisotropic exclude each other", kExitUsage);
+  }
+  if (o.isotropic) options.isotropic = true;
+  if (o.anisotropic) options.isotropic = false;
   try {
     options.metric = parseFitMetric(o.metric, std::string(kCommand) + ": --metric");
     if (!o.models.empty()) options.models = splitModels(o.models);
@@ -70,12 +79,15 @@ int fit(const FitCommandOptions& o) {
   }
   const Stopwatch clock;
   const FitTarget target = loadFitTarget(o.target);
-  std::fprintf(stderr, "%s: %s, %zu direction pairs, %s error\n", kCommand, o.target.c_str(), target.pairs.size(),
-               fitMetricName(options.metric));
+  const bool isotropic = options.isotropic.value_or(target.isotropic);
+  std::fprintf(stderr, "%s: %s: %s\n", kCommand, o.target.c_str(), summarizeTarget(target).text().c_str());
+  std::fprintf(stderr, "%s: %s error, %s, search of %u points, %u LM starts per model\n", kCommand,
+               fitMetricName(options.metric), isotropic ? "isotropic (x and y parameters tied)" : "anisotropic",
+               o.search, o.starts);
   // One line per finished start on a log, redrawn on a terminal: starts done, elapsed, ETA.
   options.progress = [&](int done, int total, const std::string& model, double seconds) {
     const double elapsed = clock.seconds();
-    std::fprintf(stderr, "%s: %d/%d starts, %s in %s, elapsed %s, ETA %s\n", kCommand, done, total, model.c_str(),
+    std::fprintf(stderr, "%s: %d/%d steps, %s in %s, elapsed %s, ETA %s\n", kCommand, done, total, model.c_str(),
                  formatSeconds(seconds).c_str(), formatSeconds(elapsed).c_str(),
                  formatSeconds(elapsed / done * (total - done)).c_str());
   };
@@ -87,13 +99,17 @@ int fit(const FitCommandOptions& o) {
     const FitResult& f = fits[i];
     std::printf("%-4zu %-18s %-12.6g %-10.4f %-9.2f %s\n", i + 1, f.model.c_str(), f.error, f.relativeError,
                 f.seconds, fitParamList(f).c_str());
+    for (const std::string& warning : f.warnings) {
+      std::fprintf(stderr, "%s: warning: %s: %s\n", kCommand, f.model.c_str(), warning.c_str());
+    }
     nlohmann::json params = nlohmann::json::object();
     for (const auto& [name, values] : fitParams(f)) {
       params[name] = values.size() == 1 ? nlohmann::json(values[0]) : nlohmann::json(values);
     }
     json.push_back({{"model", f.model}, {"params", params}, {"error", f.error}, {"relative_error", f.relativeError},
-                    {"seconds", f.seconds}, {"iterations", f.iterations}, {"metric", fitMetricName(options.metric)},
-                    {"target", o.target}});
+                    {"seconds", f.seconds}, {"iterations", f.iterations}, {"starts", f.starts},
+                    {"failed_starts", f.failedStarts}, {"warnings", f.warnings},
+                    {"metric", fitMetricName(options.metric)}, {"isotropic", isotropic}, {"target", o.target}});
   }
   if (!o.jsonPath.empty()) writeFileAtomically(o.jsonPath, json.dump(2) + "\n");
   std::fprintf(stderr, "%s: %zu models, %u starts each, in %s%s%s\n", kCommand, fits.size(), o.starts,
@@ -108,14 +124,17 @@ void addBrdfFitCommand(CLI::App& brdf) {
   CLI::App* command = addCommand(
       brdf, "fit",
       "fit every analytic model of the library to a measured material or another model, and rank them\n"
-      "TARGET is a MERL .binary file, a .csv of measured samples (header wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b), "
-      "or a material of the library as MODEL[:k=v,...] (for example ggx_conductor:metal=Au). Each model's "
-      "parameters are fitted within their ranges by Ceres Solver (Levenberg-Marquardt, log-scaled parameters in log "
-      "space, several starts: the defaults, then random points) minimising the weighted RMS of f cos(theta_i) over "
-      "the MERL grid's direction pairs within 80 degrees of the normal (--metric cosine, Ngan et al. 2005) or of "
-      "log(1 + f cos(theta_i)) (--metric log). Prints a ranking (model, error, error relative to the target's own "
-      "RMS, CPU seconds, parameters as --material takes them); --json writes it as a list, best first "
-      "(docs/fitting.md).",
+      "TARGET is a MERL .binary file, a MERL phi_d = 90 .slice, a .csv of measured samples (header "
+      "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b[,weight]), or a material of the library as MODEL[:k=v,...] (for "
+      "example ggx_conductor:metal=Au). Each sample weighs its share of the measure (a .csv: its weight column, or "
+      "equal weights). Each model's parameters are fitted within their ranges: a search of --search points of the "
+      "nonlinear parameters, with those that enter f linearly (colours) solved by least squares, then Ceres "
+      "Solver's Levenberg-Marquardt from the best --starts distinct points, minimising the weighted RMS of "
+      "f cos(theta_i) over the pairs within 80 degrees of the normal (--metric cosine, Ngan et al. 2005) or of "
+      "log(1 + f cos(theta_i)) (--metric log). Prints what the target holds, then a ranking (model, error, error "
+      "relative to the target's own RMS, CPU seconds, parameters as --material takes them) and a warning for a fit "
+      "that left out a term the data shows or a parameter the data does not constrain; --json writes it as a "
+      "list, best first (docs/fitting.md).",
       [o] { return fit(*o); });
   addPositional(command, "TARGET", o->target, "a .binary MERL file, a .csv of samples, or MODEL[:k=v,...]");
   addText(command, "--models", o->models, "a,b,...", "fit only these models (default: " + [] {
@@ -124,9 +143,16 @@ void addBrdfFitCommand(CLI::App& brdf) {
     return list;
   }() + ")");
   addChoice(command, "--metric", o->metric, {"cosine", "log"}, "the error minimised and reported");
-  addCount(command, "--starts", o->starts, "starts per model (the defaults, then random points)", 1, 64);
+  addCount(command, "--starts", o->starts, "Levenberg-Marquardt starts per model: the search's best distinct points", 1,
+           64);
+  addCount(command, "--search", o->search,
+           "points of the search per model (0: no search; the starts are the defaults, then random points)", 0,
+           65536);
+  addFlag(command, "--isotropic", o->isotropic,
+          "tie x and y parameters (alpha_x = alpha_y, nu = nv); the default for MERL files and slices");
+  addFlag(command, "--anisotropic", o->anisotropic, "fit x and y parameters apart, also for a MERL file or slice");
   addCount(command, "--seed", o->seed, "seed of the random starts: the same seed gives the same fits", 0, UINT32_MAX);
-  addCount(command, "--threads", o->threads, "starts solved at once (0: one per core)", 0, 256);
+  addCount(command, "--threads", o->threads, "starts solved at once (0 or more than the cores: one per core)", 0, 256);
   addText(command, "--json", o->jsonPath, "FILE.json", "also write the ranking as JSON");
 }
 
