@@ -339,6 +339,8 @@ void bindBrdf(py::module_& parent) {
       "target, best first (docs/fitting.md). metric is 'cosine' (Ngan et al. 2005) or 'log'; search points of the "
       "nonlinear parameters pick the `starts` Levenberg-Marquardt starts; isotropic ties x and y parameters (None: "
       "as the target says, True for MERL files and slices).");
+  m.def("fittable_models", &fittableModels,
+        "The models `fit` fits by default: every model of the library with a density that is not read from a file.");
   m.def(
       "fit_error",
       [](const py::object& targetObject, const std::string& model, const py::object& params,
