@@ -9,7 +9,9 @@ non-regular files and bounds what it reads.
 from __future__ import annotations
 
 import math
+import os
 import re
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -21,6 +23,21 @@ SLICE_SIDE = 90
 SLICE_BYTES = SLICE_SIDE * SLICE_SIDE * 3 * 4
 MAX_THETA_DEG = 80.0          # engine/fit/fit_target.h kFitMaxThetaDegrees: grazing pairs are left out
 MAX_FIT_FILE_BYTES = 16 << 20  # a published fit file is a few hundred kB
+
+
+def import_raylab():
+    """The raylab module: the one on the path (ctest's PYTHONPATH, .venv's raylab.pth), else this tree's release
+    build. PYTHONPATH is set too, so that the Dask workers a tool starts import the same module and tools/."""
+    paths = [str(REPO / "tools")]
+    try:
+        import raylab
+    except ImportError:
+        paths.insert(0, str(REPO / "build" / "release" / "python"))
+        sys.path.insert(0, paths[0])
+        import raylab
+    os.environ["PYTHONPATH"] = os.pathsep.join(
+        [p for p in [*paths, os.environ.get("PYTHONPATH", "")] if p])
+    return raylab
 
 
 class DataError(Exception):

@@ -32,7 +32,7 @@ import measured_data as md  # noqa: E402
 # What decides a fit besides the slice and the model: changing any of these reruns the job.
 FIT_OPTIONS = {"starts": 4, "search": 256, "seed": 1}
 # The kinds of material the figures show, by name (docs/measured.md).
-FIGURE_MATERIALS = ["chrome", "gold-metallic-paint", "red-fabric", "blue-acrylic", "cherry-235", "pink-jasper"]
+FIGURE_MATERIALS = ["chrome", "gold-metallic-paint", "red-fabric", "blue-acrylic", "cherry-235", "specular-red-phenolic"]
 
 
 class StudyError(Exception):
@@ -85,7 +85,7 @@ def run_study(slices: dict[str, Path], models: list[str], metric: str, out: Path
     kill_one_worker_after N, one worker process is killed once N jobs have finished (the test of resumption)."""
     from distributed import as_completed
 
-    sys.path.insert(0, str(md.REPO / "build" / "release" / "python"))
+    md.import_raylab()
     from raylab.farm.cluster import connect
     from raylab.farm.progress import Progress
 
@@ -180,8 +180,7 @@ def main(argv=None) -> int:
         materials = args.materials.split(",") if args.materials else None
         slices = find_slices(args.slices, materials)
         check_slices(slices)
-        sys.path.insert(0, str(md.REPO / "build" / "release" / "python"))
-        import raylab
+        raylab = md.import_raylab()
         known = list(raylab.brdf.fittable_models())
         models = args.models.split(",") if args.models else known
         unknown = [m for m in models if m not in known]

@@ -30,6 +30,7 @@ struct ViewerOptions {
   ToneMap toneMap = ToneMap::kClamp;
   bool panel = true;
   std::optional<CompareSpec> compare;  // open the split view with this material switched (--compare)
+  std::string target;                  // a measured .slice or MERL .binary shown beside the lobe (--target)
 
   // Automation. With `frames`, the viewer runs that many frames and exits, deterministically: a frame with a
   // change (a script event) draws the preview, every other frame, the first included, adds exactly one

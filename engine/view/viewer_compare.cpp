@@ -228,6 +228,14 @@ void drawComparisonSections(Viewer& v) {
     drawLobePlot(v.lobe);
     ImGui::PopID();
   }
+  if (v.slicePlot && ImGui::CollapsingHeader("Measured target", ImGuiTreeNodeFlags_DefaultOpen) &&
+      v.selection.material < v.scene.materials.size()) {
+    const bool rightToo = v.comparison.active && v.comparison.spec.material == v.selection.material;
+    ImGui::PushID("target");
+    drawSlicePlot(*v.slicePlot, v.scene.materials[v.selection.material].record,
+                  rightToo ? &v.comparison.spec.record : nullptr);
+    ImGui::PopID();
+  }
 }
 
 void drawOverlay(Viewer& v) {

@@ -23,6 +23,7 @@
 #include "view/frame_slot.h"
 #include "view/kernel_build.h"
 #include "view/lobe_plot.h"
+#include "view/slice_plot.h"
 #include "view/panel.h"
 #include "view/swapchain.h"
 #include "view/ui.h"
@@ -122,6 +123,7 @@ struct Viewer {
   glm::vec2 hoveredAt{-1.0f};
   double lastHover = 0.0;
   LobePlot lobe;
+  std::optional<SlicePlot> slicePlot;  // --target
 };
 
 // viewer_setup.cpp

@@ -12,6 +12,7 @@
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "view_logic/script.h"
+#include "view/slice_plot.h"
 #include "view/viewer.h"
 #include "render/render_choices.h"
 
@@ -100,6 +101,9 @@ void view(ViewCommandOptions command) {
     checkOutputPath(paths.png, event.where);
   }
 
+  // A bad target is refused before the scene loads and the window opens.
+  if (!o.target.empty()) loadSlicePlot(o.target);
+
   SceneRequest request = command.request;
   request.maxBufferBytes = deviceBufferLimit(o.device);  // an environment image the device cannot hold is not decoded
   const Scene scene = loadScene(request);
@@ -142,6 +146,9 @@ void addViewCommand(CLI::App& raylab) {
   addText(command, "--compare", o->compare, "MATERIAL=MODEL[:k=v,...]",
           "open the split view: the right side renders MATERIAL as MODEL with these parameters (RGB as r/g/b), "
           "e.g. --compare \"red plastic=ward:alpha_x=0.2,alpha_y=0.2\"");
+  addText(command, "--target", o->viewer.target, "FILE.slice|FILE.binary",
+          "a measured material beside the lobe: its phi_d = 90 slice, row by row, with the selected material's f at "
+          "the same pairs (docs/fitting.md)");
   addText(command, "--script", o->scriptPath, "FILE", "replay camera and parameter changes (format in docs/viewer.md)");
   addText(command, "--screenshot", o->viewer.screenshot, "FILE.exr|FILE.png",
           "save the last frame's image: the EXR and the PNG, the one not named beside the other");

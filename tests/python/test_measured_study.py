@@ -1,0 +1,118 @@
+"""The measured study on real MERL slices (tools/measured_study.py, docs/measured.md): it fits, resumes, survives a
+killed Dask worker with the same fits.json, refuses bad slices and unknown materials before any work, and the
+published fits that raylab's models express exactly give raylab's own error. Skipped, with a message, where
+../shared/measured (published data, never committed) is absent."""
+import json
+import math
+import shutil
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+SOURCE = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(SOURCE / "tools"))
+import measured_data as md  # noqa: E402
+import measured_study  # noqa: E402
+
+SLICES = md.MEASURED / "merl_slices"
+MATERIALS = "blue-acrylic,chrome,red-fabric"
+MODELS = "lambert,cooktorrance,ward"
+
+needs_data = pytest.mark.skipif(not SLICES.is_dir(), reason=f"{SLICES} is absent: the measured study needs the MERL "
+                                "slices of ../shared/measured (docs/measured.md says where to get them)")
+
+
+def study(out: Path, *extra: str) -> int:
+    return measured_study.main(["--slices", str(SLICES), "--materials", MATERIALS, "--models", MODELS,
+                                "--out", str(out), "--workers", "2", *extra])
+
+
+def without_seconds(records):
+    return [{k: v for k, v in r.items() if k != "seconds"} for r in records]
+
+
+@needs_data
+def test_the_study_fits_three_slices_and_a_rerun_resumes(work):
+    assert study(work / "a") == 0
+    records = json.loads((work / "a" / "fits.json").read_text())
+    assert len(records) == 9
+    for r in records:
+        for key in ("material", "model", "params", "metric", "error_cos", "error_log", "relative_cos", "relative_log",
+                    "seconds", "starts"):
+            assert key in r, key
+        assert r["metric"] == "log"
+        assert 0.0 < r["relative_log"] < 1.0 and math.isfinite(r["relative_cos"])
+    by = {(r["material"], r["model"]): r for r in records}
+    # A plastic has a diffuse floor and a highlight: Cook-Torrance must find both, and beat Lambert by far.
+    ct = by[("blue-acrylic", "cooktorrance")]
+    assert not ct["warnings"], ct["warnings"]
+    assert "rho_d=0/" not in ct["params"]
+    assert ct["relative_log"] < 0.5 * by[("blue-acrylic", "lambert")]["relative_log"]
+    before = {p: p.stat().st_mtime_ns for p in (work / "a" / "jobs").iterdir()}
+    assert study(work / "a") == 0
+    assert {p: p.stat().st_mtime_ns for p in (work / "a" / "jobs").iterdir()} == before, "a rerun fits nothing again"
+    assert without_seconds(json.loads((work / "a" / "fits.json").read_text())) == without_seconds(records)
+
+
+@needs_data
+def test_a_killed_worker_does_not_change_fits_json(work):
+    assert study(work / "clean") == 0
+    assert study(work / "killed", "--kill-one-worker-after", "2") == 0
+    clean = json.loads((work / "clean" / "fits.json").read_text())
+    killed = json.loads((work / "killed" / "fits.json").read_text())
+    assert without_seconds(killed) == without_seconds(clean)
+
+
+@needs_data
+def test_bad_slices_and_unknown_materials_are_refused_before_any_work(work, capsys):
+    good = (SLICES / "blue-acrylic.slice").read_bytes()
+    cases = {"short": (good[:1000], "holds 1000 bytes")}
+    values = np.frombuffer(good, "<f4").copy()
+    values[10] = np.nan
+    cases["nan"] = (values.tobytes(), "is nan")
+    values = np.frombuffer(good, "<f4").copy()
+    values[5] = -1.0
+    cases["negative"] = (values.tobytes(), "is -1")
+    values[5] = np.inf
+    cases["inf"] = (values.tobytes(), "is inf")
+    cases["zeros"] = (bytes(len(good)), "every value is zero")
+    for name, (data, says) in cases.items():
+        folder = work / name
+        folder.mkdir()
+        (folder / f"{name}.slice").write_bytes(data)
+        out = work / f"out_{name}"
+        assert measured_study.main(["--slices", str(folder), "--out", str(out)]) == 2
+        message = capsys.readouterr().err
+        assert f"{name}.slice" in message and says in message, message
+        assert not out.exists(), "nothing is written for a bad slice"
+    out = work / "out_missing"
+    assert measured_study.main(["--slices", str(SLICES), "--materials", "blue-acrylic,unobtainium",
+                                "--out", str(out)]) == 2
+    assert "unobtainium" in capsys.readouterr().err
+    assert not out.exists()
+
+
+@needs_data
+def test_published_fits_that_raylab_expresses_give_raylabs_own_error():
+    raylab = md.import_raylab()
+    fits = md.published_fits()
+    wi, wo = md.slice_directions("centre")
+    checked = 0
+    for model, (family, _) in md.NGAN_FAMILIES.items():
+        for material in ("blue-acrylic", "red-fabric", "gold-metallic-paint"):
+            family_, lambert, params = fits[f"Ngan {model}"][material]
+            try:
+                rmodel, rparams = md.raylab_material(family_, lambert, params)
+            except md.NotExpressible:
+                continue
+            text = ",".join(f"{k}=" + ("/".join(f"{x:.17g}" for x in v) if isinstance(v, list) else f"{v:.17g}")
+                            for k, v in rparams.items())
+            theirs = md.slice_errors(md.published_f(family_, lambert, params, wi, wo),
+                                     md.read_slice(SLICES / f"{material}.slice"))
+            for metric, key in (("log", "error_log"), ("cosine", "error_cos")):
+                ours, _ = raylab.brdf.fit_error(str(SLICES / f"{material}.slice"), rmodel, text, metric=metric)
+                assert ours == pytest.approx(theirs[key], rel=1e-5), (model, material, metric)
+            checked += 1
+    assert checked >= 6

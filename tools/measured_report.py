@@ -1,0 +1,286 @@
+"""docs/measured.md from the measured study's records (tools/measured_study.py --docs DOCS): the models ranked on the
+real MERL slices, raylab's fits beside the published fits of the same materials, the best model per material, and
+the figures (slices beside their best fits; the best fits of every material as spheres)."""
+from __future__ import annotations
+
+import math
+import shutil
+import sys
+import tempfile
+from collections import defaultdict
+from pathlib import Path
+
+import numpy as np
+
+import measured_data as md
+
+BEGIN, END = "<!-- study: begin (tools/measured_study.py writes this) -->", "<!-- study: end -->"
+# Ngan et al. 2005's ranking on the same database (their Fig. 6): which families came out ahead.
+NGAN_ORDER = "Ashikhmin-Shirley, Cook-Torrance and He best; Lafortune next; Ward and Blinn-Phong last"
+
+
+def params_of(text: str) -> dict:
+    """'a=1/2/3,b=4' as keyword arguments of Scene.set_material."""
+    out = {}
+    for item in filter(None, text.split(",")):
+        key, _, value = item.partition("=")
+        parts = [float(v) for v in value.split("/")]
+        out[key] = tuple(parts) if len(parts) == 3 else parts[0]
+    return out
+
+
+def table(header: list[str], rows: list[list[str]]) -> str:
+    lines = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
+    lines += ["| " + " | ".join(row) + " |" for row in rows]
+    return "\n".join(lines)
+
+
+def by_material(records: list[dict]) -> dict[str, dict[str, dict]]:
+    out: dict[str, dict[str, dict]] = defaultdict(dict)
+    for r in records:
+        out[r["material"]][r["model"]] = r
+    return out
+
+
+def model_table(records: list[dict], key: str) -> tuple[str, dict]:
+    materials = by_material(records)
+    ranks: dict[str, list[int]] = defaultdict(list)
+    for fits in materials.values():
+        for rank, (model, _) in enumerate(sorted(fits.items(), key=lambda kv: kv[1][key]), 1):
+            ranks[model].append(rank)
+    models = sorted(ranks, key=lambda m: np.mean(ranks[m]))
+    rows = []
+    for model in models:
+        rs = [fits[model] for fits in materials.values() if model in fits]
+        cos = np.array([r["relative_cos"] for r in rs])
+        log = np.array([r["relative_log"] for r in rs])
+        rows.append([f"`{model}`", f"{np.median(cos):.3f}", f"{cos.mean():.3f}", f"{np.median(log):.3f}",
+                     f"{log.mean():.3f}", f"{np.mean(ranks[model]):.2f}", f"{np.mean([r['seconds'] for r in rs]):.2f}"])
+    return table(["model", "median cosine", "mean cosine", "median log", "mean log", "mean rank", "CPU s"], rows), \
+        {m: float(np.mean(ranks[m])) for m in models}
+
+
+def published_errors(slices: dict[str, Path]) -> dict[str, dict[str, dict]]:
+    """label -> material -> slice_errors of every published fit with a formula (measured_data.published_f)."""
+    wi, wo = md.slice_directions("centre")
+    out: dict[str, dict[str, dict]] = {}
+    for label, fits in md.published_fits().items():
+        out[label] = {}
+        for material, path in slices.items():
+            if material in fits:
+                out[label][material] = md.slice_errors(md.published_f(*fits[material], wi, wo), md.read_slice(path))
+    return out
+
+
+def mapping_check(raylab, slices: dict[str, Path], published: dict) -> list[str]:
+    """For the published fits raylab expresses exactly: raylab's own error of the mapped material against the
+    formula's, the largest difference over the materials."""
+    lines = []
+    fits_by_label = md.published_fits()
+    for model, (family, _) in md.NGAN_FAMILIES.items():
+        label = f"Ngan {model}"
+        worst, count, refused = 0.0, 0, defaultdict(int)
+        for material, path in slices.items():
+            if material not in fits_by_label[label]:
+                continue
+            _, lambert, params = fits_by_label[label][material]
+            try:
+                rmodel, rparams = md.raylab_material(family, lambert, params)
+            except md.NotExpressible as reason:
+                refused[str(reason).split(" = ")[0]] += 1
+                continue
+            text = ",".join(f"{k}=" + ("/".join(f"{x:.17g}" for x in v) if isinstance(v, list) else f"{v:.17g}")
+                            for k, v in rparams.items())
+            error, _ = raylab.brdf.fit_error(str(path), rmodel, text, metric="log")
+            mine = published[label][material]["error_log"]
+            worst = max(worst, abs(error - mine) / mine)
+            count += 1
+        note = "; ".join(f"{n} refused ({why})" for why, n in refused.items())
+        lines.append(f"| Ngan {model} | `{md.raylab_material.__name__}` → {model if count else '—'} | {count} | "
+                     f"{worst:.1e} | {note or '—'} |")
+    return lines
+
+
+def published_section(records: list[dict], published: dict, key: str) -> str:
+    materials = by_material(records)
+    short = key.split("_")[1]
+    rows, exceptions = [], []
+    for label, errors in published.items():
+        med = lambda k: np.median([e[k] for e in errors.values()])  # noqa: E731
+        row = [label, str(len(errors)), f"{med('relative_cos'):.3f}", f"{med('relative_log'):.3f}"]
+        model = label.split(" ", 1)[1] if label.startswith("Ngan ") else None
+        if model is not None and all(model in materials[m] for m in errors):
+            ours = {m: materials[m][model][key] for m in errors}
+            theirs = {m: errors[m][key] for m in errors}
+            wins = sum(ours[m] <= theirs[m] * (1 + 1e-9) for m in errors)
+            row += [f"{np.median(list(ours.values())):.3f}", f"{wins}/{len(errors)} ({100 * wins / len(errors):.0f}%)"]
+            for m in errors:
+                if ours[m] > theirs[m] * (1 + 1e-9):
+                    exceptions.append(f"{label}, {m}: raylab {ours[m]:.4f} against {theirs[m]:.4f} "
+                                      f"({why_worse(model, m)})")
+        else:
+            row += ["—", "—"]
+        rows.append(row)
+    text = table(["published fit", "materials", "median cosine", "median log",
+                  f"raylab's fit of the family, median {short}", f"raylab no worse ({short})"], rows)
+    if exceptions:
+        text += "\n\nWhere raylab's fit is worse than the published parameters:\n" + \
+            "\n".join(f"- {e}" for e in exceptions)
+    return text
+
+
+def why_worse(model: str, material: str) -> str:
+    fits = md.published_fits()[f"Ngan {model}"]
+    family, lambert, params = fits[material]
+    try:
+        md.raylab_material(family, lambert, params)
+    except md.NotExpressible as reason:
+        return f"the published fit is outside raylab's model: {reason}"
+    return "the fit stopped in another basin"
+
+
+def best_section(records: list[dict], published: dict, key: str) -> str:
+    materials = by_material(records)
+    ratios, wins, rows = [], 0, []
+    best_published = ("Löw ABC", "Bagher SGD")
+    for material, fits in sorted(materials.items()):
+        best = min(fits.values(), key=lambda r: r[key])
+        theirs = [(label, published[label][material][key]) for label in best_published if material in published[label]]
+        if not theirs:
+            continue
+        label, value = min(theirs, key=lambda t: t[1])
+        ratios.append(best[key] / value)
+        wins += best[key] <= value
+        rows.append([material, f"`{best['model']}`", f"{best[key]:.3f}", label, f"{value:.3f}",
+                     f"{best[key] / value:.2f}"])
+    head = (f"raylab's best model beats the best of Löw's ABC and Bagher's SGD fits on {wins} of {len(ratios)} "
+            f"materials; its error is {np.median(ratios):.2f}x theirs at the median (best {min(ratios):.2f}x, worst "
+            f"{max(ratios):.2f}x).\n\n")
+    return head + "<details><summary>Every material</summary>\n\n" + table(
+        ["material", "raylab's best", short_name(key), "best published", short_name(key), "ratio"], rows) + \
+        "\n\n</details>"
+
+
+def short_name(key: str) -> str:
+    return "relative " + key.split("_")[1]
+
+
+def slice_figure(raylab, records: list[dict], slices: dict[str, Path], key: str, path: Path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import LogNorm, TwoSlopeNorm
+
+    from measured_study import FIGURE_MATERIALS
+
+    materials = by_material(records)
+    chosen = [m for m in FIGURE_MATERIALS if m in slices and m in materials]
+    wi, wo = md.slice_directions("centre")
+    mask = md.kept("centre")
+    figure, axes = plt.subplots(2 * len(chosen), 4, figsize=(11, 5.2 * len(chosen)), squeeze=False)
+    for row, material in enumerate(chosen):
+        target = md.read_slice(slices[material]).mean(-1)
+        fits = sorted(materials[material].values(), key=lambda r: r[key])[:3]
+        lo, hi = max(target[target > 0].min(), 1e-4), target.max()
+        extent = (0, 90, 90, 0)
+        ax = axes[2 * row, 0]
+        image = ax.imshow(np.where(mask, target, np.nan), norm=LogNorm(lo, hi), extent=extent, cmap="magma")
+        ax.set_title(f"{material}: measured", fontsize=8)
+        figure.colorbar(image, ax=ax, fraction=0.046, label="f (1/sr)")
+        axes[2 * row + 1, 0].axis("off")
+        for column, fit in enumerate(fits, 1):
+            f = raylab.brdf.eval(fit["model"], fit["params"], wi=wi.reshape(-1, 3), wo=wo.reshape(-1, 3),
+                                 backend="cpu").reshape(90, 90, 3).mean(-1)
+            ax = axes[2 * row, column]
+            image = ax.imshow(np.where(mask, np.maximum(f, lo), np.nan), norm=LogNorm(lo, hi), extent=extent,
+                              cmap="magma")
+            ax.set_title(f"{fit['model']} ({fit[key]:.3f})", fontsize=8)
+            figure.colorbar(image, ax=ax, fraction=0.046)
+            ax = axes[2 * row + 1, column]
+            difference = np.log10(np.maximum(f, 1e-6) / np.maximum(target, 1e-6))
+            image = ax.imshow(np.where(mask, difference, np.nan), norm=TwoSlopeNorm(0.0, -1.0, 1.0), extent=extent,
+                              cmap="coolwarm")
+            ax.set_title("log10(fit / measured)", fontsize=8)
+            figure.colorbar(image, ax=ax, fraction=0.046)
+        for ax in axes[2 * row:2 * row + 2].flat:
+            ax.set_xlabel("sqrt-scaled theta_h column", fontsize=6)
+            ax.set_ylabel("theta_d (deg)", fontsize=6)
+            ax.tick_params(labelsize=6)
+    figure.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    figure.savefig(path, dpi=80)
+    plt.close(figure)
+
+
+def contact_sheet(raylab, records: list[dict], key: str, path: Path, size: int = 96, spp: int = 64):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    sys.path.insert(0, str(md.REPO / "tools" / "scenes"))
+    import make_scenes
+
+    materials = by_material(records)
+    with tempfile.TemporaryDirectory() as directory:
+        work = Path(directory)
+        g = make_scenes.Gltf("measured_sheet")
+        shutil.copy(md.REPO / "assets" / "scenes" / "environments" / "sunrise.exr", work / "sunrise.exr")
+        g.environment("sunrise.exr", 1.0)
+        g.sphere("sphere", [0.0, 0.0, 0.0], 1.0, g.material("sphere", {"model": "lambert"}))
+        g.camera("camera", [0.0, 0.4, 3.4], [0.0, 0.0, 0.0], 36.0)
+        scene = raylab.Scene.load(g.write(str(work)))
+        names = sorted(materials)
+        columns = 10
+        rows = (len(names) + columns - 1) // columns
+        figure, axes = plt.subplots(rows, columns, figsize=(1.3 * columns, 1.45 * rows), squeeze=False)
+        for ax in axes.flat:
+            ax.axis("off")
+        for ax, material in zip(axes.flat, names):
+            best = min(materials[material].values(), key=lambda r: r[key])
+            scene.set_material("sphere", model=best["model"], **params_of(best["params"]))
+            image = raylab.Renderer(scene, width=size, height=size).render(spp=spp)[..., :3]
+            ax.imshow(np.clip(image, 0, 1) ** (1 / 2.2))
+            ax.set_title(f"{material}\n{best['model']}", fontsize=5)
+        figure.tight_layout(pad=0.2)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        figure.savefig(path, dpi=100)
+        plt.close(figure)
+
+
+def write(records: list[dict], slices: dict[str, Path], metric: str, docs: Path):
+    raylab = md.import_raylab()
+    key = "relative_log" if metric == "log" else "relative_cos"
+    page = docs / "measured.md"
+    models, mean_ranks = model_table(records, key)
+    published = published_errors(slices)
+    images = docs / "images" / "measured"
+    slice_figure(raylab, records, slices, key, images / "slices.png")
+    contact_sheet(raylab, records, key, images / "best_fits.png")
+    ranking = ", ".join(f"`{m}` ({r:.1f})" for m, r in mean_ranks.items())
+    body = "\n\n".join([
+        f"Fits minimise the {metric} metric; {len({r['material'] for r in records})} materials, "
+        f"{len({r['model'] for r in records})} models. Relative errors (0: exact, 1: no better than black).",
+        "### Per model\n\n" + models,
+        "### Published fits beside raylab's\n\nEach published fit evaluated on the same slices by its own formula "
+        "(tools/measured_data.py `published_f`), and raylab's fit of the same family. Errors in both metrics; the "
+        f"last column compares in the {metric} metric, the one raylab minimised.\n\n" +
+        published_section(records, published, key),
+        "Ngan's fits that raylab's models express exactly, evaluated through raylab (`raylab.brdf.fit_error`) "
+        "against the formula (largest relative difference of the log error):\n\n"
+        "| published fit | mapping | materials | largest difference | not expressible |\n|---|---|---|---|---|\n" +
+        "\n".join(mapping_check(raylab, slices, published)),
+        f"### The ranking\n\nMean rank over the materials (1 best): {ranking}.\n\nNgan et al. 2005: {NGAN_ORDER}.",
+        "### The best model per material against the best published fit\n\n" + best_section(records, published, key),
+        "### Figures\n\n![measured slices beside their three best fits](images/measured/slices.png)\n\n"
+        "Each material's measured slice (f averaged over RGB, log scale; white: the grazing bins a fit leaves out) "
+        "beside its three best fits, with log10(fit / measured) below each.\n\n"
+        "![every material's best fit as a sphere](images/measured/best_fits.png)\n\n"
+        "Every material's best fit, a sphere under Blender's sunrise world (path traced, 64 spp).",
+    ])
+    text = page.read_text() if page.exists() else ""
+    if BEGIN in text and END in text:
+        head, rest = text.split(BEGIN, 1)
+        text = head + BEGIN + "\n" + body + "\n" + END + rest.split(END, 1)[1]
+    else:
+        text = text + f"\n{BEGIN}\n{body}\n{END}\n"
+    page.write_text(text)
+    print(f"measured study: wrote {page}", file=sys.stderr)
