@@ -6,6 +6,7 @@
 #include <array>
 #include <functional>
 #include <atomic>
+#include <condition_variable>
 #include <cstdio>
 #include <cmath>
 #include <mutex>
@@ -25,6 +26,8 @@ namespace {
 // Residual blocks of this many pairs: few enough blocks that Ceres' bookkeeping stays small.
 constexpr std::size_t kPairsPerBlock = 256;
 constexpr int kMaxIterations = 100;
+// A start on the coarse pairs only has to reach its basin: the polish on every pair finishes it.
+constexpr int kMaxCoarseIterations = 30;
 // The search scores its points on about this many pairs (every k-th): enough to tell basins apart, a quarter of a
 // slice's cost.
 constexpr std::size_t kSearchPairs = 2048;
@@ -463,7 +466,8 @@ struct StartResult {
   bool failed = false;
 };
 
-StartResult solveStart(const FitTarget& target, const ModelPlan& plan, std::vector<double> x, FitMetric metric) {
+StartResult solveStart(const FitTarget& target, const ModelPlan& plan, std::vector<double> x, FitMetric metric,
+                       int maxIterations = kMaxIterations) {
   const Stopwatch clock;
   const std::vector<Variable>& variables = plan.variables;
   ceres::Problem problem;
@@ -483,7 +487,7 @@ StartResult solveStart(const FitTarget& target, const ModelPlan& plan, std::vect
   }
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = kMaxIterations;
+  options.max_num_iterations = maxIterations;
   // Relative tolerances far below what a fit's error can show (its 4th digit) and far above rounding.
   options.function_tolerance = 1e-10;
   options.gradient_tolerance = 1e-14;
@@ -666,128 +670,152 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
   const unsigned memoryThreads = unsigned(std::max(1.0, kMemoryBudgetBytes / perThread));
   const unsigned threadLimit = std::min({cores, memoryThreads, options.threads > 0 ? unsigned(options.threads) : cores});
 
-  std::mutex progressMutex;
   int done = 0;
-  // Known once the search has chosen the starts (a model with no nonlinear parameter needs only one).
-  int total = int(plans.size()) * (options.searchPoints > 0 ? options.starts + 1 : options.starts);
-  const auto report = [&](const std::string& model, double seconds) {
-    const std::lock_guard lock(progressMutex);
-    ++done;
-    if (options.progress) options.progress(done, total, model, seconds);
+  // Known once each search has chosen its starts (a model with no nonlinear parameter needs only one).
+  const bool searched = options.searchPoints > 0;
+  int total = int(plans.size()) * (options.starts + (searched ? 1 : 0) +
+                                   (searched && target.pairs.size() > 2 * kSearchPairs ? 1 : 0));
+
+  // Each model is a chain of steps: its search, its LM starts (the search's best distinct points, or without a
+  // search the defaults and random points), and, when the starts saw the coarse pairs, its best start polished on
+  // every pair. The steps of all models share the threads, a step becoming ready when its chain reaches it, those of
+  // the models with the most variables first so that the cores finish together. Every step's result depends only on
+  // its inputs: the same seed gives the same fits however the steps interleave.
+  const bool coarseToFine = options.searchPoints > 0 && target.pairs.size() > 2 * kSearchPairs;
+  const FitTarget coarse = options.searchPoints > 0 ? coarseTarget(target) : FitTarget{};
+  const FitTarget& startTarget = coarseToFine ? coarse : target;
+  struct Chain {
+    std::vector<std::vector<double>> starts;
+    std::vector<StartResult> results;
+    int pending = 0;  // starts not finished
+    StartResult best;
+    double searchSeconds = 0.0;
   };
-  // Runs job(0..count-1) on the pool, the jobs in the given order; the first exception is rethrown.
-  const auto parallel = [&](const std::vector<std::size_t>& order, const std::function<void(std::size_t)>& job) {
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr failure;
-    const auto work = [&] {
-      for (std::size_t n = next++; n < order.size(); n = next++) {
-        try {
-          job(order[n]);
-        } catch (...) {
-          const std::lock_guard lock(progressMutex);
-          if (!failure) failure = std::current_exception();
+  std::vector<Chain> chains(plans.size());
+  enum class Step { kSearch, kStart, kPolish };
+  struct Task {
+    Step step;
+    std::size_t model;
+    std::size_t start = 0;
+  };
+  std::vector<Task> ready;
+  std::mutex queueMutex;
+  std::condition_variable wake;
+  std::size_t running = 0;
+  std::exception_ptr failure;
+  const auto pushStarts = [&](std::size_t m) {  // queueMutex held
+    Chain& chain = chains[m];
+    chain.results.resize(chain.starts.size());
+    chain.pending = int(chain.starts.size());
+    for (std::size_t s = 0; s < chain.starts.size(); ++s) ready.push_back({Step::kStart, m, s});
+  };
+  for (std::size_t m = 0; m < plans.size(); ++m) {
+    if (options.searchPoints > 0) {
+      ready.push_back({Step::kSearch, m});
+      continue;
+    }
+    std::mt19937_64 random(std::uint64_t(options.seed) * 1000003u + plans[m].model->id);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    for (int s = 0; s < options.starts; ++s) {
+      std::vector<double> x;
+      for (const Variable& v : plans[m].variables) x.push_back(s == 0 ? v.start : v.lo + (v.hi - v.lo) * uniform(random));
+      chains[m].starts.push_back(std::move(x));
+    }
+    pushStarts(m);
+  }
+  const auto finishStarts = [&](std::size_t m) {  // queueMutex held: the best start, to polish or keep
+    Chain& chain = chains[m];
+    const StartResult* best = nullptr;
+    // Ties keep the earlier start: the order is fixed, so the choice is too.
+    for (const StartResult& r : chain.results) {
+      if (!r.failed && (best == nullptr || r.cost < best->cost)) best = &r;
+    }
+    if (best == nullptr) return;
+    chain.best = *best;
+    chain.best.seconds = 0.0;
+    if (coarseToFine) ready.push_back({Step::kPolish, m});
+  };
+  const auto work = [&] {
+    std::unique_lock lock(queueMutex);
+    for (;;) {
+      wake.wait(lock, [&] { return !ready.empty() || running == 0 || failure; });
+      if (failure || (ready.empty() && running == 0)) return;
+      // The step of the model with the most variables, later steps of a chain first.
+      const auto first = std::min_element(ready.begin(), ready.end(), [&](const Task& a, const Task& b) {
+        const std::size_t va = plans[a.model].variables.size(), vb = plans[b.model].variables.size();
+        return va != vb ? va > vb : int(a.step) > int(b.step);
+      });
+      const Task task = *first;
+      ready.erase(first);
+      ++running;
+      lock.unlock();
+      std::string label = std::string(plans[task.model].model->name);
+      double seconds = 0.0;
+      try {
+        Chain& chain = chains[task.model];
+        if (task.step == Step::kSearch) {
+          const Stopwatch clock;
+          std::mt19937_64 random(std::uint64_t(options.seed) * 1000003u + plans[task.model].model->id);
+          std::vector<Scored> found = searchBasins(coarse, plans[task.model], options.metric, options.searchPoints,
+                                                   options.starts, random);
+          for (Scored& start : found) chain.starts.push_back(std::move(start.x));
+          seconds = chain.searchSeconds = clock.seconds();
+          label += " search";
+        } else if (task.step == Step::kStart) {
+          chain.results[task.start] = solveStart(startTarget, plans[task.model], chain.starts[task.start],
+                                                 options.metric, coarseToFine ? kMaxCoarseIterations : kMaxIterations);
+          seconds = chain.results[task.start].seconds;
+        } else {
+          StartResult fine = solveStart(target, plans[task.model], chain.best.x, options.metric);
+          seconds = fine.seconds;
+          if (!fine.failed) chain.best = std::move(fine);
+          label += " polish";
         }
+      } catch (...) {
+        lock.lock();
+        if (!failure) failure = std::current_exception();
+        --running;
+        wake.notify_all();
+        return;
       }
-    };
+      lock.lock();
+      --running;
+      Chain& chain = chains[task.model];
+      if (task.step == Step::kSearch) {
+        pushStarts(task.model);
+        total += int(chain.starts.size()) + (coarseToFine ? 1 : 0) - options.starts - (coarseToFine ? 1 : 0);
+      } else if (task.step == Step::kStart && --chain.pending == 0) {
+        finishStarts(task.model);
+      }
+      ++done;
+      if (options.progress) options.progress(done, total, label, seconds);
+      wake.notify_all();
+    }
+  };
+  {
     std::vector<std::thread> pool;
-    const unsigned threads = std::min<unsigned>(threadLimit, unsigned(order.size()));
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+    for (unsigned t = 1; t < threadLimit; ++t) pool.emplace_back(work);
     work();
     for (std::thread& thread : pool) thread.join();
-    if (failure) std::rethrow_exception(failure);
-  };
-
-  // Where each model's LM starts: the search's best distinct points, or (no search) the defaults and random points.
-  struct Job {
-    std::size_t plan;
-    std::vector<double> x;
-  };
-  std::vector<Job> jobs;
-  std::vector<double> searchSeconds(plans.size(), 0.0);
-  // With a search, the starts are solved on the coarse pairs and only each model's best is polished on them all.
-  const bool coarseToFine = options.searchPoints > 0 && target.pairs.size() > 2 * kSearchPairs;
-  const FitTarget coarse = coarseToFine ? coarseTarget(target) : FitTarget{};
-  const FitTarget& startTarget = coarseToFine ? coarse : target;
-  if (options.searchPoints > 0) {
-    std::vector<std::vector<Scored>> found(plans.size());
-    std::vector<std::size_t> order(plans.size());
-    for (std::size_t m = 0; m < plans.size(); ++m) order[m] = m;
-    parallel(order, [&](std::size_t m) {
-      const Stopwatch clock;
-      std::mt19937_64 random(std::uint64_t(options.seed) * 1000003u + plans[m].model->id);
-      found[m] = searchBasins(coarseToFine ? coarse : coarseTarget(target), plans[m], options.metric,
-                              options.searchPoints, options.starts, random);
-      searchSeconds[m] = clock.seconds();
-      report(std::string(plans[m].model->name) + " search", searchSeconds[m]);
-    });
-    for (std::size_t m = 0; m < plans.size(); ++m) {
-      for (Scored& start : found[m]) jobs.push_back({m, std::move(start.x)});
-    }
-    total = int(plans.size() + jobs.size()) + (coarseToFine ? int(plans.size()) : 0);
-  } else {
-    for (std::size_t m = 0; m < plans.size(); ++m) {
-      std::mt19937_64 random(std::uint64_t(options.seed) * 1000003u + plans[m].model->id);
-      std::uniform_real_distribution<double> uniform(0.0, 1.0);
-      for (int s = 0; s < options.starts; ++s) {
-        std::vector<double> x;
-        for (const Variable& v : plans[m].variables) x.push_back(s == 0 ? v.start : v.lo + (v.hi - v.lo) * uniform(random));
-        jobs.push_back({m, std::move(x)});
-      }
-    }
   }
-
-  // The starts with the most variables first, so that the cores finish together (the longest-first schedule).
-  std::vector<std::size_t> order(jobs.size());
-  for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return jobs[a].x.size() > jobs[b].x.size();
-  });
-  std::vector<StartResult> results(jobs.size());
-  parallel(order, [&](std::size_t j) {
-    results[j] = solveStart(startTarget, plans[jobs[j].plan], jobs[j].x, options.metric);
-    report(std::string(plans[jobs[j].plan].model->name), results[j].seconds);
-  });
-
-  // Each model's best start (ties keep the earlier start: the order is fixed, so the choice is too), polished on
-  // every pair when the starts saw the coarse ones.
-  std::vector<StartResult> polished(plans.size());
-  std::vector<std::size_t> models;
-  for (std::size_t m = 0; m < plans.size(); ++m) {
-    const StartResult* best = nullptr;
-    for (std::size_t j = 0; j < jobs.size(); ++j) {
-      if (jobs[j].plan == m && !results[j].failed && (best == nullptr || results[j].cost < best->cost)) {
-        best = &results[j];
-      }
-    }
-    if (best != nullptr) {
-      polished[m] = *best;
-      polished[m].seconds = 0.0;
-      if (coarseToFine) models.push_back(m);
-    }
-  }
-  parallel(models, [&](std::size_t m) {
-    StartResult fine = solveStart(target, plans[m], polished[m].x, options.metric);
-    if (!fine.failed) polished[m] = std::move(fine);
-    report(std::string(plans[m].model->name) + " polish", fine.seconds);
-  });
+  if (failure) std::rethrow_exception(failure);
 
   std::vector<FitResult> fits;
   for (std::size_t m = 0; m < plans.size(); ++m) {
     FitResult fit;
     fit.model = std::string(plans[m].model->name);
-    fit.seconds = searchSeconds[m];
-    for (std::size_t j = 0; j < jobs.size(); ++j) {
-      if (jobs[j].plan != m) continue;
-      fit.seconds += results[j].seconds;
+    const Chain& chain = chains[m];
+    fit.seconds = chain.searchSeconds + chain.best.seconds;
+    for (const StartResult& r : chain.results) {
+      fit.seconds += r.seconds;
       ++fit.starts;
-      fit.failedStarts += results[j].failed ? 1 : 0;
+      fit.failedStarts += r.failed ? 1 : 0;
     }
-    fit.seconds += polished[m].seconds;
-    if (fit.failedStarts == fit.starts) {
+    if (fit.starts == 0 || fit.failedStarts == fit.starts) {
       throw Error("raylab brdf fit: every start of " + fit.model + " failed (" + std::to_string(fit.starts) +
                   " starts): the target's values may be out of the model's reach");
     }
-    const StartResult* best = &polished[m];
+    const StartResult* best = &chain.best;
     std::vector<double> x = best->x;
     fit.warnings = reviewFit(target, plans[m], x, options.metric);
     if (fit.failedStarts > 0) {
