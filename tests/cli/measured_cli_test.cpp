@@ -183,8 +183,58 @@ TEST_F(MeasuredCliTest, FitRanksTheTabulatedModelFirstAndWritesJson) {
   EXPECT_EQ(same.exitCode, 2) << same.output;
   EXPECT_NE(readBytes(samples).find("wi_x"), std::string::npos) << "the target was overwritten";
   const CommandResult bad = runRaylab({"brdf", "fit", good_.string(), "--models", "glass"});
-  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_EQ(bad.exitCode, 2) << "a model that cannot be fitted is a usage error";
   EXPECT_NE(bad.output.find("is not a model that can be fitted"), std::string::npos) << bad.output;
+}
+
+// A MERL phi_d = 90 slice of a Lambertian 0.3 (f = 0.3 / pi in every bin), or of `value` at one bin.
+std::string lambertSlice(float bad = 0.0f, std::size_t at = std::size_t(-1)) {
+  std::string bytes(90 * 90 * 3 * sizeof(float), '\0');
+  for (std::size_t i = 0; i < 90 * 90 * 3; ++i) {
+    const float f = i == at ? bad : float(0.3 / 3.14159265358979323846);
+    std::memcpy(bytes.data() + i * sizeof f, &f, sizeof f);
+  }
+  return bytes;
+}
+
+TEST(MeasuredCli, ASliceIsATargetAndABadOneIsAUsageError) {
+  const fs::path dir = scratch();
+  const fs::path slice = dir / "lambert.slice", json = dir / "slice_fit.json";
+  writeBytes(slice, lambertSlice());
+  const CommandResult fit =
+      runRaylab({"brdf", "fit", slice.string(), "--models", "cooktorrance,lambert", "--json", json.string()});
+  ASSERT_EQ(fit.exitCode, 0) << fit.output;
+  // What the target holds, before fitting.
+  EXPECT_NE(fit.output.find("6401 samples"), std::string::npos) << fit.output;
+  EXPECT_NE(fit.output.find("decades"), std::string::npos) << fit.output;
+  EXPECT_NE(fit.output.find("isotropic (x and y parameters tied)"), std::string::npos) << fit.output;
+  EXPECT_NE(fit.output.find("1    lambert"), std::string::npos) << "a tie goes to the simpler model\n" << fit.output;
+  EXPECT_NE(fit.output.find("m is not constrained"), std::string::npos) << fit.output;
+  const std::string text = readBytes(json);
+  EXPECT_NE(text.find("\"isotropic\": true"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"warnings\""), std::string::npos) << text;
+
+  const auto refused = [&](const std::string& name, const std::string& bytes, const std::string& says) {
+    writeBytes(dir / name, bytes);
+    fs::remove(json);
+    const CommandResult r = runRaylab({"brdf", "fit", (dir / name).string(), "--json", json.string()});
+    EXPECT_EQ(r.exitCode, 2) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(says), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(json)) << name;
+  };
+  refused("short.slice", lambertSlice().substr(0, 4000), "holds 4000 bytes");
+  refused("nan.slice", lambertSlice(NAN, 4), "theta_d row 0, theta_h column 1, green is NaN");
+  refused("inf.slice", lambertSlice(INFINITY, 2), "is inf");
+  refused("negative.slice", lambertSlice(-1.0f, 0), "negative");
+  refused("zeros.slice", std::string(90 * 90 * 3 * sizeof(float), '\0'), "every value is zero");
+  const CommandResult both = runRaylab({"brdf", "fit", slice.string(), "--isotropic", "--anisotropic"});
+  EXPECT_EQ(both.exitCode, 2) << both.output;
+  // measured:file=... names a material whose file is missing, not a file called "measured:file=...".
+  const CommandResult material = runRaylab({"brdf", "fit", "measured:file=" + (dir / "absent.binary").string()});
+  EXPECT_NE(material.exitCode, 0);
+  EXPECT_EQ(material.output.find("neither"), std::string::npos) << material.output;
+  EXPECT_NE(material.output.find("absent.binary"), std::string::npos) << material.output;
 }
 
 }  // namespace
