@@ -308,6 +308,17 @@ def raylab_material(family: str, lambert, params: dict) -> tuple[str, dict]:
     raise NotExpressible(f"raylab has no model of the family {family} (issue: the measured-BRDF models)")
 
 
+# How each Ngan family maps onto raylab's model of the same name (bbm's ngan.h conventions), for the docs.
+NGAN_MAPPINGS = {
+    "ward": "`ward`: rho_d = the Lambert albedo, rho_s = albedo, alpha_x = alpha_y = roughness",
+    "ward_duer": "`ward_duer`: as Ward",
+    "phong": "`phong` (bbm reads Ngan's Blinn-Phong as the modified Phong about the mirror direction): rho_s = "
+             "albedo, s = sharpness",
+    "cooktorrance": "`cooktorrance`: rho_s = 4 albedo / pi (Cook's 1/(pi cos cos) against raylab's 1/(4 cos cos)), "
+                    "eta = (1 + sqrt F0) / (1 - sqrt F0) from Schlick's F0 (bbm's \"eta\"), m = roughness",
+    "ashikhmin_shirley": "none: raylab's `ashikhmin_shirley` is the paper's whole model",
+}
+
 # The published families of the study: (label, file, reader) in the order of docs/measured.md.
 NGAN_FAMILIES = {
     "ward": ("NganWard", "fits_bbm/ngan_ward.fit"),

@@ -96,7 +96,7 @@ def mapping_check(raylab, slices: dict[str, Path], published: dict) -> list[str]
             worst = max(worst, abs(error - mine) / mine)
             count += 1
         note = "; ".join(f"{n} refused ({why})" for why, n in refused.items())
-        lines.append(f"| Ngan {model} | `{md.raylab_material.__name__}` → {model if count else '—'} | {count} | "
+        lines.append(f"| Ngan {model} | {md.NGAN_MAPPINGS[model]} | {count} | "
                      f"{worst:.1e} | {note or '—'} |")
     return lines
 
@@ -104,7 +104,7 @@ def mapping_check(raylab, slices: dict[str, Path], published: dict) -> list[str]
 def published_section(records: list[dict], published: dict, key: str) -> str:
     materials = by_material(records)
     short = key.split("_")[1]
-    rows, exceptions = [], []
+    rows, exceptions = [], defaultdict(list)
     for label, errors in published.items():
         med = lambda k: np.median([e[k] for e in errors.values()])  # noqa: E731
         row = [label, str(len(errors)), f"{med('relative_cos'):.3f}", f"{med('relative_log'):.3f}"]
@@ -116,16 +116,19 @@ def published_section(records: list[dict], published: dict, key: str) -> str:
             row += [f"{np.median(list(ours.values())):.3f}", f"{wins}/{len(errors)} ({100 * wins / len(errors):.0f}%)"]
             for m in errors:
                 if ours[m] > theirs[m] * (1 + 1e-9):
-                    exceptions.append(f"{label}, {m}: raylab {ours[m]:.4f} against {theirs[m]:.4f} "
-                                      f"({why_worse(model, m)})")
+                    exceptions[(label, why_worse(model, m))].append((m, ours[m], theirs[m]))
         else:
             row += ["—", "—"]
         rows.append(row)
     text = table(["published fit", "materials", "median cosine", "median log",
                   f"raylab's fit of the family, median {short}", f"raylab no worse ({short})"], rows)
     if exceptions:
-        text += "\n\nWhere raylab's fit is worse than the published parameters:\n" + \
-            "\n".join(f"- {e}" for e in exceptions)
+        text += "\n\nWhere raylab's fit is worse than the published parameters, by reason:\n"
+        for (label, reason), cases in exceptions.items():
+            worst = max(cases, key=lambda c: c[1] / c[2])
+            names = ", ".join(c[0] for c in sorted(cases))
+            text += (f"\n- {label}, {len(cases)} materials: {reason}. Worst: {worst[0]}, {worst[1]:.3f} against "
+                     f"{worst[2]:.3f}. <details><summary>materials</summary>{names}</details>")
     return text
 
 
@@ -135,7 +138,7 @@ def why_worse(model: str, material: str) -> str:
     try:
         md.raylab_material(family, lambert, params)
     except md.NotExpressible as reason:
-        return f"the published fit is outside raylab's model: {reason}"
+        return f"the published fit is outside raylab's model ({reason})"
     return "the fit stopped in another basin"
 
 
@@ -166,6 +169,7 @@ def short_name(key: str) -> str:
 
 
 def slice_figure(raylab, records: list[dict], slices: dict[str, Path], key: str, path: Path):
+    """Per material a row: the measured slice, then each of its three best fits and log10(fit / measured) beside it."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -177,42 +181,41 @@ def slice_figure(raylab, records: list[dict], slices: dict[str, Path], key: str,
     chosen = [m for m in FIGURE_MATERIALS if m in slices and m in materials]
     wi, wo = md.slice_directions("centre")
     mask = md.kept("centre")
-    figure, axes = plt.subplots(2 * len(chosen), 4, figsize=(11, 5.2 * len(chosen)), squeeze=False)
+    figure, axes = plt.subplots(len(chosen), 7, figsize=(17, 2.5 * len(chosen)), squeeze=False,
+                                gridspec_kw={"wspace": 0.7, "hspace": 0.45})
+    # The slice's own square-root theta_h axis, labelled in degrees.
+    ticks = [0, 2, 10, 30, 60, 90]
+    columns = [math.sqrt(t / 90.0) * 90.0 for t in ticks]
+    extent = (0, 90, 90, 0)
     for row, material in enumerate(chosen):
         target = md.read_slice(slices[material]).mean(-1)
         fits = sorted(materials[material].values(), key=lambda r: r[key])[:3]
-        lo, hi = max(target[target > 0].min(), 1e-4), target.max()
-        extent = (0, 90, 90, 0)
-        ax = axes[2 * row, 0]
-        image = ax.imshow(np.where(mask, target, np.nan), norm=LogNorm(lo, hi), extent=extent, cmap="magma")
-        ax.set_title(f"{material}: measured", fontsize=8)
-        figure.colorbar(image, ax=ax, fraction=0.046, label="f (1/sr)")
-        axes[2 * row + 1, 0].axis("off")
-        for column, fit in enumerate(fits, 1):
+        lo, hi = max(target[target > 0].min(), 1e-6 * target.max()), target.max()
+        panels = [(f"{material}: measured", np.where(mask, target, np.nan), LogNorm(lo, hi), "magma")]
+        for fit in fits:
             f = raylab.brdf.eval(fit["model"], fit["params"], wi=wi.reshape(-1, 3), wo=wo.reshape(-1, 3),
                                  backend="cpu").reshape(90, 90, 3).mean(-1)
-            ax = axes[2 * row, column]
-            image = ax.imshow(np.where(mask, np.maximum(f, lo), np.nan), norm=LogNorm(lo, hi), extent=extent,
-                              cmap="magma")
-            ax.set_title(f"{fit['model']} ({fit[key]:.3f})", fontsize=8)
-            figure.colorbar(image, ax=ax, fraction=0.046)
-            ax = axes[2 * row + 1, column]
-            difference = np.log10(np.maximum(f, 1e-6) / np.maximum(target, 1e-6))
-            image = ax.imshow(np.where(mask, difference, np.nan), norm=TwoSlopeNorm(0.0, -1.0, 1.0), extent=extent,
-                              cmap="coolwarm")
-            ax.set_title("log10(fit / measured)", fontsize=8)
-            figure.colorbar(image, ax=ax, fraction=0.046)
-        for ax in axes[2 * row:2 * row + 2].flat:
-            ax.set_xlabel("sqrt-scaled theta_h column", fontsize=6)
-            ax.set_ylabel("theta_d (deg)", fontsize=6)
+            panels.append((f"{fit['model']} ({fit[key]:.3f})", np.where(mask, np.clip(f, lo, None), np.nan),
+                           LogNorm(lo, hi), "magma"))
+            ratio = np.log10(np.maximum(f, 1e-6) / np.maximum(target, 1e-6))
+            panels.append(("log10(fit / measured)", np.where(mask, ratio, np.nan), TwoSlopeNorm(0.0, -1.0, 1.0),
+                           "coolwarm"))
+        for column, (title, image, norm, cmap) in enumerate(panels):
+            ax = axes[row, column]
+            shown = ax.imshow(image, norm=norm, extent=extent, cmap=cmap)
+            ax.set_title(title, fontsize=8)
+            bar = figure.colorbar(shown, ax=ax, fraction=0.046, pad=0.03)
+            bar.ax.tick_params(labelsize=6)
+            ax.set_xticks(columns, [str(t) for t in ticks], fontsize=6)
             ax.tick_params(labelsize=6)
-    figure.tight_layout()
+            ax.set_xlabel("theta_h (deg)", fontsize=6)
+            ax.set_ylabel("theta_d (deg)", fontsize=6)
     path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=80)
+    figure.savefig(path, dpi=72, bbox_inches="tight")
     plt.close(figure)
 
 
-def contact_sheet(raylab, records: list[dict], key: str, path: Path, size: int = 96, spp: int = 64):
+def contact_sheet(raylab, records: list[dict], key: str, path: Path, size: int = 80, spp: int = 128):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -231,19 +234,29 @@ def contact_sheet(raylab, records: list[dict], key: str, path: Path, size: int =
         names = sorted(materials)
         columns = 10
         rows = (len(names) + columns - 1) // columns
-        figure, axes = plt.subplots(rows, columns, figsize=(1.3 * columns, 1.45 * rows), squeeze=False)
+        figure, axes = plt.subplots(rows, columns, figsize=(1.1 * columns, 1.35 * rows), squeeze=False)
         for ax in axes.flat:
             ax.axis("off")
+        # A slice measures reflection only: a model's transmittance (rough glass's tint) is set to 0, so that a
+        # material fitted best by a dielectric renders opaque, as it was measured.
+        transmittance = {name: [p["name"] for p in params if p.get("role") == "transmittance"]
+                         for name, params in raylab.brdf.models().items()}
         for ax, material in zip(axes.flat, names):
             best = min(materials[material].values(), key=lambda r: r[key])
-            scene.set_material("sphere", model=best["model"], **params_of(best["params"]))
+            params = params_of(best["params"])
+            for name in transmittance.get(best["model"], []):
+                params[name] = (0.0, 0.0, 0.0)
+            scene.set_material("sphere", model=best["model"], **params)
             image = raylab.Renderer(scene, width=size, height=size).render(spp=spp)[..., :3]
             ax.imshow(np.clip(image, 0, 1) ** (1 / 2.2))
             ax.set_title(f"{material}\n{best['model']}", fontsize=5)
-        figure.tight_layout(pad=0.2)
+        figure.tight_layout(pad=0.3, h_pad=0.6)
         path.parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(path, dpi=100)
+        figure.savefig(path, dpi=90)
         plt.close(figure)
+    # An adaptive palette of 256 colours: a third of the bytes, no visible change at this size.
+    from PIL import Image
+    Image.open(path).convert("RGB").quantize(256, dither=Image.Dither.FLOYDSTEINBERG).save(path, optimize=True)
 
 
 def write(records: list[dict], slices: dict[str, Path], metric: str, docs: Path):
@@ -274,7 +287,8 @@ def write(records: list[dict], slices: dict[str, Path], metric: str, docs: Path)
         "Each material's measured slice (f averaged over RGB, log scale; white: the grazing bins a fit leaves out) "
         "beside its three best fits, with log10(fit / measured) below each.\n\n"
         "![every material's best fit as a sphere](images/measured/best_fits.png)\n\n"
-        "Every material's best fit, a sphere under Blender's sunrise world (path traced, 64 spp).",
+        "Every material's best fit, a sphere under Blender's sunrise world (path traced, 128 spp; a dielectric's "
+        "transmittance set to 0, since a slice measures reflection only).",
     ])
     text = page.read_text() if page.exists() else ""
     if BEGIN in text and END in text:

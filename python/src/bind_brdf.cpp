@@ -141,6 +141,7 @@ py::dict models() {
       p["default"] = param.defaultValue;
       p["log_scale"] = param.logScale;
       p["meaning"] = std::string(param.meaning);
+      p["role"] = std::string(param.role);
       params.append(p);
     }
     all[py::str(std::string(model.name))] = params;
@@ -155,7 +156,8 @@ void bindBrdf(py::module_& parent) {
       "brdf", "The BRDF library over numpy arrays: on the device (backend='gpu', the shaders' own code) or the "
               "double-precision reference (backend='cpu'). Models and parameters are those of docs/brdfs.md; "
               "params is a dict {name: value} (RGB as (r, g, b)) or `raylab brdf eval`'s 'k=v;k=v'.");
-  m.def("models", &models, "Every model with its parameters: name, rgb, min, max, default, log_scale, meaning.");
+  m.def("models", &models, "Every model with its parameters: name, rgb, min, max, default, log_scale, meaning, role (what the parameter "
+        "means across models: diffuse, specular, slope_x, transmittance, ...; empty for none).");
   m.def(
       "eval",
       [](const std::string& model, const py::object& params, const FloatArray& wi, const FloatArray& wo,

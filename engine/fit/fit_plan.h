@@ -1,0 +1,52 @@
+// How `raylab brdf fit` sees a model (fit.h): its fitted parameters as optimisation variables (log space for
+// log-scaled ones, x and y tied for an isotropic target), and which of them enter f linearly, found by evaluating
+// the reference (docs/fitting.md, "How a fit finds its basin"). Internal to engine/fit.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "brdf_params/material_params.h"
+#include "fit/fit.h"
+#include "reference/brdf_reference.h"
+
+namespace raylab::fitting {
+
+// One optimisation variable: the parameter floats it sets (an RGB channel, or a slope_x tied with its slope_y),
+// in log space for log-scaled parameters.
+struct Variable {
+  std::vector<std::uint32_t> slots;
+  bool log = false;
+  double lo = 0.0, hi = 1.0;  // in the variable's space
+  double start = 0.0;         // the default
+  int linearGroup = -1;       // >= 0: a channel of a parameter that enters f linearly (LinearGroup)
+};
+
+// An RGB parameter whose channel c enters channel c of f linearly, f = h + a g, jointly with the model's other
+// linear groups (found by evaluating, not declared: see findLinearGroups). The search solves these in closed form.
+struct LinearGroup {
+  std::array<int, 3> variables{};  // the channels' variables
+};
+
+struct ModelPlan {
+  const ModelInfo* model = nullptr;
+  std::vector<Variable> variables;
+  std::vector<LinearGroup> linear;
+  // The linear groups in blocks that are jointly linear; f is linear in each block with the others held (a
+  // diffuse colour times 1 - a Fresnel colour: Ashikhmin-Shirley's Rd and Rs), so the search solves the blocks in
+  // turn.
+  std::vector<std::vector<int>> blocks;
+  std::vector<int> nonlinear;  // variables in no linear group
+  reference::Material base;
+};
+
+ModelPlan planOf(const ModelInfo& model, bool isotropic);
+// Sets the material's parameters from the variables' values x (clamped to their ranges).
+void applyVariables(const std::vector<Variable>& variables, const double* x, reference::Material& material);
+// The fitted material at variables x (every other parameter at its default).
+gpu::MaterialRecord recordOf(const ModelPlan& plan, const std::vector<double>& x);
+// The metric's residual of one pair and channel, before its weight (fit.h, FitMetric).
+double residual(FitMetric metric, double target, double model, double cosine);
+
+}  // namespace raylab::fitting

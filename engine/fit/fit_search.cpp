@@ -1,0 +1,228 @@
+#include "fit/fit_search.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab::fitting {
+
+namespace {
+
+// Two search points closer than this in every nonlinear variable (as a fraction of its range) are one basin.
+constexpr double kDistinctStarts = 0.02;
+
+// Solves one block of linear groups of `plan` at `x` (the other variables held) in each channel: minimise
+// sum w cos^2 (t - h - sum_k a_k g_k)^2 (times 1 / (1 + t cos)^2 for the log metric, its first-order weight)
+// within the parameters' ranges; writes the amounts into x and returns the metric's cost of the result.
+double solveBlock(const std::vector<const FitPair*>& pairs, const ModelPlan& plan, const std::vector<int>& block,
+                  FitMetric metric, std::vector<double>& x) {
+  const std::size_t groups = block.size();
+  const auto variable = [&](std::size_t k, int c) {
+    return std::size_t(plan.linear[std::size_t(block[k])].variables[std::size_t(c)]);
+  };
+  for (std::size_t k = 0; k < groups; ++k) {
+    for (int c = 0; c < 3; ++c) x[variable(k, c)] = 0.0;
+  }
+  reference::Material zero = plan.base;
+  applyVariables(plan.variables, x.data(), zero);
+  std::vector<glm::dvec3> h(pairs.size());
+  std::vector<std::vector<glm::dvec3>> g(groups, std::vector<glm::dvec3>(pairs.size()));
+  for (std::size_t i = 0; i < pairs.size(); ++i) h[i] = reference::eval(zero, pairs[i]->wi, pairs[i]->wo);
+  for (std::size_t k = 0; k < groups; ++k) {
+    reference::Material unit = zero;
+    for (int c = 0; c < 3; ++c) {
+      for (std::uint32_t slot : plan.variables[variable(k, c)].slots) unit.params[slot] = 1.0;
+    }
+    for (std::size_t i = 0; i < pairs.size(); ++i) g[k][i] = reference::eval(unit, pairs[i]->wi, pairs[i]->wo) - h[i];
+  }
+  for (int c = 0; c < 3; ++c) {
+    std::vector<double> A(groups * groups, 0.0), b(groups, 0.0), lo(groups), hi(groups);
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const FitPair& pair = *pairs[i];
+      double w = pair.weight * pair.wi.z * pair.wi.z;
+      if (metric == FitMetric::kLog) w /= (1.0 + pair.f[c] * pair.wi.z) * (1.0 + pair.f[c] * pair.wi.z);
+      if (!std::isfinite(h[i][c])) continue;
+      for (std::size_t k = 0; k < groups; ++k) {
+        const double gk = g[k][i][c];
+        if (!std::isfinite(gk)) continue;
+        b[k] += w * gk * (pair.f[c] - h[i][c]);
+        for (std::size_t l = 0; l < groups; ++l) {
+          if (std::isfinite(g[l][i][c])) A[k * groups + l] += w * gk * g[l][i][c];
+        }
+      }
+    }
+    for (std::size_t k = 0; k < groups; ++k) {
+      lo[k] = plan.variables[variable(k, c)].lo;
+      hi[k] = plan.variables[variable(k, c)].hi;
+    }
+    const std::vector<double> a = boxLeastSquares(A, b, lo, hi);
+    for (std::size_t k = 0; k < groups; ++k) x[variable(k, c)] = a[k];
+  }
+  double cost = 0.0;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    glm::dvec3 f = h[i];
+    for (std::size_t k = 0; k < groups; ++k) {
+      for (int c = 0; c < 3; ++c) f[c] += x[variable(k, c)] * g[k][i][c];
+    }
+    for (int c = 0; c < 3; ++c) {
+      const double r = residual(metric, pairs[i]->f[c], f[c], pairs[i]->wi.z);
+      cost += pairs[i]->weight * r * r;
+    }
+  }
+  return std::isfinite(cost) ? cost : INFINITY;
+}
+
+}  // namespace
+
+// min over lo <= a <= hi of a'Aa - 2 b'a (A positive semi-definite, n <= 4): the optimum of a convex quadratic
+// over a box lies on the face where its free variables solve their equations, so every face is tried.
+std::vector<double> boxLeastSquares(const std::vector<double>& A, const std::vector<double>& b,
+                                    const std::vector<double>& lo, const std::vector<double>& hi) {
+  const std::size_t n = b.size();
+  std::vector<double> best(n), a(n);
+  double bestCost = INFINITY;
+  std::size_t faces = 1;
+  for (std::size_t i = 0; i < n; ++i) faces *= 3;
+  for (std::size_t face = 0; face < faces; ++face) {
+    std::vector<int> state(n);  // 0 free, 1 at lo, 2 at hi
+    std::size_t code = face;
+    std::vector<std::size_t> free;
+    for (std::size_t i = 0; i < n; ++i) {
+      state[i] = int(code % 3);
+      code /= 3;
+      if (state[i] == 0) free.push_back(i);
+      a[i] = state[i] == 1 ? lo[i] : hi[i];
+    }
+    if (!free.empty()) {
+      // The free variables' normal equations with the bound ones moved to the right: Gaussian elimination with
+      // partial pivoting on at most 4 unknowns; a singular system (a direction f does not depend on) skips the face.
+      const std::size_t m = free.size();
+      std::vector<double> M(m * (m + 1));
+      for (std::size_t r = 0; r < m; ++r) {
+        double rhs = b[free[r]];
+        for (std::size_t j = 0; j < n; ++j) {
+          if (state[j] != 0) rhs -= A[free[r] * n + j] * a[j];
+        }
+        for (std::size_t c = 0; c < m; ++c) M[r * (m + 1) + c] = A[free[r] * n + free[c]];
+        M[r * (m + 1) + m] = rhs;
+      }
+      bool singular = false;
+      for (std::size_t c = 0; c < m && !singular; ++c) {
+        std::size_t pivot = c;
+        for (std::size_t r = c + 1; r < m; ++r) {
+          if (std::abs(M[r * (m + 1) + c]) > std::abs(M[pivot * (m + 1) + c])) pivot = r;
+        }
+        const double scale = std::abs(A[free[c] * n + free[c]]) + 1e-300;
+        if (!(std::abs(M[pivot * (m + 1) + c]) > 1e-12 * scale)) {
+          singular = true;
+          break;
+        }
+        for (std::size_t k = 0; k <= m; ++k) std::swap(M[c * (m + 1) + k], M[pivot * (m + 1) + k]);
+        for (std::size_t r = 0; r < m; ++r) {
+          if (r == c) continue;
+          const double factor = M[r * (m + 1) + c] / M[c * (m + 1) + c];
+          for (std::size_t k = c; k <= m; ++k) M[r * (m + 1) + k] -= factor * M[c * (m + 1) + k];
+        }
+      }
+      if (singular) continue;
+      bool inside = true;
+      for (std::size_t r = 0; r < m; ++r) {
+        const double value = M[r * (m + 1) + m] / M[r * (m + 1) + r];
+        inside &= value >= lo[free[r]] && value <= hi[free[r]];
+        a[free[r]] = value;
+      }
+      if (!inside) continue;
+    }
+    double cost = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      cost -= 2.0 * b[i] * a[i];
+      for (std::size_t j = 0; j < n; ++j) cost += a[i] * A[i * n + j] * a[j];
+    }
+    if (cost < bestCost) {
+      bestCost = cost;
+      best = a;
+    }
+  }
+  return best;
+}
+
+// The pairs the search and the first LM solves use: every k-th of the target's, about kSearchPairs.
+FitTarget coarseTarget(const FitTarget& target) {
+  FitTarget coarse;
+  coarse.name = target.name;
+  coarse.isotropic = target.isotropic;
+  const std::size_t stride = std::max<std::size_t>(1, target.pairs.size() / kSearchPairs);
+  for (std::size_t i = 0; i < target.pairs.size(); i += stride) coarse.pairs.push_back(target.pairs[i]);
+  return coarse;
+}
+
+// The search of FitOptions: `points` points of the nonlinear variables (the defaults first, then a Latin hypercube
+// of the box), each with its linear blocks solved by least squares in turn, scored by the metric on the coarse
+// pairs; the best `starts` distinct points, best first.
+std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric, int points,
+                                 int starts, std::mt19937_64& random) {
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<const FitPair*> pairs;
+  for (const FitPair& pair : coarse.pairs) pairs.push_back(&pair);
+  const std::size_t n = plan.variables.size();
+
+  // The Latin hypercube: each variable's range cut into points - 1 strata, one point in each, the strata shuffled
+  // per variable (a linear variable's value starts the alternation between blocks).
+  std::vector<std::vector<double>> xs;
+  std::vector<double> defaults(n);
+  for (std::size_t i = 0; i < n; ++i) defaults[i] = plan.variables[i].start;
+  xs.push_back(defaults);
+  std::vector<std::vector<int>> strata(n);
+  for (auto& s : strata) {
+    for (int p = 0; p + 1 < points; ++p) s.push_back(p);
+    std::shuffle(s.begin(), s.end(), random);
+  }
+  for (int p = 0; p + 1 < points; ++p) {
+    std::vector<double> x = defaults;
+    for (std::size_t j = 0; j < n; ++j) {
+      const Variable& v = plan.variables[j];
+      x[j] = v.lo + (v.hi - v.lo) * (strata[j][std::size_t(p)] + uniform(random)) / (points - 1);
+    }
+    xs.push_back(std::move(x));
+  }
+
+  std::vector<Scored> scored;
+  const int cycles = plan.blocks.size() > 1 ? 3 : 1;
+  for (std::vector<double>& x : xs) {
+    double cost = INFINITY;
+    if (plan.blocks.empty()) {
+      reference::Material material = plan.base;
+      applyVariables(plan.variables, x.data(), material);
+      cost = 0.0;
+      for (const FitPair* pair : pairs) {
+        const glm::dvec3 f = reference::eval(material, pair->wi, pair->wo);
+        for (int c = 0; c < 3; ++c) {
+          const double r = residual(metric, pair->f[c], f[c], pair->wi.z);
+          cost += pair->weight * r * r;
+        }
+      }
+      if (!std::isfinite(cost)) cost = INFINITY;
+    }
+    for (int cycle = 0; cycle < cycles; ++cycle) {
+      for (const std::vector<int>& block : plan.blocks) cost = solveBlock(pairs, plan, block, metric, x);
+    }
+    scored.push_back({x, cost});
+  }
+  std::stable_sort(scored.begin(), scored.end(), [](const Scored& a, const Scored& b) { return a.cost < b.cost; });
+  std::vector<Scored> chosen;
+  for (const Scored& candidate : scored) {
+    if (int(chosen.size()) == starts) break;
+    bool distinct = true;
+    for (const Scored& c : chosen) {
+      bool near = true;
+      for (int j : plan.nonlinear) {
+        const Variable& v = plan.variables[std::size_t(j)];
+        near &= std::abs(candidate.x[std::size_t(j)] - c.x[std::size_t(j)]) <= kDistinctStarts * (v.hi - v.lo);
+      }
+      distinct &= !near;
+    }
+    if (distinct) chosen.push_back(candidate);
+  }
+  return chosen;
+}
+
+}  // namespace raylab::fitting

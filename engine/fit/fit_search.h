@@ -1,0 +1,36 @@
+// The search of `raylab brdf fit` (fit.h, FitOptions): points of a model's nonlinear parameters, each with the
+// parameters that enter f linearly solved by bounded least squares, scored on a coarse subset of the target's pairs;
+// the best distinct points start Levenberg-Marquardt (docs/fitting.md, "How a fit finds its basin"). Internal to
+// engine/fit.
+#pragma once
+
+#include <random>
+#include <vector>
+
+#include "fit/fit_plan.h"
+
+namespace raylab::fitting {
+
+// The search scores its points on about this many pairs (every k-th): enough to tell basins apart, a quarter of a
+// slice's cost.
+inline constexpr std::size_t kSearchPairs = 2048;
+
+struct Scored {
+  std::vector<double> x;
+  double cost = INFINITY;
+};
+
+// The pairs the search and the first LM solves use: every k-th of the target's, about kSearchPairs.
+FitTarget coarseTarget(const FitTarget& target);
+
+// `points` points of the nonlinear variables (the defaults first, then a Latin hypercube of the box), each with
+// its linear blocks solved by least squares in turn, scored by the metric on `coarse`; the best `starts` distinct
+// points, best first.
+std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric, int points,
+                                 int starts, std::mt19937_64& random);
+
+// min over lo <= a <= hi of a'Aa - 2 b'a for A (n x n, row-major) positive semi-definite and small n.
+std::vector<double> boxLeastSquares(const std::vector<double>& A, const std::vector<double>& b,
+                                    const std::vector<double>& lo, const std::vector<double>& hi);
+
+}  // namespace raylab::fitting
