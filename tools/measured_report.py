@@ -252,11 +252,13 @@ def contact_sheet(raylab, records: list[dict], key: str, path: Path, size: int =
             ax.set_title(f"{material}\n{best['model']}", fontsize=5)
         figure.tight_layout(pad=0.3, h_pad=0.6)
         path.parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(path, dpi=90)
+        # JPEG: a hundred path-traced spheres are a photograph; a 256-colour PNG bands their gradients, a full one
+        # is 2 MB.
+        staged = work / "sheet.png"
+        figure.savefig(staged, dpi=90)
         plt.close(figure)
-    # An adaptive palette of 256 colours: a third of the bytes, no visible change at this size.
-    from PIL import Image
-    Image.open(path).convert("RGB").quantize(256, dither=Image.Dither.FLOYDSTEINBERG).save(path, optimize=True)
+        from PIL import Image
+        Image.open(staged).convert("RGB").save(path, quality=88, optimize=True)
 
 
 def write(records: list[dict], slices: dict[str, Path], metric: str, docs: Path):
@@ -267,7 +269,7 @@ def write(records: list[dict], slices: dict[str, Path], metric: str, docs: Path)
     published = published_errors(slices)
     images = docs / "images" / "measured"
     slice_figure(raylab, records, slices, key, images / "slices.png")
-    contact_sheet(raylab, records, key, images / "best_fits.png")
+    contact_sheet(raylab, records, key, images / "best_fits.jpg")
     ranking = ", ".join(f"`{m}` ({r:.1f})" for m, r in mean_ranks.items())
     body = "\n\n".join([
         f"Fits minimise the {metric} metric; {len({r['material'] for r in records})} materials, "
@@ -286,7 +288,7 @@ def write(records: list[dict], slices: dict[str, Path], metric: str, docs: Path)
         "### Figures\n\n![measured slices beside their three best fits](images/measured/slices.png)\n\n"
         "Each material's measured slice (f averaged over RGB, log scale; white: the grazing bins a fit leaves out) "
         "beside its three best fits, with log10(fit / measured) below each.\n\n"
-        "![every material's best fit as a sphere](images/measured/best_fits.png)\n\n"
+        "![every material's best fit as a sphere](images/measured/best_fits.jpg)\n\n"
         "Every material's best fit, a sphere under Blender's sunrise world (path traced, 128 spp; a dielectric's "
         "transmittance set to 0, since a slice measures reflection only).",
     ])
