@@ -245,8 +245,9 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
   }
 
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  // Each thread holds one solve's Jacobian (3 residuals per pair, a column per variable, in doubles) and its
-  // residual blocks: never more threads than cores, and no more than a quarter of this budget's worth.
+  // Each thread holds one solve's Jacobian (3 residuals per pair, a column per variable, in doubles) and as much
+  // again in residual blocks: never more threads than cores, nor more than this budget holds (a million-pair CSV
+  // with --threads 256 used to take 6 GiB).
   constexpr double kMemoryBudgetBytes = 4.0 * 1024 * 1024 * 1024;
   std::size_t widest = 1;
   for (const ModelPlan& plan : plans) widest = std::max(widest, plan.variables.size() + 1);
