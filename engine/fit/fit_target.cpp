@@ -113,7 +113,10 @@ FitTarget sliceFitTarget(const std::string& path, SliceBin bin) {
 }
 
 FitTarget csvFitTarget(const std::string& path) {
-  const std::string text = readInputFile(path, kMaxSampleFileBytes);
+  return parseFitCsv(readInputFile(path, kMaxSampleFileBytes), path);
+}
+
+FitTarget parseFitCsv(std::string_view text, const std::string& path) {
   constexpr std::string_view kHeader = "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b";
   FitTarget target;
   target.name = path;
@@ -123,7 +126,7 @@ FitTarget csvFitTarget(const std::string& path) {
   int fields = 9;  // 10 with the weight column
   while (start < text.size()) {
     const std::size_t end = std::min(text.find('\n', start), text.size());
-    std::string_view row = trimmed(std::string_view(text).substr(start, end - start));
+    std::string_view row = trimmed(text.substr(start, end - start));
     start = end + 1;
     ++line;
     if (line == 1 && row.starts_with("\xEF\xBB\xBF")) row.remove_prefix(3);  // a UTF-8 byte order mark

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -45,6 +46,8 @@ FitTarget sliceFitTarget(const std::string& path, SliceBin bin = SliceBin::kCent
 // A CSV of measured samples: header `wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b[,weight]`, one sample per line;
 // equal weights without the weight column. Throws Error (exit code 2) naming the file and line.
 FitTarget csvFitTarget(const std::string& path);
+// The same from the file's text (`path` names it in errors).
+FitTarget parseFitCsv(std::string_view text, const std::string& path);
 // A material of the library, evaluated by the reference at merlGridPairs turned by random azimuths.
 FitTarget materialFitTarget(const gpu::MaterialRecord& record, const std::string& name);
 // TEXT as the command line gives it: a .binary file (MERL), a .slice file, a .csv file, or MODEL[:k=v,...]. A file
