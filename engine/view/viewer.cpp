@@ -147,7 +147,10 @@ void run(Viewer& v) {
     // wake up now and then while a kernel builds, to take it as soon as it is ready.
     const bool paused = !covers(v.renderer.kernel, v.needed);
     const bool traceWork = !paused && (v.pending.accumulation || !converged(v.scheduler));
-    if (!v.automation && !traceWork && !v.window.input->activity && v.uiFramesLeft <= 0) {
+    // A script's events are counted in frames: with --exit-at-limit and an event still ahead, the frames go on
+    // (with nothing to trace they only display), or an image that converged first would wait for that frame forever.
+    const bool scriptAhead = v.options.exitWhenConverged && v.frameIndex <= v.lastScriptFrame;
+    if (!v.automation && !traceWork && !scriptAhead && !v.window.input->activity && v.uiFramesLeft <= 0) {
       if (anyInFlight(v)) continue;  // the fence wait above paces the loop
       glfwWaitEventsTimeout(v.build ? kBuildPollSeconds : kIdleWaitSeconds);
       continue;

@@ -82,6 +82,14 @@ TEST(WindowTest, InteractiveRefinementToTheLimitEqualsRenderWithAsManySamples) {
       renderReference({"--width", "640", "--height", "360", "--seed", "3", "--spp", "8"}, dir + "/interactive_render.exr");
   expectSameImage(view, reference, "interactive viewer at its spp limit against raylab render");
 
+  // A script event beyond the frame where the image converges still happens, and the viewer then exits (it used to
+  // wait for that frame forever, drawing none once the image had its samples).
+  const std::string late = writeScript("late.txt", "at 300 set exposure 1\n");
+  const CommandResult lateRun = runView({kMinimalScene, "--width", "64", "--height", "40", "--spp-limit", "2",
+                                         "--exit-at-limit", "--no-panel", "--script", late});
+  expectCleanRun(lateRun);
+  EXPECT_NE(lateRun.output.find("2 spp"), std::string::npos) << lateRun.output;
+
   const CommandResult refused = runView({"--spp-limit", "8", "--exit-at-limit", "--frames", "3"});
   EXPECT_EQ(refused.exitCode, 2) << refused.output;
   EXPECT_NE(refused.output.find("--exit-at-limit needs"), std::string::npos) << refused.output;
