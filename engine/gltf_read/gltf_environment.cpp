@@ -89,7 +89,12 @@ Environment readEnvironment(Document& document, const GltfOptions& options) {
     needsImage("--env-strength");
   }
   if (options.environmentRotation) {
+    // The command line's range, for every entry point (Python's Scene.load took NaN and 1e30: a black sky).
     entry.rotation = *options.environmentRotation;
+    if (!(std::abs(entry.rotation) <= kMaxEnvironmentRotationDegrees)) {
+      throw Error("--env-rotation (Python: env_rotation_deg): the rotation must be a number of degrees within "
+                  "[-360, 360]", kExitUsage);
+    }
     needsImage("--env-rotation");
   }
   if (entry.path.empty()) return {};

@@ -169,6 +169,12 @@ def test_python_checks_what_the_command_line_checks(work, minimal):
         scene.set_camera(fov_deg=1e-30)
     with pytest.raises(ValueError, match="rotation_deg"):
         scene.set_environment(rotation_deg=1e30)
+    # Scene.load's env_rotation_deg took NaN, inf and 1e30 (a black sky, 996 of 1,024 samples dropped).
+    sky = _exr(work / "sky.exr", {"RGB": np.full((8, 16, 3), 2.0, np.float32)})
+    for rotation in (float("nan"), float("inf"), 1e30, -361.0):
+        with pytest.raises(ValueError, match="env_rotation_deg"):
+            raylab.Scene.load(minimal, env=sky, env_rotation_deg=rotation)
+    assert raylab.Scene.load(minimal, env=sky, env_rotation_deg=-360.0).environment["rotation_deg"] == pytest.approx(-360.0)
     with pytest.raises(ValueError, match="exposure"):
         raylab.write_png(work / "x.png", np.zeros((2, 2, 3), np.float32), exposure=float("nan"))
     with pytest.raises(ValueError, match="must end in .png"):
