@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
+#include "scene/radiance_limits.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/files.h"
@@ -57,6 +59,20 @@ MerlTable decodeMerl(const std::string& bytes, const std::string& where) {
     throw Error(where + ": " + std::to_string(nonFinite) + (nonFinite == 1 ? " sample is" : " samples are") +
                 " NaN or infinite, the first at channel " +
                 std::to_string(first / kMerlSamples) + " index " + std::to_string(first % kMerlSamples));
+  }
+  // f is bounded as radiance is (scene/radiance_limits.h): a value a float cannot hold, or one that f times a
+  // light would overflow, is refused rather than dropped on the device (1e42 used to become inf, and its samples
+  // vanished from renders with exit 0).
+  std::size_t huge = 0;
+  for (std::size_t i = 0; i < table.stored.size(); ++i) {
+    if (table.stored[i] * kMerlScale[i / kMerlSamples] > double(kMaxRadiance) && huge++ == 0) first = i;
+  }
+  if (huge > 0) {
+    char value[64];
+    std::snprintf(value, sizeof value, "%.9g", table.stored[first] * kMerlScale[first / kMerlSamples]);
+    throw Error(where + ": " + std::to_string(huge) + (huge == 1 ? " sample has" : " samples have") +
+                " f above 1e+20 /sr (the bound raylab keeps radiance within), the first at channel " +
+                std::to_string(first / kMerlSamples) + " index " + std::to_string(first % kMerlSamples) + ": " + value);
   }
   for (std::size_t i = 0; i < kMerlSamples; ++i) {
     const bool missing = table.stored[i] < 0.0 || table.stored[i + kMerlSamples] < 0.0 ||

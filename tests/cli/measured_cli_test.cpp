@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -122,6 +123,14 @@ TEST_F(MeasuredCliTest, BadFilesAreRefusedNamingThemAndNothingIsWritten) {
   const double minusOne = -1.0;
   for (std::size_t at = 12; at + 8 <= missing.size(); at += 8) std::memcpy(missing.data() + at, &minusOne, 8);
   writeBytes(dir / "missing.binary", missing);
+  // Finite as doubles, beyond what f may be (1e42 used to become inf on the device; 1e30 overflows a lit sample).
+  for (const double value : {1e300, 1e42, 1e30}) {
+    std::string huge = bytes;
+    std::memcpy(huge.data() + 12 + 8 * 2000, &value, 8);
+    char name[32];
+    std::snprintf(name, sizeof name, "huge%g.binary", value);
+    writeBytes(dir / name, huge);
+  }
   fs::create_directories(dir / "folder.binary");
   struct Case {
     std::string file;
@@ -132,6 +141,9 @@ TEST_F(MeasuredCliTest, BadFilesAreRefusedNamingThemAndNothingIsWritten) {
       {(dir / "dimensions.binary").string(), "dimensions 90 90 90"},
       {(dir / "nan.binary").string(), "NaN or infinite"},
       {(dir / "missing.binary").string(), "every sample is missing"},
+      {(dir / "huge1e+300.binary").string(), "f above 1e+20 /sr"},
+      {(dir / "huge1e+42.binary").string(), "index 2000: 6.66666667e+38"},
+      {(dir / "huge1e+30.binary").string(), "f above 1e+20 /sr"},
       {(dir / "folder.binary").string(), "is a directory"},
       {"/dev/zero", "not a regular file"},
       {(dir / "absent.binary").string(), "no such file"},
