@@ -282,15 +282,18 @@ void bindBrdf(py::module_& parent) {
   m.def(
       "fit",
       [](const py::object& targetObject, const std::optional<std::vector<std::string>>& models,
-         const std::string& metric, std::uint32_t starts, std::uint32_t search, std::uint32_t seed,
-         std::uint32_t threads, std::optional<bool> isotropic) {
+         const std::string& metric, std::int64_t starts, std::int64_t search, std::int64_t seed, std::int64_t threads,
+         std::optional<bool> isotropic) {
+        // Signed, and checked here: an unsigned argument turns starts=-1 into pybind11's list of overloads.
         const std::string target = pathArgument(targetObject, "raylab.brdf.fit: target");
-        if (starts < 1 || starts > 64) usage("raylab.brdf.fit: starts must be within 1..64");
-        if (search > 65536) usage("raylab.brdf.fit: search must be within 0..65536");
+        if (starts < 1 || starts > 64) usage("raylab.brdf.fit: starts must be within 1..64, not " + std::to_string(starts));
+        if (search < 0 || search > 65536) usage("raylab.brdf.fit: search must be within 0..65536, not " + std::to_string(search));
+        if (seed < 0 || seed > std::int64_t(UINT32_MAX)) usage("raylab.brdf.fit: seed must be within 0..4294967295");
+        if (threads < 0 || threads > 256) usage("raylab.brdf.fit: threads must be within 0..256 (0: one per core)");
         FitOptions options;
         options.starts = int(starts);
         options.searchPoints = int(search);
-        options.seed = seed;
+        options.seed = unsigned(seed);
         options.threads = int(threads);
         options.isotropic = isotropic;
         std::vector<FitResult> fits;

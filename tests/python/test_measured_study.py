@@ -116,3 +116,28 @@ def test_published_fits_that_raylab_expresses_give_raylabs_own_error():
                 assert ours == pytest.approx(theirs[key], rel=1e-5), (model, material, metric)
             checked += 1
     assert checked >= 6
+
+
+def test_fit_arguments_are_checked_as_the_command_line_checks_them(work):
+    """Runs without ../shared/measured: a weighted CSV target, and the arguments users get wrong."""
+    raylab = md.import_raylab()
+    csv = work / "samples.csv"
+    csv.write_text("wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b,weight\n"
+                   "0,0,1,0,0,1,0.1,0.1,0.1,1\n0.6,0,0.8,-0.6,0,0.8,0.1,0.1,0.1,2\n0,0,1,0.6,0,0.8,9,9,9,0\n")
+    for target in (csv, str(csv), bytes(csv)):
+        fits = raylab.brdf.fit(target, models=["lambert"], starts=np.int64(1))
+        assert fits[0]["params"]["rho_d"] == pytest.approx([0.1 * math.pi] * 3, rel=1e-6), "the 0-weight sample counts"
+        assert fits[0]["warnings"] == [] and fits[0]["isotropic"] is False
+    for arguments, says in (({"starts": -1}, "starts must be within 1..64, not -1"), ({"search": -5}, "search"),
+                            ({"threads": 1000}, "threads"), ({"seed": -1}, "seed")):
+        with pytest.raises(ValueError, match=says):
+            raylab.brdf.fit(csv, models=["lambert"], **arguments)
+    with pytest.raises(ValueError, match="NUL"):
+        raylab.brdf.fit(str(csv) + "\0.slice")
+    with pytest.raises(ValueError, match="is not a model that can be fitted"):
+        raylab.brdf.fit(csv, models=["glass"])
+    with pytest.raises(ValueError, match="must end in .binary"):
+        raylab.brdf.tabulate("lambert", None, work / "lambert.merl")
+    assert not (work / "lambert.merl").exists()
+    error, relative = raylab.brdf.fit_error(csv, "lambert", {"rho_d": 0.1 * math.pi})
+    assert error < 1e-7 and relative < 1e-6  # the record holds floats
