@@ -12,6 +12,7 @@
 #include "measured/measured_library.h"
 #include "shared/brdf_lobes.h"
 #include "util/error.h"
+#include "util/number_text.h"
 #include "util/files.h"
 
 namespace raylab {
@@ -33,11 +34,7 @@ void writeSlot(gpu::MaterialRecord& r, const ParamInfo& p, glm::vec3 value) {
   }
 }
 
-std::string formatRange(const ParamInfo& p) {
-  char text[64];
-  std::snprintf(text, sizeof text, "[%g, %g]", p.min, p.max);
-  return text;
-}
+std::string formatRange(const ParamInfo& p) { return "[" + numberText(p.min) + ", " + numberText(p.max) + "]"; }
 
 }  // namespace
 
@@ -145,9 +142,8 @@ void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 valu
   const int channels = param->rgb ? 3 : 1;
   for (int c = 0; c < channels; ++c) {
     if (!std::isfinite(value[c]) || value[c] < param->min || value[c] > param->max) {
-      char shown[32];
-      std::snprintf(shown, sizeof shown, "%g", value[c]);
-      throw Error(where + ": " + std::string(name) + " = " + shown + " is outside " + formatRange(*param));
+      throw Error(where + ": " + std::string(name) + " = " + numberText(value[c]) + " is outside " +
+                  formatRange(*param));
     }
   }
   if (param == &kDelta) record.delta = value.x;

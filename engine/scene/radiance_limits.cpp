@@ -2,19 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 
 #include "scene/environment.h"
 #include "util/error.h"
+#include "util/number_text.h"
 
 namespace raylab {
 
 namespace {
 
+// Values that are floats (or products of floats) print as the float they are, so a limit reads "1e+20".
 std::string shown(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
+  return std::abs(value) <= double(std::numeric_limits<float>::max()) ? numberText(float(value)) : numberText(value);
 }
 
 void checkRadiance(glm::vec3 value, const std::string& where, const char* what) {  // light intensity and the like
