@@ -14,11 +14,23 @@ void ProgressLine::update(std::uint64_t done, std::uint64_t raysSoFar) {
   const double interval = interactive_ ? 0.1 : 5.0;
   if (done < total_ && lastPrint_ >= 0.0 && elapsed - lastPrint_ < interval) return;
   lastPrint_ = elapsed;
-  const double raysPerSecond = elapsed > 0.0 ? static_cast<double>(raysSoFar) / elapsed : 0.0;
+  const double steady = elapsed - warmupSeconds_;
+  const double raysPerSecond = steady > 0.0 ? static_cast<double>(raysSoFar - warmupRays_) / steady : 0.0;
   std::fprintf(stream_, "%s%s %llu/%llu spp  %s  %s%s", interactive_ ? "\r" : "", label_.c_str(),
                static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_),
                formatSeconds(elapsed).c_str(), formatCount(raysPerSecond, "rays/s").c_str(),
                interactive_ ? "\x1b[K" : "\n");
+  std::fflush(stream_);
+  printedAny_ = true;
+}
+
+void ProgressLine::warmedUp(std::uint64_t done, std::uint64_t raysSoFar) {
+  warmupSeconds_ = clock_.seconds();
+  warmupRays_ = raysSoFar;
+  lastPrint_ = warmupSeconds_;
+  std::fprintf(stream_, "%s%s %llu/%llu spp  %s  (first sample: kernel compilation included)%s", interactive_ ? "\r" : "",
+               label_.c_str(), static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_),
+               formatSeconds(warmupSeconds_).c_str(), interactive_ ? "\x1b[K" : "\n");
   std::fflush(stream_);
   printedAny_ = true;
 }

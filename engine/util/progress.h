@@ -14,6 +14,9 @@ class ProgressLine {
  public:
   ProgressLine(std::string label, std::uint64_t total, std::FILE* stream = stderr);
   void update(std::uint64_t done, std::uint64_t raysSoFar);
+  // Work done so far was a warm-up (the first sample, which waits for the driver's kernel compilation): it is
+  // printed as such now, and later lines give the rate of what follows it alone.
+  void warmedUp(std::uint64_t done, std::uint64_t raysSoFar);
   void finish();
 
  private:
@@ -24,6 +27,8 @@ class ProgressLine {
   Stopwatch clock_;
   double lastPrint_ = -1.0;
   bool printedAny_ = false;
+  std::uint64_t warmupRays_ = 0;
+  double warmupSeconds_ = 0.0;
 };
 
 // Counts for humans with an SI prefix glued to the unit: "12.3 Mrays/s", "456 krays", "12 rays".

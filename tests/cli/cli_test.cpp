@@ -190,6 +190,13 @@ TEST(CliTest, RenderWritesExrAndPngAndReportsTimings) {
   for (const char* line : {"3/3 spp", "rays/s", "acceleration structures:", "first sample:", "per sample:"}) {
     EXPECT_NE(result.output.find(line), std::string::npos) << "missing '" << line << "' in:\n" << result.output;
   }
+  // The kernel's compilation is announced before the first sample waits for it, and the first progress line says
+  // what it includes instead of a rate over the compilation (32-49 s of silence, then "1/64 spp 47.28 s 5.0 krays/s").
+  const std::size_t compiling = result.output.find("raylab render: compiling the render kernel");
+  EXPECT_NE(compiling, std::string::npos) << result.output;
+  EXPECT_LT(compiling, result.output.find("1/3 spp")) << result.output;
+  EXPECT_NE(result.output.find("1/3 spp"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("(first sample: kernel compilation included)"), std::string::npos) << result.output;
   const Image image = readExr(exr);
   EXPECT_EQ(image.width, 48u);
   EXPECT_EQ(image.height, 32u);

@@ -187,10 +187,14 @@ void render(RenderOptions o) {
   try {
     const Stopwatch firstSampleClock;
     renderer = createRenderer(gpu.device, gpuScene, scene, o.settings);
+    // The driver compiles the kernel at its first dispatch: tens of seconds on a CPU device for a textured or
+    // path-traced scene, which must not pass in silence (nor count in the first rate).
+    std::fprintf(stderr, "raylab render: compiling the render kernel (%s); the first sample waits for it\n",
+                 describe(renderer.kernel).c_str());
     ProgressLine progress("raylab render", o.spp);
     renderSamples(gpu.device, renderer, 1);  // includes the kernel's compilation by the driver
     const double firstSampleSeconds = firstSampleClock.seconds();
-    progress.update(renderer.samplesDone, renderer.rays.total());
+    progress.warmedUp(renderer.samplesDone, renderer.rays.total());
 
     // Later samples go in submissions of about a quarter second: progress stays live, overhead stays low.
     const Stopwatch steadyClock;
