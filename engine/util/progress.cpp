@@ -6,8 +6,9 @@
 
 namespace raylab {
 
-ProgressLine::ProgressLine(std::string label, std::uint64_t total, std::FILE* stream)
-    : label_(std::move(label)), total_(total), stream_(stream), interactive_(isatty(fileno(stream)) != 0) {}
+ProgressLine::ProgressLine(std::string label, std::uint64_t total, std::FILE* stream, std::string unit)
+    : label_(std::move(label)), total_(total), unit_(std::move(unit)), stream_(stream),
+      interactive_(isatty(fileno(stream)) != 0) {}
 
 void ProgressLine::update(std::uint64_t done, std::uint64_t raysSoFar) {
   const double elapsed = clock_.seconds();
@@ -16,8 +17,8 @@ void ProgressLine::update(std::uint64_t done, std::uint64_t raysSoFar) {
   lastPrint_ = elapsed;
   const double steady = elapsed - warmupSeconds_;
   const double raysPerSecond = steady > 0.0 ? static_cast<double>(raysSoFar - warmupRays_) / steady : 0.0;
-  std::fprintf(stream_, "%s%s %llu/%llu spp  %s  %s%s", interactive_ ? "\r" : "", label_.c_str(),
-               static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_),
+  std::fprintf(stream_, "%s%s %llu/%llu %s  %s  %s%s", interactive_ ? "\r" : "", label_.c_str(),
+               static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_), unit_.c_str(),
                formatSeconds(elapsed).c_str(), formatCount(raysPerSecond, "rays/s").c_str(),
                interactive_ ? "\x1b[K" : "\n");
   std::fflush(stream_);
@@ -28,9 +29,10 @@ void ProgressLine::warmedUp(std::uint64_t done, std::uint64_t raysSoFar) {
   warmupSeconds_ = clock_.seconds();
   warmupRays_ = raysSoFar;
   lastPrint_ = warmupSeconds_;
-  std::fprintf(stream_, "%s%s %llu/%llu spp  %s  (first sample: kernel compilation included)%s", interactive_ ? "\r" : "",
-               label_.c_str(), static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_),
-               formatSeconds(warmupSeconds_).c_str(), interactive_ ? "\x1b[K" : "\n");
+  std::fprintf(stream_, "%s%s %llu/%llu %s  %s  (first sample: kernel compilation included)%s",
+               interactive_ ? "\r" : "", label_.c_str(), static_cast<unsigned long long>(done),
+               static_cast<unsigned long long>(total_), unit_.c_str(), formatSeconds(warmupSeconds_).c_str(),
+               interactive_ ? "\x1b[K" : "\n");
   std::fflush(stream_);
   printedAny_ = true;
 }

@@ -12,7 +12,8 @@ namespace raylab {
 
 class ProgressLine {
  public:
-  ProgressLine(std::string label, std::uint64_t total, std::FILE* stream = stderr);
+  // `unit` names what is counted: samples per pixel ("spp"), or a sweep's samples over all its cells.
+  ProgressLine(std::string label, std::uint64_t total, std::FILE* stream = stderr, std::string unit = "spp");
   void update(std::uint64_t done, std::uint64_t raysSoFar);
   // Work done so far was a warm-up (the first sample, which waits for the driver's kernel compilation): it is
   // printed as such now, and later lines give the rate of what follows it alone.
@@ -22,6 +23,7 @@ class ProgressLine {
  private:
   std::string label_;
   std::uint64_t total_;
+  std::string unit_;
   std::FILE* stream_;
   bool interactive_;
   Stopwatch clock_;

@@ -76,7 +76,9 @@ TEST(SweepCliTest, RhoDSweepWritesALabelledSheetWhoseCellsGetBrighter) {
                  "--cell", "32", "--spp", "2", "--out", png},
                 {}, scratchDir());  // nested/ is created below the working directory
   ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_NE(result.output.find("6/6 spp"), std::string::npos) << "no progress line in:\n" << result.output;
+  // The sheet's samples over all its cells, said as such ("6/6 spp" read as 6 samples per pixel).
+  EXPECT_NE(result.output.find("6/6 samples (2 spp x 3 cells)"), std::string::npos) << "no progress line in:\n"
+                                                                                      << result.output;
   EXPECT_NE(result.output.find("lambert: rho_d from 0.1 to 0.9"), std::string::npos) << result.output;
 
   SweepSpec spec;

@@ -26,8 +26,10 @@ void sweep(const SweepOptions& options) {
   {
     SweepCellRenderer renderer(study);
     const std::uint32_t count = std::uint32_t(study.sweep.values.size());
-    // One line for the whole sheet: its samples count those of every cell.
-    ProgressLine progress("raylab sweep (all " + std::to_string(count) + " cells)", std::uint64_t(count) * o.spp);
+    // One line for the whole sheet: its samples count those of every cell ("64/64 spp" for 4 cells of 16 spp
+    // read as 64 samples per pixel).
+    ProgressLine progress("raylab sweep", std::uint64_t(count) * o.spp, stderr,
+                          "samples (" + std::to_string(o.spp) + " spp x " + std::to_string(count) + " cells)");
     const Stopwatch clock;
     for (std::uint32_t i = 0; i < count; ++i) {
       cells.push_back(renderSweepCell(renderer, study, i, [&](std::uint32_t samplesDone) {
