@@ -101,7 +101,7 @@ def run_study(slices: dict[str, Path], models: list[str], metric: str, out: Path
                 jobs.append((material, model, description))
     if jobs:
         with connect(workers, scheduler) as client:
-            progress = Progress("measured study", len(slices) * len(models), 1, len(records))
+            progress = Progress("measured study", len(slices) * len(models), 0, len(records))
             progress.show()
             futures = {client.submit(fit_job, str(slices[material]), model, metric, FIT_OPTIONS, pure=False,
                                      key=f"fit-{material}-{model}-{metric}-{time.time_ns()}"): (material, model, d)

@@ -42,9 +42,11 @@ class Progress:
         # The rate of this run's jobs (jobs finished by an earlier run cost nothing now).
         eta = f"ETA {_duration(elapsed / rendered * remaining)}" if rendered and remaining else ""
         filled = BAR_WIDTH * self.done // max(1, self.jobs)
+        # Jobs that are not renders (samples_per_job 0: a fit) have no samples to count.
+        samples = (f"{self.done * self.samples_per_job}/{self.jobs * self.samples_per_job} spp  "
+                   if self.samples_per_job else "")
         line = (f"{self.label} [{'#' * filled}{'-' * (BAR_WIDTH - filled)}] {self.done}/{self.jobs} jobs  "
-                f"{self.done * self.samples_per_job}/{self.jobs * self.samples_per_job} spp  "
-                f"{_duration(elapsed)}  {eta}").rstrip()
+                f"{samples}{_duration(elapsed)}  {eta}").rstrip()
         if self.in_place:
             self.stream.write("\r\033[K" + line)
             if self.done == self.jobs:
