@@ -160,6 +160,12 @@ ModelPlan planOf(const ModelInfo& model, bool isotropic) {
   for (std::size_t i = 0; i < plan.variables.size(); ++i) {
     if (plan.variables[i].linearGroup < 0) plan.nonlinear.push_back(int(i));
   }
+  for (const std::string_view role : {"roughness", "slope", "slope_x", "exponent", "exponent_x", "mirror_exponent"}) {
+    const ParamInfo* param = findRole(model, role);
+    for (std::size_t i = 0; param != nullptr && plan.width < 0 && i < plan.variables.size(); ++i) {
+      if (plan.variables[i].slots.front() == param->slot) plan.width = int(i);
+    }
+  }
   return plan;
 }
 

@@ -209,18 +209,40 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
   }
   std::stable_sort(scored.begin(), scored.end(), [](const Scored& a, const Scored& b) { return a.cost < b.cost; });
   std::vector<Scored> chosen;
-  for (const Scored& candidate : scored) {
-    if (int(chosen.size()) == starts) break;
-    bool distinct = true;
+  const auto distinct = [&](const Scored& candidate) {
     for (const Scored& c : chosen) {
       bool near = true;
       for (int j : plan.nonlinear) {
         const Variable& v = plan.variables[std::size_t(j)];
         near &= std::abs(candidate.x[std::size_t(j)] - c.x[std::size_t(j)]) <= kDistinctStarts * (v.hi - v.lo);
       }
-      distinct &= !near;
+      if (near) return false;
     }
-    if (distinct) chosen.push_back(candidate);
+    return true;
+  };
+  // The best point, then the best in each stratum of the lobe's width not yet started from (a wide lobe that fits
+  // the floor can outscore every narrow one whose other parameters the search drew badly: a glossy phenolic's
+  // highlight), then the best distinct points left.
+  if (!scored.empty()) chosen.push_back(scored.front());
+  if (plan.width >= 0 && starts > 1) {
+    const Variable& v = plan.variables[std::size_t(plan.width)];
+    const auto stratum = [&](const Scored& s) {
+      return std::clamp(int((s.x[std::size_t(plan.width)] - v.lo) / (v.hi - v.lo) * starts), 0, starts - 1);
+    };
+    std::vector<bool> covered(std::size_t(starts), false);
+    if (!chosen.empty()) covered[std::size_t(stratum(chosen.front()))] = true;
+    for (const Scored& candidate : scored) {
+      if (int(chosen.size()) == starts) break;
+      const int k = stratum(candidate);
+      if (!covered[std::size_t(k)] && distinct(candidate)) {
+        covered[std::size_t(k)] = true;
+        chosen.push_back(candidate);
+      }
+    }
+  }
+  for (const Scored& candidate : scored) {
+    if (int(chosen.size()) == starts) break;
+    if (distinct(candidate)) chosen.push_back(candidate);
   }
   return chosen;
 }
