@@ -163,7 +163,9 @@ ModelPlan planOf(const ModelInfo& model, bool isotropic) {
   for (const std::string_view role : {"roughness", "slope", "slope_x", "exponent", "exponent_x", "mirror_exponent"}) {
     const ParamInfo* param = findRole(model, role);
     for (std::size_t i = 0; param != nullptr && plan.width < 0 && i < plan.variables.size(); ++i) {
-      if (plan.variables[i].slots.front() == param->slot) plan.width = int(i);
+      if (plan.variables[i].slots.front() != param->slot) continue;
+      plan.width = int(i);
+      plan.narrowIsLow = role.find("exponent") == std::string_view::npos;
     }
   }
   return plan;

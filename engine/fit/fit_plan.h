@@ -41,6 +41,7 @@ struct ModelPlan {
   // The variable of the lobe's width (roughness, slope, exponent), if the model has one: the search spreads its
   // starts over its range (fit_search.cpp), so that a narrow highlight gets a start even when wide lobes score best.
   int width = -1;
+  bool narrowIsLow = true;  // roughness and slopes: narrow lobes have low values; exponents: high
   reference::Material base;
 };
 

@@ -220,29 +220,28 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
     }
     return true;
   };
-  // The best point, then the best in each stratum of the lobe's width not yet started from (a wide lobe that fits
-  // the floor can outscore every narrow one whose other parameters the search drew badly: a glossy phenolic's
-  // highlight), then the best distinct points left.
-  if (!scored.empty()) chosen.push_back(scored.front());
-  if (plan.width >= 0 && starts > 1) {
-    const Variable& v = plan.variables[std::size_t(plan.width)];
-    const auto stratum = [&](const Scored& s) {
-      return std::clamp(int((s.x[std::size_t(plan.width)] - v.lo) / (v.hi - v.lo) * starts), 0, starts - 1);
-    };
-    std::vector<bool> covered(std::size_t(starts), false);
-    if (!chosen.empty()) covered[std::size_t(stratum(chosen.front()))] = true;
-    for (const Scored& candidate : scored) {
-      if (int(chosen.size()) == starts) break;
-      const int k = stratum(candidate);
-      if (!covered[std::size_t(k)] && distinct(candidate)) {
-        covered[std::size_t(k)] = true;
-        chosen.push_back(candidate);
-      }
-    }
-  }
+  // The best distinct points; then, unless one of them has it already, the best point in the narrowest quarter of
+  // the width's range (of `starts` strata): a wide lobe that fits the floor can outscore every narrow one whose other
+  // parameters the search drew badly (a glossy phenolic's highlight under gltf_pbr), and Levenberg-Marquardt does
+  // not grow a lobe from nothing.
   for (const Scored& candidate : scored) {
     if (int(chosen.size()) == starts) break;
     if (distinct(candidate)) chosen.push_back(candidate);
+  }
+  if (plan.width >= 0 && !chosen.empty()) {
+    const Variable& v = plan.variables[std::size_t(plan.width)];
+    const auto stratum = [&](const Scored& s) {
+      const int k = std::clamp(int((s.x[std::size_t(plan.width)] - v.lo) / (v.hi - v.lo) * starts), 0, starts - 1);
+      return plan.narrowIsLow ? k : starts - 1 - k;  // 0: the narrowest
+    };
+    int narrowest = starts;
+    for (const Scored& c : chosen) narrowest = std::min(narrowest, stratum(c));
+    for (const Scored& candidate : scored) {
+      if (narrowest > 0 && stratum(candidate) == 0 && distinct(candidate)) {
+        chosen.push_back(candidate);
+        break;
+      }
+    }
   }
   return chosen;
 }
