@@ -31,6 +31,8 @@ import measured_data as md  # noqa: E402
 
 # What decides a fit besides the slice and the model: changing any of these reruns the job.
 FIT_OPTIONS = {"starts": 4, "search": 256, "seed": 1}
+# Bumped when the fitting itself changes, so that a rerun fits again rather than keeping older fits.
+FIT_VERSION = 2
 # The kinds of material the figures show, by name (docs/measured.md).
 FIGURE_MATERIALS = ["chrome", "gold-metallic-paint", "red-fabric", "blue-acrylic", "cherry-235", "specular-red-phenolic"]
 
@@ -93,7 +95,8 @@ def run_study(slices: dict[str, Path], models: list[str], metric: str, out: Path
     jobs, records = [], {}
     for material, path in slices.items():
         for model in models:
-            description = {"slice": digests[material], "model": model, "metric": metric, **FIT_OPTIONS}
+            description = {"slice": digests[material], "model": model, "metric": metric, "version": FIT_VERSION,
+                           **FIT_OPTIONS}
             done = stored(job_path(out, material, model, metric), description)
             if done is not None:
                 records[(material, model)] = done
