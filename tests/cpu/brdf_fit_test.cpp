@@ -11,6 +11,7 @@
 
 #include "brdf_params/material_params.h"
 #include "fit/fit.h"
+#include "fit_test_support.h"
 #include "measured/merl.h"
 #include "reference/brdf_reference.h"
 #include "util/error.h"
@@ -20,17 +21,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("raylab_fit_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return (dir / name).string();
-}
+std::string scratch(const std::string& name) { return scratchFile("fit_test", name); }
 
-gpu::MaterialRecord material(const std::string& model, const std::string& params) {
-  gpu::MaterialRecord record = defaultRecord(modelId(model));
-  applyParamList(record, params, "test");
-  return record;
-}
+gpu::MaterialRecord material(const std::string& model, const std::string& params) { return materialOf(model, params); }
 
 // A MERL file of `record`, each stored sample times (1 + noise * N(0, 1)) when noise > 0 (fixed seed).
 std::string merlFileOf(const gpu::MaterialRecord& record, const std::string& name, double noise = 0.0) {

@@ -13,6 +13,7 @@
 
 #include "brdf_params/material_params.h"
 #include "fit/fit.h"
+#include "fit_test_support.h"
 #include "fit/merl_slice.h"
 #include "measured/merl.h"
 #include "reference/brdf_reference.h"
@@ -25,17 +26,9 @@ namespace {
 namespace fs = std::filesystem;
 constexpr double kPi = 3.14159265358979323846;
 
-std::string scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("raylab_slice_fit_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return (dir / name).string();
-}
+std::string scratch(const std::string& name) { return scratchFile("slice_fit_test", name); }
 
-gpu::MaterialRecord material(const std::string& model, const std::string& params) {
-  gpu::MaterialRecord record = defaultRecord(modelId(model));
-  applyParamList(record, params, "test");
-  return record;
-}
+gpu::MaterialRecord material(const std::string& model, const std::string& params) { return materialOf(model, params); }
 
 // The slice of `record`: f at each bin's `bin` position on the plane phi_d = 90 degrees.
 MerlSlice sliceOf(const gpu::MaterialRecord& record, SliceBin bin = SliceBin::kCentre) {
