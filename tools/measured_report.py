@@ -60,11 +60,11 @@ def model_table(records: list[dict], key: str) -> tuple[str, dict]:
         {m: float(np.mean(ranks[m])) for m in models}
 
 
-def published_errors(slices: dict[str, Path]) -> dict[str, dict[str, dict]]:
+def published_errors(fits_by_label: dict, slices: dict[str, Path]) -> dict[str, dict[str, dict]]:
     """label -> material -> slice_errors of every published fit with a formula (measured_data.published_f)."""
     wi, wo = md.slice_directions("centre")
     out: dict[str, dict[str, dict]] = {}
-    for label, fits in md.published_fits().items():
+    for label, fits in fits_by_label.items():
         out[label] = {}
         for material, path in slices.items():
             if material in fits:
@@ -72,11 +72,10 @@ def published_errors(slices: dict[str, Path]) -> dict[str, dict[str, dict]]:
     return out
 
 
-def mapping_check(raylab, slices: dict[str, Path], published: dict) -> list[str]:
+def mapping_check(raylab, fits_by_label: dict, slices: dict[str, Path], published: dict) -> list[str]:
     """For the published fits raylab expresses exactly: raylab's own error of the mapped material against the
     formula's, the largest difference over the materials."""
     lines = []
-    fits_by_label = md.published_fits()
     for model, (family, _) in md.NGAN_FAMILIES.items():
         label = f"Ngan {model}"
         worst, count, refused = 0.0, 0, defaultdict(int)
@@ -101,7 +100,7 @@ def mapping_check(raylab, slices: dict[str, Path], published: dict) -> list[str]
     return lines
 
 
-def published_section(records: list[dict], published: dict, key: str) -> str:
+def published_section(records: list[dict], fits_by_label: dict, published: dict, key: str) -> str:
     materials = by_material(records)
     short = key.split("_")[1]
     rows, exceptions = [], defaultdict(list)
@@ -116,7 +115,7 @@ def published_section(records: list[dict], published: dict, key: str) -> str:
             row += [f"{np.median(list(ours.values())):.3f}", f"{wins}/{len(errors)} ({100 * wins / len(errors):.0f}%)"]
             for m in errors:
                 if ours[m] > theirs[m] * (1 + 1e-9):
-                    exceptions[(label, why_worse(model, m))].append((m, ours[m], theirs[m]))
+                    exceptions[(label, why_worse(fits_by_label[label][m]))].append((m, ours[m], theirs[m]))
         else:
             row += ["—", "—"]
         rows.append(row)
@@ -132,9 +131,8 @@ def published_section(records: list[dict], published: dict, key: str) -> str:
     return text
 
 
-def why_worse(model: str, material: str) -> str:
-    fits = md.published_fits()[f"Ngan {model}"]
-    family, lambert, params = fits[material]
+def why_worse(fit: tuple) -> str:
+    family, lambert, params = fit
     try:
         md.raylab_material(family, lambert, params)
     except md.NotExpressible as reason:
@@ -266,7 +264,8 @@ def write(records: list[dict], slices: dict[str, Path], metric: str, docs: Path)
     key = "relative_log" if metric == "log" else "relative_cos"
     page = docs / "measured.md"
     models, mean_ranks = model_table(records, key)
-    published = published_errors(slices)
+    fits_by_label = md.published_fits()
+    published = published_errors(fits_by_label, slices)
     images = docs / "images" / "measured"
     slice_figure(raylab, records, slices, key, images / "slices.png")
     contact_sheet(raylab, records, key, images / "best_fits.jpg")
@@ -278,11 +277,11 @@ def write(records: list[dict], slices: dict[str, Path], metric: str, docs: Path)
         "### Published fits beside raylab's\n\nEach published fit evaluated on the same slices by its own formula "
         "(tools/measured_data.py `published_f`), and raylab's fit of the same family. Errors in both metrics; the "
         f"last column compares in the {metric} metric, the one raylab minimised.\n\n" +
-        published_section(records, published, key),
+        published_section(records, fits_by_label, published, key),
         "Ngan's fits that raylab's models express exactly, evaluated through raylab (`raylab.brdf.fit_error`) "
         "against the formula (largest relative difference of the log error):\n\n"
         "| published fit | mapping | materials | largest difference | not expressible |\n|---|---|---|---|---|\n" +
-        "\n".join(mapping_check(raylab, slices, published)),
+        "\n".join(mapping_check(raylab, fits_by_label, slices, published)),
         f"### The ranking\n\nMean rank over the materials (1 best): {ranking}.\n\nNgan et al. 2005: {NGAN_ORDER}.",
         "### The best model per material against the best published fit\n\n" + best_section(records, published, key),
         "### Figures\n\n![measured slices beside their three best fits](images/measured/slices.png)\n\n"

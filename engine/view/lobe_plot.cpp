@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "brdf_params/material_params.h"
+#include "view/plot_style.h"
 #include "image/image.h"
 
 namespace raylab {
@@ -15,9 +16,6 @@ namespace raylab {
 namespace {
 
 constexpr float kPi = 3.14159265f;
-constexpr ImU32 kLeftColour = IM_COL32(255, 170, 60, 255);
-constexpr ImU32 kRightColour = IM_COL32(90, 200, 255, 255);
-constexpr ImU32 kGridColour = IM_COL32(110, 110, 110, 160);
 constexpr ImU32 kLightColour = IM_COL32(255, 240, 120, 255);
 
 bool sameMaterial(const gpu::MaterialRecord& a, const gpu::MaterialRecord& b) {
@@ -69,10 +67,10 @@ void drawPolar(const LobePlot& plot, ImVec2 size, bool wholePlane) {
   const float radius = std::min(size.x * 0.5f, wholePlane ? size.y * 0.5f - 6.0f : size.y) - 6.0f;
   for (int ring = 1; ring <= 4; ++ring) {
     draw->PathArcTo(centre, radius * float(ring) / 4.0f, wholePlane ? 0.0f : kPi, 2.0f * kPi, wholePlane ? 64 : 32);
-    draw->PathStroke(kGridColour, 0, 1.0f);
+    draw->PathStroke(kPlotGridColour, 0, 1.0f);
   }
-  draw->AddLine(ImVec2(centre.x - radius, centre.y), ImVec2(centre.x + radius, centre.y), kGridColour);
-  draw->AddLine(centre, ImVec2(centre.x, centre.y - radius), kGridColour);
+  draw->AddLine(ImVec2(centre.x - radius, centre.y), ImVec2(centre.x + radius, centre.y), kPlotGridColour);
+  draw->AddLine(centre, ImVec2(centre.x, centre.y - radius), kPlotGridColour);
   const float theta = glm::radians(plot.thetaIDegrees);
   draw->AddLine(centre, ImVec2(centre.x - radius * std::sin(theta), centre.y - radius * std::cos(theta)), kLightColour,
                 2.0f);
@@ -87,8 +85,8 @@ void drawPolar(const LobePlot& plot, ImVec2 size, bool wholePlane) {
     }
     draw->PathStroke(colour, curveTwoSided ? ImDrawFlags_Closed : 0, 2.0f);
   };
-  if (plot.left) curve(*plot.left, kLeftColour);
-  if (plot.right) curve(*plot.right, kRightColour);
+  if (plot.left) curve(*plot.left, kPlotLeftColour);
+  if (plot.right) curve(*plot.right, kPlotRightColour);
   char text[64];
   std::snprintf(text, sizeof text, "outer ring: f |cos| = %.3g /sr", double(scale));
   draw->AddText(ImVec2(corner.x, corner.y), IM_COL32(200, 200, 200, 255), text);
@@ -113,7 +111,7 @@ void drawAlbedo(const LobePlot& plot, ImVec2 size) {
   const ImVec2 extent(size.x - 8.0f, size.y - 16.0f);
   for (int line = 0; line <= 4; ++line) {
     const float y = lo.y - extent.y * float(line) / 4.0f;
-    draw->AddLine(ImVec2(lo.x, y), ImVec2(lo.x + extent.x, y), kGridColour);
+    draw->AddLine(ImVec2(lo.x, y), ImVec2(lo.x + extent.x, y), kPlotGridColour);
   }
   const auto curve = [&](const LobeCurves& curves, ImU32 colour) {
     for (std::size_t i = 0; i < curves.albedo.thetaDegrees.size(); ++i) {
@@ -122,8 +120,8 @@ void drawAlbedo(const LobePlot& plot, ImVec2 size) {
     }
     draw->PathStroke(colour, 0, 2.0f);
   };
-  if (plot.left) curve(*plot.left, kLeftColour);
-  if (plot.right) curve(*plot.right, kRightColour);
+  if (plot.left) curve(*plot.left, kPlotLeftColour);
+  if (plot.right) curve(*plot.right, kPlotRightColour);
   char text[80];
   std::snprintf(text, sizeof text, "albedo (0..%.3g) against theta 0..90 deg", double(top));
   draw->AddText(ImVec2(corner.x, corner.y), IM_COL32(200, 200, 200, 255), text);
@@ -157,10 +155,10 @@ bool drawLobePlot(LobePlot& plot) {
   const bool wholePlane = twoSided(plot.left) || twoSided(plot.right);
   drawPolar(plot, ImVec2(width, width * (wholePlane ? 1.0f : 0.55f)), wholePlane);
   drawAlbedo(plot, ImVec2(width, width * 0.4f));
-  ImGui::TextColored(ImVec4(1.0f, 0.67f, 0.24f, 1.0f), "A");
+  ImGui::TextColored(kPlotLeftText, "A");
   if (plot.right) {
     ImGui::SameLine();
-    ImGui::TextColored(ImVec4(0.35f, 0.78f, 1.0f, 1.0f), "B (compared)");
+    ImGui::TextColored(kPlotRightText, "B (compared)");
   }
   ImGui::SameLine();
   ImGui::TextDisabled(wholePlane ? "luminance of f |cos theta_o|; light from the left; below the line: inside"

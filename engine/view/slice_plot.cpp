@@ -11,6 +11,7 @@
 #include "measured/merl.h"
 #include "reference/brdf_reference.h"
 #include "util/error.h"
+#include "view/plot_style.h"
 
 namespace raylab {
 
@@ -18,9 +19,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr ImU32 kTargetColour = IM_COL32(235, 235, 235, 255);
-constexpr ImU32 kLeftColour = IM_COL32(255, 170, 60, 255);
-constexpr ImU32 kRightColour = IM_COL32(90, 200, 255, 255);
-constexpr ImU32 kGridColour = IM_COL32(110, 110, 110, 160);
 
 double rowLuminance(const glm::dvec3& f) { return 0.2126 * f.x + 0.7152 * f.y + 0.0722 * f.z; }
 
@@ -71,7 +69,7 @@ void drawSlicePlot(SlicePlot& plot, const gpu::MaterialRecord& material, const g
     std::vector<double> values;
     for (const glm::dvec3& f : sliceRowOf(*m, row)) values.push_back(rowLuminance(f));
     curves.push_back(values);
-    colours.push_back(m == &material ? kLeftColour : kRightColour);
+    colours.push_back(m == &material ? kPlotLeftColour : kPlotRightColour);
   }
   // Decades shown: from the largest value down to 1e-4 of it, or the smallest measured value above 0.
   double top = 0.0, bottom = INFINITY;
@@ -97,7 +95,7 @@ void drawSlicePlot(SlicePlot& plot, const gpu::MaterialRecord& material, const g
   const ImVec2 extent(size.x - 8.0f, size.y - 18.0f);
   for (double decade = std::ceil(lo); decade <= hi; decade += 1.0) {
     const float y = origin.y - extent.y * float((decade - lo) / (hi - lo));
-    draw->AddLine(ImVec2(origin.x, y), ImVec2(origin.x + extent.x, y), kGridColour);
+    draw->AddLine(ImVec2(origin.x, y), ImVec2(origin.x + extent.x, y), kPlotGridColour);
   }
   // x: the slice's own square-root theta_h axis, bin by bin, as the file stores it.
   const auto point = [&](int h, double v) {
@@ -114,10 +112,10 @@ void drawSlicePlot(SlicePlot& plot, const gpu::MaterialRecord& material, const g
   draw->AddText(ImVec2(corner.x, corner.y), IM_COL32(200, 200, 200, 255), text);
   ImGui::TextColored(ImVec4(0.92f, 0.92f, 0.92f, 1.0f), "measured");
   ImGui::SameLine();
-  ImGui::TextColored(ImVec4(1.0f, 0.67f, 0.24f, 1.0f), "A");
+  ImGui::TextColored(kPlotLeftText, "A");
   if (compared != nullptr) {
     ImGui::SameLine();
-    ImGui::TextColored(ImVec4(0.35f, 0.78f, 1.0f, 1.0f), "B (compared)");
+    ImGui::TextColored(kPlotRightText, "B (compared)");
   }
   ImGui::SameLine();
   ImGui::TextDisabled("%s, phi_d = 90 deg", std::filesystem::path(plot.name).filename().c_str());

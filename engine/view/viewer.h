@@ -13,6 +13,7 @@
 #include "render/renderer.h"
 #include "scene/scene.h"
 #include "view_logic/compare_spec.h"
+#include "view/slice_plot.h"
 #include "view_logic/script.h"
 
 namespace raylab {
@@ -30,7 +31,8 @@ struct ViewerOptions {
   ToneMap toneMap = ToneMap::kClamp;
   bool panel = true;
   std::optional<CompareSpec> compare;  // open the split view with this material switched (--compare)
-  std::string target;                  // a measured .slice or MERL .binary shown beside the lobe (--target)
+  std::optional<SlicePlot> target;     // a measured slice shown beside the lobe (--target), read and checked
+
 
   // Automation. With `frames`, the viewer runs that many frames and exits, deterministically: a frame with a
   // change (a script event) draws the preview, every other frame, the first included, adds exactly one

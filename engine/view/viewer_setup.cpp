@@ -119,7 +119,7 @@ void setUp(Viewer& v) {
   v.settings.targetMs = static_cast<float>(v.options.targetMs);
   v.report.fullExtent = full;
   if (v.options.compare) startComparing(v, *v.options.compare);
-  if (!v.options.target.empty()) v.slicePlot = loadSlicePlot(v.options.target);
+  v.slicePlot = v.options.target;
 }
 
 void tearDown(Viewer& v) {

@@ -29,6 +29,7 @@ struct ViewCommandOptions {
   ViewerOptions viewer;
   SceneRequest request;
   std::string scriptPath;
+  std::string targetPath;
   std::string compare;
   std::string toneMap = "clamp";
   std::string integrator{kIntegratorOption.defaultValue};
@@ -101,8 +102,8 @@ void view(ViewCommandOptions command) {
     checkOutputPath(paths.png, event.where);
   }
 
-  // A bad target is refused before the scene loads and the window opens.
-  if (!o.target.empty()) loadSlicePlot(o.target);
+  // Read (and a bad one refused) before the scene loads and the window opens.
+  if (!command.targetPath.empty()) o.target = loadSlicePlot(command.targetPath);
 
   SceneRequest request = command.request;
   request.maxBufferBytes = deviceBufferLimit(o.device);  // an environment image the device cannot hold is not decoded
@@ -146,7 +147,7 @@ void addViewCommand(CLI::App& raylab) {
   addText(command, "--compare", o->compare, "MATERIAL=MODEL[:k=v,...]",
           "open the split view: the right side renders MATERIAL as MODEL with these parameters (RGB as r/g/b), "
           "e.g. --compare \"red plastic=ward:alpha_x=0.2,alpha_y=0.2\"");
-  addText(command, "--target", o->viewer.target, "FILE.slice|FILE.binary",
+  addText(command, "--target", o->targetPath, "FILE.slice|FILE.binary",
           "a measured material beside the lobe: its phi_d = 90 slice, row by row, with the selected material's f at "
           "the same pairs (docs/fitting.md)");
   addText(command, "--script", o->scriptPath, "FILE", "replay camera and parameter changes (format in docs/viewer.md)");
