@@ -10,6 +10,7 @@
 #include "brdf_params/material_params.h"
 #include "measured/merl.h"
 #include "reference/brdf_reference.h"
+#include "scene/radiance_limits.h"
 #include "util/error.h"
 #include "util/files.h"
 
@@ -181,6 +182,10 @@ FitTarget parseFitCsv(std::string_view text, const std::string& path) {
       throw Error(where + ": wi and wo must lie above the surface (z > 0)", kExitUsage);
     }
     if (pair.f.x < 0.0 || pair.f.y < 0.0 || pair.f.z < 0.0) throw Error(where + ": f is negative", kExitUsage);
+    // f is bounded as radiance is (scene/radiance_limits.h), as a MERL file's samples are.
+    if (std::max({pair.f.x, pair.f.y, pair.f.z}) > double(kMaxRadiance)) {
+      throw Error(where + ": f above 1e+20 /sr, the bound raylab keeps radiance within", kExitUsage);
+    }
     if (fields == 10) {
       if (v[9] < 0.0) throw Error(where + ": the weight is negative", kExitUsage);
       pair.weight = v[9];
@@ -194,8 +199,9 @@ FitTarget parseFitCsv(std::string_view text, const std::string& path) {
   double total = 0.0;
   for (const FitPair& p : target.pairs) total += p.weight;
   if (!(total > 0.0 && std::isfinite(total))) {
-    throw Error(path + ": the weights sum to " + (total > 0.0 ? std::string("more than a double holds") : "zero") +
-                "; give some sample a positive weight", kExitUsage);
+    throw Error(path + (total > 0.0 ? ": the weights sum to more than a double holds; scale them down"
+                                    : ": the weights sum to zero; give some sample a positive weight"),
+                kExitUsage);
   }
   normaliseWeights(target.pairs);
   return target;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "scene/radiance_limits.h"
 #include "util/error.h"
 #include "util/files.h"
 
@@ -48,12 +49,12 @@ MerlSlice decodeMerlSlice(const std::string& bytes, const std::string& where) {
   bool anyPositive = false;
   for (std::size_t i = 0; i < slice.values.size(); ++i) {
     const float v = slice.values[i];
-    if (!std::isfinite(v) || v < 0.0f) {
+    if (!std::isfinite(v) || v < 0.0f || v > kMaxRadiance) {
       const std::size_t sample = i / 3;
       throw Error(where + ": the value at theta_d row " + std::to_string(sample / kSliceThetaH) + ", theta_h column " +
                   std::to_string(sample % kSliceThetaH) + ", " + kChannels[i % 3] + " is " +
-                  (std::isnan(v) ? "NaN" : std::isinf(v) ? (v > 0 ? "inf" : "-inf") : "negative") +
-                  "; a slice holds finite f >= 0", kExitUsage);
+                  (std::isnan(v) ? "NaN" : std::isinf(v) ? (v > 0 ? "inf" : "-inf") : v < 0.0f ? "negative" : "above 1e+20") +
+                  "; a slice holds finite f >= 0, at most 1e+20 /sr (the bound on radiance)", kExitUsage);
     }
     anyPositive |= v > 0.0f;
   }

@@ -159,6 +159,7 @@ TEST(SliceFit, BadSlicesAreRefusedNamingTheFileAndTheValue) {
   refused("nan.slice", with((7 * 90 + 5) * 3 + 1, NAN), "theta_d row 7, theta_h column 5, green is NaN");
   refused("inf.slice", with(2, INFINITY), "blue is inf");
   refused("negative.slice", with(3, -0.5f), "negative");
+  refused("huge.slice", with(4, 1e30f), "theta_h column 1, green is above 1e+20");
   refused("zeros.slice", std::string(kSliceBytes, '\0'), "every value is zero");
 }
 
@@ -187,6 +188,8 @@ TEST(SliceFit, ACsvWeightColumnWeightsTheSamples) {
   refused("0,0,1,0,0,1,0.1,0.1,0.1,nan\n", "bad_weight.csv:2: field 10 'nan' is not a finite number");
   refused("0,0,1,0,0,1,0.1,0.1,0.1,0\n0,0,1,0,0,1,0.1,0.1,0.1,0\n", "the weights sum to zero");
   refused("0,0,1,0,0,1,0.1,0.1,0.1,1,7\n", "more than 10 fields");
+  refused("0,0,1,0,0,1,1e38,0.1,0.1,1\n", "bad_weight.csv:2: f above 1e+20");
+  refused("0,0,1,0,0,1,0.1,0.1,0.1,1e308\n0,0,1,0,0,1,0.1,0.1,0.1,1e308\n", "more than a double holds");
   // Nine columns, ten fields: named as such, not as a bad number.
   const std::string nine = write("nine.csv", "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b\n0,0,1,0,0,1,0.1,0.1,0.1,1\n");
   EXPECT_NE(errorOf([&] { csvFitTarget(nine); }).first.find("more than 9 fields"), std::string::npos);
