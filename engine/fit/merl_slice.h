@@ -26,7 +26,8 @@ struct MerlSlice {
   glm::dvec3 at(int thetaH, int thetaD) const;
 };
 
-// Reads and checks a slice: a regular file of exactly kSliceBytes, every value a finite float >= 0, not all zero.
+// Reads and checks a slice: a regular file of exactly kSliceBytes, every value a finite float in [0, 1e20] (the bound
+// on radiance, scene/radiance_limits.h), not all zero.
 // Throws Error (exit code 2 for the content, FileError for the file itself) naming the file and the first bad
 // value by its row, column and channel.
 MerlSlice readMerlSlice(const std::string& path);
