@@ -160,6 +160,13 @@ ModelPlan planOf(const ModelInfo& model, bool isotropic) {
   for (std::size_t i = 0; i < plan.variables.size(); ++i) {
     if (plan.variables[i].linearGroup < 0) plan.nonlinear.push_back(int(i));
   }
+  for (const ParamInfo& param : model.params) {
+    for (std::size_t i = 0; param.rgb && i + 2 < plan.variables.size(); ++i) {
+      if (plan.variables[i].slots.front() == param.slot && plan.variables[i].linearGroup < 0) {
+        plan.nonlinearColours.push_back({int(i), int(i + 1), int(i + 2)});
+      }
+    }
+  }
   for (const std::string_view role : {"roughness", "slope", "slope_x", "exponent", "exponent_x", "mirror_exponent"}) {
     const ParamInfo* param = findRole(model, role);
     for (std::size_t i = 0; param != nullptr && plan.width < 0 && i < plan.variables.size(); ++i) {

@@ -38,6 +38,9 @@ struct ModelPlan {
   // turn.
   std::vector<std::vector<int>> blocks;
   std::vector<int> nonlinear;  // variables in no linear group
+  // RGB parameters that enter f nonlinearly (a conductor's eta and k), as their channels' variables: the search also
+  // draws them grey, one value for the three channels (fit_search.cpp).
+  std::vector<std::array<int, 3>> nonlinearColours;
   // The variable of the lobe's width (roughness, slope, exponent), if the model has one: the search spreads its
   // starts over its range (fit_search.cpp), so that a narrow highlight gets a start even when wide lobes score best.
   int width = -1;

@@ -165,29 +165,45 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
   for (const FitPair& pair : coarse.pairs) pairs.push_back(&pair);
   const std::size_t n = plan.variables.size();
 
-  // The Latin hypercube: each variable's range cut into points - 1 strata, one point in each, the strata shuffled
-  // per variable (a linear variable's value starts the alternation between blocks).
+  // A Latin hypercube: each variable's range cut into `count` strata, one point in each, the strata shuffled per
+  // variable (a linear variable's value starts the alternation between blocks). A grey hypercube gives the channels
+  // of each nonlinear colour one value: a conductor's eta and k per channel make a 7-dimensional box in which 256
+  // points rarely land every channel in its basin, while the best fits of most materials are near grey.
   std::vector<std::vector<double>> xs;
   std::vector<double> defaults(n);
   for (std::size_t i = 0; i < n; ++i) defaults[i] = plan.variables[i].start;
   xs.push_back(defaults);
-  std::vector<std::vector<int>> strata(n);
-  for (auto& s : strata) {
-    for (int p = 0; p + 1 < points; ++p) s.push_back(p);
-    std::shuffle(s.begin(), s.end(), random);
-  }
-  for (int p = 0; p + 1 < points; ++p) {
-    std::vector<double> x = defaults;
-    for (std::size_t j = 0; j < n; ++j) {
-      const Variable& v = plan.variables[j];
-      x[j] = v.lo + (v.hi - v.lo) * (strata[j][std::size_t(p)] + uniform(random)) / (points - 1);
+  const auto hypercube = [&](int count, bool grey) {
+    std::vector<std::vector<int>> strata(n);
+    for (auto& s : strata) {
+      for (int p = 0; p < count; ++p) s.push_back(p);
+      std::shuffle(s.begin(), s.end(), random);
     }
-    xs.push_back(std::move(x));
-  }
+    for (int p = 0; p < count; ++p) {
+      std::vector<double> x = defaults;
+      for (std::size_t j = 0; j < n; ++j) {
+        const Variable& v = plan.variables[j];
+        x[j] = v.lo + (v.hi - v.lo) * (strata[j][std::size_t(p)] + uniform(random)) / count;
+      }
+      for (const std::array<int, 3>& colour : plan.nonlinearColours) {
+        if (!grey) continue;
+        // Drawn densest near the lower bound (u^2), where the dielectrics' indices lie (eta 1-2 and k = 0 among a
+        // conductor's eta in [0.01, 10] and k in [0, 20]): uniform draws leave a plastic's basin ~1 point in 128.
+        const Variable& v = plan.variables[std::size_t(colour[0])];
+        const double u = (x[std::size_t(colour[0])] - v.lo) / (v.hi - v.lo);
+        for (int c = 0; c < 3; ++c) x[std::size_t(colour[std::size_t(c)])] = v.lo + (v.hi - v.lo) * u * u;
+      }
+      xs.push_back(std::move(x));
+    }
+  };
+  hypercube(points - 1, false);
+  const std::size_t firstGrey = xs.size();
+  if (!plan.nonlinearColours.empty()) hypercube(points / 2, true);
 
   std::vector<Scored> scored;
   const int cycles = plan.blocks.size() > 1 ? 3 : 1;
-  for (std::vector<double>& x : xs) {
+  for (std::size_t index = 0; index < xs.size(); ++index) {
+    std::vector<double>& x = xs[index];
     double cost = INFINITY;
     if (plan.blocks.empty()) {
       reference::Material material = plan.base;
@@ -205,7 +221,7 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
     for (int cycle = 0; cycle < cycles; ++cycle) {
       for (const std::vector<int>& block : plan.blocks) cost = solveBlock(pairs, plan, block, metric, x);
     }
-    scored.push_back({x, cost});
+    scored.push_back({x, cost, index >= firstGrey});
   }
   std::stable_sort(scored.begin(), scored.end(), [](const Scored& a, const Scored& b) { return a.cost < b.cost; });
   std::vector<Scored> chosen;
@@ -227,6 +243,17 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
   for (const Scored& candidate : scored) {
     if (int(chosen.size()) == starts) break;
     if (distinct(candidate)) chosen.push_back(candidate);
+  }
+  // The best grey point, unless a grey point is among them: its channels are the ones Levenberg-Marquardt cannot
+  // move one at a time out of a wrong basin (a plastic's blue channel fitted as a perfect mirror, eta 0.01, k 20).
+  if (!plan.nonlinearColours.empty() &&
+      std::none_of(chosen.begin(), chosen.end(), [](const Scored& c) { return c.grey; })) {
+    for (const Scored& candidate : scored) {
+      if (candidate.grey && distinct(candidate)) {
+        chosen.push_back(candidate);
+        break;
+      }
+    }
   }
   if (plan.width >= 0 && !chosen.empty()) {
     const Variable& v = plan.variables[std::size_t(plan.width)];

@@ -18,6 +18,7 @@ inline constexpr std::size_t kSearchPairs = 2048;
 struct Scored {
   std::vector<double> x;
   double cost = INFINITY;
+  bool grey = false;  // drawn with one value for each nonlinear colour's channels
 };
 
 // The pairs the search and the first LM solves use: every k-th of the target's, about kSearchPairs.
