@@ -8,6 +8,7 @@
 #include <ImfStdIO.h>
 #include <ImfVersion.h>
 #include <openexr.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <array>
@@ -168,6 +169,95 @@ void checkCxxHeaderWalk(const std::string& bytes, const std::string& label) {
   }
 }
 
+// How many of the data window's rows the file's chunks hold: every chunk of the first level is found through the
+// offset table and decompressed by the core library. OpenEXR's C++ classes fill rows whose chunk is missing, or
+// decompresses short (a header whose windows were enlarged past the stored rows), with whatever their buffers held:
+// heap memory, NaN or finite. A chunk that fails counts the rows its data does hold where that is known (stored
+// uncompressed: its size), else none.
+// The bytes of pixels a chunk holds once decompressed, where that can be told without decoding it: its size stored
+// uncompressed, the length of its zlib stream (ZIP, ZIPS: raylab's own files), else 0.
+std::uint64_t storedBytes(exr_context_t context, const exr_chunk_info_t& chunk) {
+  if (chunk.compression == EXR_COMPRESSION_NONE) return chunk.packed_size;
+  if (chunk.compression != EXR_COMPRESSION_ZIP && chunk.compression != EXR_COMPRESSION_ZIPS) return 0;
+  std::vector<unsigned char> packed(chunk.packed_size), out(1 << 16);
+  if (exr_read_chunk(context, 0, &chunk, packed.data()) != EXR_ERR_SUCCESS) return 0;
+  z_stream stream{};
+  if (inflateInit(&stream) != Z_OK) return 0;
+  stream.next_in = packed.data();
+  stream.avail_in = uInt(packed.size());
+  std::uint64_t total = 0;
+  int status = Z_OK;
+  while (status == Z_OK && total <= chunk.unpacked_size) {  // never more than the chunk claims
+    stream.next_out = out.data();
+    stream.avail_out = uInt(out.size());
+    status = inflate(&stream, Z_NO_FLUSH);
+    total += out.size() - stream.avail_out;
+  }
+  inflateEnd(&stream);
+  return total;
+}
+
+std::int64_t rowsHeld(exr_context_t context, exr_storage_t storage, const exr_attr_box2i_t& window) {
+  std::int64_t held = 0;
+  exr_decode_pipeline_t decoder = EXR_DECODE_PIPELINE_INITIALIZER;
+  bool started = false;
+  const auto decodes = [&](const exr_chunk_info_t& chunk) {
+    exr_result_t result = started ? exr_decoding_update(context, 0, &chunk, &decoder)
+                                  : exr_decoding_initialize(context, 0, &chunk, &decoder);
+    if (!started && result == EXR_ERR_SUCCESS) result = exr_decoding_choose_default_routines(context, 0, &decoder);
+    started = started || result == EXR_ERR_SUCCESS;
+    if (result == EXR_ERR_SUCCESS) result = exr_decoding_run(context, 0, &decoder);  // read and decompress
+    return result == EXR_ERR_SUCCESS;
+  };
+  const std::int64_t width = std::int64_t(window.max.x) - window.min.x + 1;
+  if (storage == EXR_STORAGE_SCANLINE) {
+    std::int32_t lines = 0;
+    if (exr_get_scanlines_per_chunk(context, 0, &lines) != EXR_ERR_SUCCESS || lines <= 0) return 0;
+    std::uint64_t rowBytes = 0;
+    const exr_attr_chlist_t* channels = nullptr;
+    if (exr_get_channels(context, 0, &channels) == EXR_ERR_SUCCESS && channels != nullptr) {
+      for (int c = 0; c < channels->num_channels; ++c) {
+        rowBytes += std::uint64_t(width / channels->entries[c].x_sampling) *
+                    (channels->entries[c].pixel_type == EXR_PIXEL_HALF ? 2 : 4);
+      }
+    }
+    for (std::int64_t y = window.min.y; y <= window.max.y; y += lines) {
+      exr_chunk_info_t chunk{};
+      if (exr_read_scanline_chunk_info(context, 0, int(y), &chunk) != EXR_ERR_SUCCESS) continue;
+      if (decodes(chunk)) {
+        held += chunk.height;
+      } else if (rowBytes > 0) {
+        held += std::min<std::int64_t>(chunk.height, std::int64_t(storedBytes(context, chunk) / rowBytes));
+      }
+    }
+  } else {
+    // Tiles: the first level's, each holding its rows for its columns; counted as whole rows of the window when
+    // every tile of a row of tiles decodes.
+    std::uint32_t tileWidth = 0, tileHeight = 0;
+    exr_tile_level_mode_t levelMode{};
+    exr_tile_round_mode_t roundMode{};
+    if (exr_get_tile_descriptor(context, 0, &tileWidth, &tileHeight, &levelMode, &roundMode) != EXR_ERR_SUCCESS ||
+        tileWidth == 0 || tileHeight == 0) {
+      return 0;
+    }
+    const std::int64_t height = std::int64_t(window.max.y) - window.min.y + 1;
+    const auto tilesX = std::int32_t((width + tileWidth - 1) / tileWidth);
+    const auto tilesY = std::int32_t((height + tileHeight - 1) / tileHeight);
+    for (std::int32_t ty = 0; ty < tilesY; ++ty) {
+      bool whole = true;
+      std::int64_t rows = 0;
+      for (std::int32_t tx = 0; tx < tilesX && whole; ++tx) {
+        exr_chunk_info_t chunk{};
+        whole = exr_read_tile_chunk_info(context, 0, tx, ty, 0, 0, &chunk) == EXR_ERR_SUCCESS && decodes(chunk);
+        rows = chunk.height;
+      }
+      if (whole) held += rows;
+    }
+  }
+  if (started) exr_decoding_destroy(context, &decoder);
+  return held;
+}
+
 // Refuses, before OpenEXR's C++ classes see the file: a header the core library does not accept, several parts
 // (which would be read as the first, silently), deep data, and more chunks than the file has room for offsets of
 // (each chunk needs 8 bytes in the file's offset table).
@@ -230,6 +320,16 @@ void checkHeaderAgainstContent(const std::string& bytes, const std::string& labe
       problem = "OpenEXR header claims " + std::to_string(width) + "x" + std::to_string(height) + " pixels of " +
                 std::to_string(channels->num_channels) + " channels in a file of " + std::to_string(bytes.size()) +
                 " bytes, more than any compression holds: the file is damaged";
+    }
+  }
+  if (problem.empty() && channels != nullptr) {
+    const std::int64_t height = std::int64_t(window.max.y) - window.min.y + 1;
+    // Decompression buffers: a chunk's unpacked size was bounded above.
+    coreAllocationLimit = (std::size_t(16) << 20) + 2 * bytes.size() + (std::size_t(512) << 20);
+    const std::int64_t held = rowsHeld(context, storage, window);
+    if (held < height) {
+      problem = "OpenEXR file holds " + std::to_string(held) + " of its " + std::to_string(height) +
+                " rows (truncated, or a header that declares more than was stored)";
     }
   }
   exr_finish(&context);

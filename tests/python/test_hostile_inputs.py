@@ -114,6 +114,32 @@ def test_damaged_exr_files_are_refused(work, compression):
             raylab.read_exr(damaged)
 
 
+# Windows enlarged past the stored rows: OpenEXR's classes used to fill the missing rows with heap memory (-1.7e38,
+# NaN, different each run), which an environment would have lit a scene with. Every chunk is decoded before the
+# pixels are read; the rows held are counted where the chunk tells (uncompressed, zlib).
+@pytest.mark.parametrize("layout", ["raylab", "none", "piz", "tiled"])
+def test_windows_that_claim_more_rows_than_the_file_holds_are_refused(work, minimal, layout):
+    pixels = np.random.default_rng(7).random((8, 16, 3), np.float32)
+    stored = work / f"{layout}.exr"
+    if layout == "raylab":
+        raylab.write_exr(stored, pixels)
+    else:
+        header = {"compression": {"none": OpenEXR.NO_COMPRESSION, "piz": OpenEXR.PIZ_COMPRESSION,
+                                  "tiled": OpenEXR.ZIP_COMPRESSION}[layout]}
+        if layout == "tiled":
+            tiles = OpenEXR.TileDescription()
+            tiles.xSize = tiles.ySize = 4
+            header.update(type=OpenEXR.tiledimage, tiles=tiles)
+        OpenEXR.File(header, {"RGB": pixels}).write(str(stored))
+    np.testing.assert_array_equal(raylab.read_exr(stored)[..., :3], pixels)
+    taller = _patched_windows(stored, work / f"{layout}_taller.exr", (0, 0, 15, 15))
+    held = "8" if layout == "raylab" else "[0-8]"
+    with pytest.raises(RuntimeError, match=f"holds {held} of its 16 rows"):
+        raylab.read_exr(taller)
+    with pytest.raises(ValueError, match=f"holds {held} of its 16 rows"):
+        raylab.Scene.load(minimal, env=taller)
+
+
 def test_exr_channels_are_read_correctly_or_refused_naming_them(work):
     grey = np.full((4, 6), 0.25, np.float32)
     red, green, blue = grey * 2, grey, grey / 2
