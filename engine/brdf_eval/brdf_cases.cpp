@@ -7,6 +7,7 @@
 #include <set>
 
 #include "brdf_params/material_params.h"
+#include "measured/measured_library.h"
 #include "util/error.h"
 
 namespace raylab {
@@ -144,6 +145,7 @@ gpu::MaterialRecord parseMaterial(std::string_view model, std::string_view param
 
 BrdfCaseFile parseBrdfCases(std::string_view text, const std::string& source) {
   BrdfCaseFile file;
+  const MeasuredFileLimit measuredLimit(source);  // its rows are one batch on the device
   bool headerSeen = false;
   int lineNumber = 0;
   for (std::string_view line : split(text, '\n')) {

@@ -127,7 +127,7 @@ void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 valu
     bool loaded = value.x == float(id) && id != kNoMeasuredFile;
     if (loaded) {
       try {
-        measuredFile(id);
+        measuredFilePath(id);
       } catch (const Error&) {
         loaded = false;
       }
@@ -180,7 +180,7 @@ void setFileParam(gpu::MaterialRecord& record, std::string_view name, const std:
 
 std::string fileParamPath(const gpu::MaterialRecord& record, const ParamInfo& param) {
   const auto id = static_cast<std::uint32_t>(record.params[param.slot]);
-  return id == kNoMeasuredFile ? std::string() : measuredFile(id)->path;
+  return id == kNoMeasuredFile ? std::string() : measuredFilePath(id);
 }
 
 void checkFileParams(const gpu::MaterialRecord& record, const std::string& where) {

@@ -11,6 +11,7 @@
 #include <stb_image.h>
 
 #include "brdf_params/material_params.h"
+#include "measured/measured_library.h"
 #include "image/image.h"
 #include "gltf_read/gltf_files.h"
 #include "scene/radiance_limits.h"
@@ -350,6 +351,7 @@ void applyRaylabMaterial(gpu::MaterialRecord& record, const json& raylab, const 
 
 void convertMaterials(Document& document, Scene& scene) {
   TextureConverter textures(document, scene);
+  const MeasuredFileLimit measuredLimit(document.label);
   const json* materialsJson = findPath(document.json, {"materials"});
   for (std::size_t i = 0; i < document.model.materials.size(); ++i) {
     const tinygltf::Material& material = document.model.materials[i];

@@ -50,7 +50,7 @@ constexpr std::size_t kMaxListed = 64;
 std::vector<std::string> measuredCandidates() {
   std::set<std::filesystem::path> folders = {std::filesystem::current_path()};
   for (std::uint32_t id = 1; id <= measuredFileCount(); ++id) {
-    folders.insert(std::filesystem::path(measuredFile(id)->path).parent_path());
+    folders.insert(std::filesystem::path(measuredFilePath(id)).parent_path());
   }
   std::set<std::string> files;
   for (const std::filesystem::path& folder : folders) {

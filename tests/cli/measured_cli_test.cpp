@@ -199,6 +199,43 @@ TEST_F(MeasuredCliTest, FitRanksTheTabulatedModelFirstAndWritesJson) {
   EXPECT_NE(bad.output.find("is not a model that can be fitted"), std::string::npos) << bad.output;
 }
 
+// A scene or CSV may use at most 7 measured files (the device tables' limit): the 8th is refused before it is read
+// (40 files used to cost 1.4 GiB before the refusal), and hard links to one file are one file, read once.
+TEST_F(MeasuredCliTest, FilesBeyondTheLimitAreRefusedBeforeTheyAreReadAndLinksAreOneFile) {
+  const fs::path dir = scratch() / "limit";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string header = "id,model,params,wi,wo,n,t\n";
+  const std::string directions = ",0.5 0 0.866025,-0.3 0.2 0.932738,0 0 1,1 0 0\n";
+  std::string links = header, distinct = header;
+  for (int i = 0; i < 40; ++i) {
+    const std::string name = "link" + std::to_string(i) + ".binary";
+    fs::create_hard_link(good_, dir / name);
+    links += "l" + std::to_string(i) + ",measured,file=" + name + directions;
+  }
+  for (int i = 0; i < 12; ++i) {
+    // Not MERL files: the first 7 are read and refused as such; the rest must not be read at all.
+    const std::string name = "other" + std::to_string(i) + ".binary";
+    writeBytes(dir / name, "abc");
+    distinct += "d" + std::to_string(i) + ",measured,file=" + name + directions;
+  }
+  writeBytes(dir / "links.csv", links);
+  writeBytes(dir / "distinct.csv", distinct);
+  const CommandResult linked = runRaylab({"brdf", "eval", "--in", (dir / "links.csv").string(), "--out",
+                                          (dir / "links_out.csv").string()});
+  EXPECT_EQ(linked.exitCode, 0) << linked.output;
+  const CommandResult many = runRaylab({"brdf", "eval", "--in", (dir / "distinct.csv").string(), "--out",
+                                        (dir / "distinct_out.csv").string()});
+  EXPECT_NE(many.exitCode, 0);
+  for (int i = 0; i < 12; ++i) {
+    const std::string name = "other" + std::to_string(i) + ".binary";
+    const std::size_t at = many.output.find(name);
+    ASSERT_NE(at, std::string::npos) << many.output;
+    const std::string line = many.output.substr(at, many.output.find('\n', at) - at);
+    EXPECT_EQ(line.find("would use more than 7 measured files") != std::string::npos, i >= 7) << line;
+  }
+}
+
 // A MERL phi_d = 90 slice of a Lambertian 0.3 (f = 0.3 / pi in every bin), or of `value` at one bin.
 std::string lambertSlice(float bad = 0.0f, std::size_t at = std::size_t(-1)) {
   std::string bytes(90 * 90 * 3 * sizeof(float), '\0');
