@@ -5,9 +5,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <set>
+#include <stdexcept>
 
 #include "measured/measured_library.h"
 #include "shared/brdf_lobes.h"
@@ -38,7 +40,23 @@ std::string formatRange(const ParamInfo& p) { return "[" + numberText(p.min) + "
 
 }  // namespace
 
-std::span<const ModelInfo> allModels() { return registeredModels(); }
+std::span<const ModelInfo> allModels() {
+  // The models of the test tree (tests/models/models.cmake) are registered in every build that builds the tests,
+  // the README's release build included; a user never sees them: they exist only where RAYLAB_TEST_MODELS=1 (the
+  // tests set it). They are registered after the library's models, so the library's are a prefix of the table.
+  static const std::span<const ModelInfo> visible = [] {
+    const std::vector<ModelInfo>& all = registeredModels();
+    const char* flag = std::getenv("RAYLAB_TEST_MODELS");
+    if (flag != nullptr && std::string_view(flag) == "1") return std::span<const ModelInfo>(all);
+    std::size_t library = 0;
+    while (library < all.size() && !all[library].glslFile.starts_with("tests/")) ++library;
+    for (std::size_t i = library; i < all.size(); ++i) {
+      if (!all[i].glslFile.starts_with("tests/")) throw std::logic_error("a library model registered after a test model");
+    }
+    return std::span<const ModelInfo>(all).first(library);
+  }();
+  return visible;
+}
 
 std::string modelNames() {
   std::string names;

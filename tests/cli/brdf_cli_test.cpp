@@ -79,6 +79,24 @@ TEST(BrdfCliTest, HelpDescribesTheSubcommands) {
   }
 }
 
+// The test tree's model (tests/models/minnaert.*) is registered in the README's build, which builds the tests, but
+// exists only for the tests (RAYLAB_TEST_MODELS=1): a user's `brdf models`, help, messages and scenes never see it.
+TEST(BrdfCliTest, TheTestTreesModelExistsOnlyForTheTests) {
+  const CommandResult tests = runRaylab({"brdf", "models"}, {"RAYLAB_TEST_MODELS=1"});
+  EXPECT_NE(tests.output.find("minnaert"), std::string::npos) << tests.output;
+  for (const std::vector<std::string>& command :
+       {std::vector<std::string>{"brdf", "models"}, {"brdf", "models", "--json"}, {"render", "--help"},
+        {"render", "--material", "phong=nosuchmodel", "--out", "never.exr"}}) {
+    const CommandResult user = runRaylab(command, {"RAYLAB_TEST_MODELS="});
+    EXPECT_NE(user.output.find(command[0] == "render" && command[1] == "--help" ? "--material" : "lambert"), std::string::npos) << user.output;
+    EXPECT_EQ(user.output.find("minnaert"), std::string::npos) << command[0] << " " << command[1] << "\n" << user.output;
+  }
+  const CommandResult render = runRaylab({"render", "--material", "phong=minnaert", "--width", "8", "--height", "8",
+                                          "--spp", "1", "--out", "never.exr"},
+                                         {"RAYLAB_TEST_MODELS="});
+  EXPECT_EQ(render.exitCode, 2) << render.output;
+}
+
 TEST(BrdfCliTest, UsageErrorsExitTwoAndNameTheProblem) {
   struct Case {
     std::vector<std::string> args;
