@@ -79,13 +79,13 @@ void closestHit(Hit hit, inout Payload p) {
     return;
   }
   applyTextures(material, s);
-  const ShadingSide side = shadingSide(s, wo, bsdfFlags(material));
+  const float delta = featureEnabled(kFeatureMirror) ? material.delta : 0.0;
+  const ShadingSide side = shadingSide(s, wo, bsdfFlags(material), delta);
   const vec3 ng = side.ng;
   const vec3 ns = side.ns;
   const ShadingFrame frame = side.frame;
 
   // Rough glass (two-sided) sees the lights on both sides of its surface.
-  const float delta = featureEnabled(kFeatureMirror) ? material.delta : 0.0;
   if (delta < 1.0) {
     p.path.radiance += p.path.throughput * (1.0 - delta) * directLighting(s.position, ng, frame, toLocal(frame, wo), material, p);
   }

@@ -80,7 +80,9 @@ void applyTextures(inout MaterialRecord material, inout Surface s) {
 // geometric surface, by min(0.9 cos, 0.01) of wo's own elevation (the condition of Blender Cycles'
 // ensure_valid_reflection, solved here by bisection on the blend towards ng): a map that tilts the normal
 // away from the viewer otherwise sends reflections into the surface, where they are refused and the
-// surface darkens at grazing angles. ng faces wo.
+// surface darkens at grazing angles. ng faces wo. Only a BSDF that reflects about the normal needs it (a glossy
+// or delta lobe, or the mirror weight): a diffuse one shades with the mapped normal as it is, as Cycles bends
+// the normal of its glossy closures only.
 vec3 validReflectionNormal(vec3 ns, vec3 ng, vec3 wo) {
   const float threshold = min(0.9 * dot(ng, wo), 0.01);
   if (dot(reflect(-wo, ns), ng) >= threshold) return ns;
@@ -104,14 +106,15 @@ struct ShadingSide {
   ShadingFrame frame;
 };
 
-ShadingSide shadingSide(Surface s, vec3 wo, uint flags) {
+ShadingSide shadingSide(Surface s, vec3 wo, uint flags, float delta) {
   ShadingSide side;
   const bool flip = !isTwoSided(flags) && !s.frontFace;
   side.ng = flip ? -s.geometricNormal : s.geometricNormal;
   side.ns = flip ? -s.shadingNormal : s.shadingNormal;
   // Interpolated normals can put the viewer on the other side of the shading normal near silhouettes; the true
   // surface cannot.
-  if (s.normalMapped && dot(side.ng, wo) > 0.0) side.ns = validReflectionNormal(side.ns, side.ng, wo);
+  const bool reflects = (flags & (kLobeGlossy | kLobeSpecular)) != 0u || delta > 0.0;
+  if (s.normalMapped && reflects && dot(side.ng, wo) > 0.0) side.ns = validReflectionNormal(side.ns, side.ng, wo);
   if (dot(side.ns, wo) * dot(side.ng, wo) <= 0.0) side.ns = side.ng;
   side.frame = makeShadingFrame(side.ns, s.tangent);
   return side;

@@ -83,12 +83,12 @@ void closestHitPath(Hit hit, inout Payload p) {
   }
   applyTextures(material, s);
   const uint flags = bsdfFlags(material);
-  const ShadingSide side = shadingSide(s, wo, flags);
+  const float delta = featureEnabled(kFeatureMirror) ? material.delta : 0.0;
+  const ShadingSide side = shadingSide(s, wo, flags, delta);
   const vec3 ng = side.ng;
   const vec3 ns = side.ns;
   const ShadingFrame frame = side.frame;
   const vec3 woLocal = toLocal(frame, wo);
-  const float delta = featureEnabled(kFeatureMirror) ? material.delta : 0.0;
 
   // Next event estimation: the (1 - delta) f_r part of the mixture sees the lights.
   if (delta < 1.0 && params.punctualLightCount > 0u) {
