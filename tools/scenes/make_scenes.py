@@ -97,6 +97,41 @@ def rounded(values, digits=6):
 # ----------------------------------------------------------------------------------------------- the writer
 
 
+# Each named metal's reflectance at normal incidence, from its eta and k (`raylab brdf models --json`, read by main):
+# the base colour glTF's metallic workflow gives a metal.
+METAL_F0 = {}
+
+
+def metal_presets(raylab):
+    """{name: F0 RGB} of ggx_conductor's named metals, as the raylab binary declares them."""
+    models = json.loads(subprocess.run([raylab, "brdf", "models", "--json"], check=True, capture_output=True,
+                                       text=True).stdout)
+    conductor = next(model for model in models if model["name"] == "ggx_conductor")
+    return {preset["name"]: [((n - 1) ** 2 + k * k) / ((n + 1) ** 2 + k * k)
+                             for n, k in zip(preset["values"]["eta"], preset["values"]["k"])]
+            for preset in conductor["presets"] if preset["key"] == "metal"}
+
+
+def fallback_pbr(raylab, preview):
+    """glTF's own pbrMetallicRoughness for viewers that do not read extras.raylab: a named metal is metallic with
+    its F0 as base colour, GGX models keep their roughness (glTF's alpha is roughness squared), glTF's BRDF its own
+    values, and diffuse models are rough dielectrics in the preview colour."""
+    model = raylab["model"]
+    base, metallic, roughness = list(preview), 0.0, 0.5
+    if model == "gltf_pbr":
+        base, metallic, roughness = raylab["base_color"], raylab["metallic"], raylab["roughness"]
+    elif model in ("ggx_conductor", "ggx_dielectric"):
+        roughness = math.sqrt(math.sqrt(raylab["alpha_x"] * raylab["alpha_y"]))
+        if model == "ggx_conductor":
+            metallic = 1.0
+            if "metal" in raylab:
+                base = METAL_F0[raylab["metal"]]
+    elif model in ("lambert", "oren_nayar", "eon"):
+        roughness = 1.0
+    return {"baseColorFactor": rounded(list(base)) + [1.0], "metallicFactor": metallic,
+            "roughnessFactor": rounded([roughness])[0]}
+
+
 class Gltf:
     """A glTF 2.0 document under construction, with one binary buffer written as a data URI."""
 
@@ -156,11 +191,11 @@ class Gltf:
         return len(self.doc["nodes"]) - 1
 
     def material(self, name, raylab, preview=None):
-        """A material whose raylab model is `raylab`; `preview` is the base colour other viewers show."""
+        """A material whose raylab model is `raylab`; `preview` is the base colour other viewers show, with the
+        metalness and roughness closest to the model's (fallback_pbr)."""
         material = {"name": name}
         if preview is not None:
-            material["pbrMetallicRoughness"] = {"baseColorFactor": rounded(list(preview)) + [1.0],
-                                                "metallicFactor": 0.0, "roughnessFactor": 0.5}
+            material["pbrMetallicRoughness"] = fallback_pbr(raylab, preview)
         material["extras"] = {"raylab": raylab}
         self.doc["materials"].append(material)
         return len(self.doc["materials"]) - 1
@@ -465,7 +500,10 @@ def showcase_modern():
             g.sphere(name, [(column - 1) * 0.8, small, 0.9 + 0.75 * row], small,
                      g.material(name, params, (0.9, 0.6, 0.2)))
     g.camera("camera", [0.0, 4.0, 8.0], [0.0, 0.2, -0.3], 36.0)
-    g.environment("environments/%s.exr" % SHOWCASE_HDRI)
+    # Half the sky's radiance: at full strength the sunlit floor and spheres clip (4.4% of the pixels) and the
+    # orange-red diffuse spheres read as cream; at half, a diffuse sphere's lit side shows its albedo and only the
+    # sun's reflections in the metals clip (0.7%).
+    g.environment("environments/%s.exr" % SHOWCASE_HDRI, strength=0.5)
     return g
 
 
@@ -588,6 +626,7 @@ def main():
             print("wrote %s (%d bytes)" % (os.path.relpath(path), os.path.getsize(path)))
         return
     os.makedirs(options.directory, exist_ok=True)
+    METAL_F0.update(metal_presets(options.raylab))
     sweeps = [sweep_scene(options.raylab, *sweep) for sweep in SWEEPS]
     for scene in sweeps + [showcase(), showcase_hdri(), showcase_modern(), cornell_box(), cornell_box_area(), minimal()]:
         path = scene.write(options.directory)
