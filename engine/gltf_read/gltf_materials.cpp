@@ -74,7 +74,6 @@ std::uint32_t wrapMode(int glMode, const std::string& where) {
               " is not 10497 (repeat), 33071 (clamp) or 33648 (mirror)");
 }
 
-// Base-colour textures as RGBA8, each glTF texture converted once however many materials use it.
 // A PNG's size from its IHDR chunk. stb_image refuses to report the size of a PNG past 2^30 bytes of pixels
 // ("too large"), which would otherwise read as "not a PNG"; the limits below then name the size instead.
 bool pngHeaderSize(const std::vector<unsigned char>& bytes, int& width, int& height) {
@@ -92,6 +91,32 @@ bool pngHeaderSize(const std::vector<unsigned char>& bytes, int& width, int& hei
   return true;
 }
 
+// What an image that is neither PNG nor JPEG is, when stb could decode it anyway ("a BMP image"); empty for a PNG, a
+// JPEG, and bytes stb cannot read either (those get stb's reason).
+std::string_view otherImageKind(const std::vector<unsigned char>& bytes) {
+  const auto starts = [&](std::string_view magic) {
+    return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin(),
+                                                      [](char a, unsigned char b) { return static_cast<unsigned char>(a) == b; });
+  };
+  if (starts("\x89PNG\r\n\x1a\n") || starts("\xff\xd8\xff")) return {};
+  if (starts("BM")) return "a BMP image";
+  if (starts("GIF8")) return "a GIF image";
+  if (starts("#?RADIANCE") || starts("#?RGBE")) return "a Radiance HDR image";
+  if (starts("8BPS")) return "a Photoshop image";
+  if (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '7') return "a PNM image";
+  int width = 0, height = 0, channels = 0;
+  const int size = static_cast<int>(std::min<std::size_t>(bytes.size(), INT32_MAX));
+  return stbi_info_from_memory(bytes.data(), size, &width, &height, &channels) ? "an image of another format (TGA?)"
+                                                                               : std::string_view();
+}
+
+// stb's reason for refusing an image, or a plain one where it gives none.
+std::string decodeFailure() {
+  const char* reason = stbi_failure_reason();
+  return reason != nullptr && *reason != '\0' ? std::string(reason) : std::string("damaged or unsupported data");
+}
+
+// Base-colour textures as RGBA8, each glTF texture converted once however many materials use it.
 class TextureConverter {
  public:
   TextureConverter(Document& document, Scene& scene) : document_(document), scene_(scene) {}
@@ -152,15 +177,27 @@ class TextureConverter {
     const int size = static_cast<int>(std::min<std::size_t>(image.image.size(), INT32_MAX));
     int width = 0, height = 0, channels = 0;
     if (image.image.empty()) {
-      // tinygltf only warns when an image's file cannot be read, and leaves it empty.
+      // tinygltf only warns when an image's file cannot be read, and leaves it empty: the folder rule, which the
+      // loader's file callbacks enforce, is named as it is for every other URI.
       const bool external = !image.uri.empty() && !tinygltf::IsDataURI(image.uri);
+      if (external) {
+        try {
+          resolveUri(image.uri, document_.baseDirectory, document_.uriPolicy);
+        } catch (const Error& error) {
+          document_.fail(where + ": " + error.what());
+        }
+      }
       document_.fail(where + (external ? ": its file is missing or unreadable (URIs resolve against the scene's folder)"
                                        : ": has no image data"));
     }
+    // glTF 2.0 images are PNG or JPEG (3.8.4.1); stb would also decode BMP, GIF, TGA, PPM and HDR, which other
+    // viewers refuse.
+    if (const std::string_view kind = otherImageKind(image.image); !kind.empty()) {
+      document_.fail(where + ": is " + std::string(kind) + ", not a PNG or JPEG image (glTF 2.0's two formats)");
+    }
     if (!stbi_info_from_memory(bytes, size, &width, &height, &channels) &&
         !pngHeaderSize(image.image, width, height)) {
-      document_.fail(where + ": is not a PNG or JPEG image raylab can read (" + std::string(stbi_failure_reason()) +
-                     ")");
+      document_.fail(where + ": is not a PNG or JPEG image raylab can read (" + decodeFailure() + ")");
     }
     const std::uint64_t texels = std::uint64_t(width) * std::uint64_t(height);
     if (texels > kMaxImageTexels || width > int(kMaxImageSide) || height > int(kMaxImageSide)) {
@@ -178,12 +215,12 @@ class TextureConverter {
     Texture texture;
     if (sixteen) {
       stbi_us* pixels = stbi_load_16_from_memory(bytes, size, &width, &height, &channels, 4);
-      if (pixels == nullptr) document_.fail(where + ": cannot be decoded (" + std::string(stbi_failure_reason()) + ")");
+      if (pixels == nullptr) document_.fail(where + ": cannot be decoded (" + decodeFailure() + ")");
       texture.rgba16.assign(pixels, pixels + texels * 4);
       stbi_image_free(pixels);
     } else {
       stbi_uc* pixels = stbi_load_from_memory(bytes, size, &width, &height, &channels, 4);
-      if (pixels == nullptr) document_.fail(where + ": cannot be decoded (" + std::string(stbi_failure_reason()) + ")");
+      if (pixels == nullptr) document_.fail(where + ": cannot be decoded (" + decodeFailure() + ")");
       texture.rgba.assign(pixels, pixels + texels * 4);
       stbi_image_free(pixels);
     }
@@ -405,7 +442,10 @@ void convertMaterials(Document& document, Scene& scene) {
     gpu::MaterialTextures uses = noMaterialTextures();
     // glTF 3.9.4: MASK cuts holes where alpha < alphaCutoff, BLEND is (here) stochastic transparency; alpha is
     // baseColorFactor's fourth value times the base-colour texture's alpha.
-    const std::string alphaMode = material.alphaMode.empty() ? "OPAQUE" : material.alphaMode;
+    // Absent means OPAQUE; present, it must be one of the three names ("" is not absent).
+    const std::string alphaMode = materialJson.contains("alphaMode") && materialJson["alphaMode"].is_string()
+                                      ? materialJson["alphaMode"].get<std::string>()
+                                      : "OPAQUE";
     if (alphaMode == "MASK" || alphaMode == "BLEND") {
       uses.alphaMode = alphaMode == "MASK" ? gpu::kAlphaMask : gpu::kAlphaBlend;
       uses.alpha = checkedFactor(pbr.baseColorFactor[3], 0.0, 1.0, where, "baseColorFactor[3]");

@@ -59,6 +59,22 @@ TEST(TextureCli, BadTexturesExitOneNamingTheMaterialAndTextureAndWriteNothing) {
     masked.doc()["materials"][0]["alphaCutoff"] = cutoff;
     cases.push_back({"bad alphaCutoff", masked, "material 0 'panel': alphaCutoff"});
   }
+  // glTF's images are PNG and JPEG: a BMP (which stb would decode) is refused by what it is; an image outside the
+  // scene's folder by the folder rule, as every other URI; a PNG whose data is damaged with stb's reason.
+  std::ofstream(dir / "picture.bmp", std::ios::binary) << std::string("BM\x46\0\0\0\0\0\0\0\x36\0\0\0", 14)
+                                                        << std::string(56, '\0');
+  cases.push_back({"BMP image", texturedQuad("picture.bmp", {"pbrMetallicRoughness", "baseColorTexture"}),
+                   "image 0 ('picture.bmp'): is a BMP image, not a PNG or JPEG image"});
+  fs::create_directories(dir.parent_path() / "elsewhere");
+  std::ofstream(dir.parent_path() / "elsewhere" / "outside.png") << "whatever";
+  cases.push_back({"image outside the folder",
+                   texturedQuad("../elsewhere/outside.png", {"pbrMetallicRoughness", "baseColorTexture"}),
+                   "outside"});
+  std::string damaged = pngHeader(4, 4);
+  damaged += std::string(40, '\x7f');
+  std::ofstream(dir / "damaged.png", std::ios::binary) << damaged;
+  cases.push_back({"damaged PNG", texturedQuad("damaged.png", {"pbrMetallicRoughness", "baseColorTexture"}),
+                   "image 0 ('damaged.png'): cannot be decoded ("});
   const std::string out = (dir / "image.exr").string(), png = (dir / "image.png").string();
   for (const Case& c : cases) {
     fs::remove(out);
@@ -69,6 +85,11 @@ TEST(TextureCli, BadTexturesExitOneNamingTheMaterialAndTextureAndWriteNothing) {
                                             "--width", "16", "--height", "16"});
     EXPECT_EQ(result.exitCode, 1) << c.name << ": " << result.output;
     EXPECT_NE(result.output.find(c.mentions), std::string::npos) << c.name << ": " << result.output;
+    EXPECT_EQ(result.output.find("()"), std::string::npos) << c.name << ": an empty reason\n" << result.output;
+    EXPECT_EQ(result.output.find("missing or unreadable"), c.name == std::string("image outside the folder")
+                                                               ? std::string::npos
+                                                               : result.output.find("missing or unreadable"))
+        << c.name << ": " << result.output;
     EXPECT_FALSE(fs::exists(out)) << c.name;
     EXPECT_FALSE(fs::exists(png)) << c.name;
   }

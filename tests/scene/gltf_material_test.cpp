@@ -414,7 +414,8 @@ TEST(GltfMaterial, AlphaModesAreReadAndBadOnesRefused) {
 
   for (const auto& [property, value, expected] :
        {std::tuple<const char*, json, const char*>{"alphaCutoff", -0.5, "alphaCutoff = -0.5"},
-        {"alphaMode", "CUTOUT", "alphaMode \"CUTOUT\" is not OPAQUE, MASK or BLEND"}}) {
+        {"alphaMode", "CUTOUT", "alphaMode \"CUTOUT\" is not OPAQUE, MASK or BLEND"},
+        {"alphaMode", "", "alphaMode \"\" is not OPAQUE, MASK or BLEND"}}) {
     GltfBuilder bad = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
     bad.doc()["materials"][0]["alphaMode"] = "MASK";
     bad.doc()["materials"][0][property] = value;
