@@ -240,14 +240,15 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
   // the width's range (of `starts` strata): a wide lobe that fits the floor can outscore every narrow one whose other
   // parameters the search drew badly (a glossy phenolic's highlight under gltf_pbr), and Levenberg-Marquardt does
   // not grow a lobe from nothing.
+  // The best distinct points come from the box's hypercube alone; the grey one is added below: the grey draws crowd
+  // the low indices that score well on a coarse slice of a metal, and a gold's own, non-grey basin was lost.
   for (const Scored& candidate : scored) {
     if (int(chosen.size()) == starts) break;
-    if (distinct(candidate)) chosen.push_back(candidate);
+    if (!candidate.grey && distinct(candidate)) chosen.push_back(candidate);
   }
-  // The best grey point, unless a grey point is among them: its channels are the ones Levenberg-Marquardt cannot
-  // move one at a time out of a wrong basin (a plastic's blue channel fitted as a perfect mirror, eta 0.01, k 20).
-  if (!plan.nonlinearColours.empty() &&
-      std::none_of(chosen.begin(), chosen.end(), [](const Scored& c) { return c.grey; })) {
+  // And the best grey point: its channels start in one basin together, which Levenberg-Marquardt, moving them one
+  // at a time, does not reach from a wrong one (a plastic's blue channel fitted as a perfect mirror, eta 0.01, k 20).
+  if (!plan.nonlinearColours.empty()) {
     for (const Scored& candidate : scored) {
       if (candidate.grey && distinct(candidate)) {
         chosen.push_back(candidate);
@@ -262,9 +263,11 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
       return plan.narrowIsLow ? k : starts - 1 - k;  // 0: the narrowest
     };
     int narrowest = starts;
-    for (const Scored& c : chosen) narrowest = std::min(narrowest, stratum(c));
+    for (const Scored& c : chosen) {
+      if (!c.grey) narrowest = std::min(narrowest, stratum(c));
+    }
     for (const Scored& candidate : scored) {
-      if (narrowest > 0 && stratum(candidate) == 0 && distinct(candidate)) {
+      if (narrowest > 0 && !candidate.grey && stratum(candidate) == 0 && distinct(candidate)) {
         chosen.push_back(candidate);
         break;
       }
