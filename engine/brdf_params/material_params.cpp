@@ -291,7 +291,12 @@ void applyParamList(gpu::MaterialRecord& record, std::string_view text, const st
     if (entry.empty()) continue;  // "" (all defaults) and a trailing separator
     const std::size_t equals = entry.find('=');
     if (equals == std::string_view::npos) {
-      throw Error(where + ": expected name=value, got '" + std::string(entry) + "'");
+      // ',' and ';' separate the entries, so a file's path cannot hold them: say so where that is the likely cause.
+      const bool afterFile = !numbers.empty() && isFileParam(*findParam(model, numbers.back().first));
+      throw Error(where + ": expected name=value, got '" + std::string(entry) + "'" +
+                  (afterFile ? " (a path given as file=... cannot contain ',' or ';', which separate the parameters: "
+                               "rename the file or link it under a name without them)"
+                             : ""));
     }
     const std::string name(trimmed(entry.substr(0, equals)));
     const std::string_view valueText = trimmed(entry.substr(equals + 1));

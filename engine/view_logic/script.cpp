@@ -13,6 +13,7 @@
 #include "util/error.h"
 #include "util/render_options.h"
 #include "util/files.h"
+#include "util/number_text.h"
 #include "view_logic/compare_spec.h"
 #include "view_logic/scene_edits.h"
 
@@ -142,7 +143,12 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
   } else if (action == "pick") {
     expectWords(words, 5, where, "at <frame> pick <x> <y>");
     event.action = ScriptAction::kPick;
-    event.value = glm::vec3(float(parseCount(words[3], where, "x")), float(parseCount(words[4], where, "y")), 0.0f);
+    // Pixel coordinates stay exact in the event's floats: a window is at most 2^24 pixels a side.
+    const std::uint32_t x = parseCount(words[3], where, "x"), y = parseCount(words[4], where, "y");
+    if (x >= (1u << 24) || y >= (1u << 24)) {
+      throw Error(where + ": pick " + words[3] + " " + words[4] + " lies outside any window (pixels are below 2^24)");
+    }
+    event.value = glm::vec3(float(x), float(y), 0.0f);
     event.valueCount = 2;
   } else if (action == "save") {
     if (words.size() != 5 || words[3] != "lobe") throw Error(where + ": expected 'at <frame> save lobe <file.csv>'");
@@ -166,8 +172,10 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
       const std::string& first = words[6];
       const bool numeric = std::from_chars(first.data(), first.data() + first.size(), number).ptr == first.data() + first.size();
       if (words.size() == 7 && !numeric) {
-        // A file parameter's path (`set material ball file gold.binary`), relative to the script's folder.
+        // A file parameter's path (`set material ball file gold.binary`), relative to the script's folder, or a
+        // preset's name (`set material ball metal Au`): which one, the material's model decides (applyToScene).
         event.path = scriptRelative(first, scriptFolder);
+        event.word = first;
       } else {
         readValues(event, words, 6, "a parameter value");
       }
@@ -201,6 +209,10 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
       expectWords(words, 5, where, "at <frame> set exposure <stops>");
       event.action = ScriptAction::kSetExposure;
       readValues(event, words, 4, "the exposure");
+      if (!(std::abs(event.value.x) <= kMaxExposureStops)) {
+        throw Error(where + ": the exposure is " + words[4] + " stops; it is within [-" +
+                    numberText(kMaxExposureStops) + ", " + numberText(kMaxExposureStops) + "], as --exposure");
+      }
     } else if (what == "max-depth") {
       expectWords(words, 5, where, "at <frame> set max-depth <bounces>");
       event.action = ScriptAction::kSetMaxDepth;
@@ -291,6 +303,9 @@ SceneEffect applyToScene(const ScriptEvent& event, Scene& scene) {
         if (file != nullptr && !event.path.empty()) setFileParam(switched, file->name, event.path, event.where);
         checkFileParams(switched, event.where + " (name its file: model " + event.name + " " + event.param + " FILE)");
         material->record = switched;
+      } else if (isPresetKey(modelInfo(material->record.model), event.param) && !event.word.empty()) {
+        // Named presets, as everywhere else a material is given (metal=Au, "metal": "Au", metal="Au").
+        applyPreset(material->record, event.param, event.word, event.where);
       } else {
         const ParamInfo* param = findParam(modelInfo(material->record.model), event.param);
         // setParam's error lists the parameters the model has.

@@ -71,6 +71,7 @@ struct ScriptEvent {
   glm::vec3 value{0.0f};  // numbers of the event; a single number for a scalar parameter is in x
   int valueCount = 0;
   std::string path;       // kSetMaterial of a file parameter (measured's file): the file, relative to the script's folder
+  std::string word;       // kSetMaterial of one word that is not a number, as written: a preset's name (metal Au)
 };
 
 // Parses `text` (read from `path`, which errors name with the line). Events come out sorted by frame, file

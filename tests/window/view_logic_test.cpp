@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "brdf_params/material_params.h"
 #include "scene/gltf_test_support.h"
 #include "scene/scene.h"
 #include "util/error.h"
@@ -304,6 +305,10 @@ TEST(ScriptTest, ErrorsNameTheFileAndLine) {
       {"at 1 set environment strength -1", ">= 0"},
       {"at 1 set environment exposure 1", "strength and rotation"},
       {"at 1 set environment rotation nan", "number"},
+      {"at 1 set exposure 1e30", "within [-20, 20]"},
+      {"at 1 set exposure -21", "within [-20, 20]"},
+      {"at 1 pick 4294967295 2", "outside any window"},
+      {"at 1 pick 4294967296 2", "whole number"},
   };
   for (const auto& [line, mentions] : cases) {
     try {
@@ -372,6 +377,16 @@ TEST(ScriptTest, CheckFollowsModelSwitchesAndNamesTheLine) {
   expectError("at 1 model ball velvet\n", "unknown model 'velvet'");
   expectError("at 1 set light sun intensity 1 1 1\n", "no light 'sun'");
   expectError("at 1\nat 2 set material plate rho_d 0.5\n", "b:1");
+  // Named metals, as --material ball=ggx_conductor:metal=Au and extras' "metal": "Au" take them.
+  Scene metal = scene;
+  const std::vector<ScriptEvent> events = parseScript("at 1 model ball ggx_conductor\nat 2 set material ball metal Au\n", "c");
+  checkScript(events, metal);
+  for (const ScriptEvent& event : events) applyToScene(event, metal);
+  gpu::MaterialRecord gold = defaultRecord(modelId("ggx_conductor"));
+  applyPreset(gold, "metal", "Au", "test");
+  EXPECT_EQ(getParam(metal.materials[0].record, "eta"), getParam(gold, "eta"));
+  EXPECT_EQ(getParam(metal.materials[0].record, "k"), getParam(gold, "k"));
+  expectError("at 1 model ball ggx_conductor\nat 2 set material ball metal Unobtainium\n", "Unobtainium");
 }
 
 // One bound on what emits light, checked before the window opens: a strength that would make strength x the

@@ -87,9 +87,10 @@ int fit(const FitCommandOptions& o) {
   // One line per finished start on a log, redrawn on a terminal: starts done, elapsed, ETA.
   options.progress = [&](int done, int total, const std::string& model, double seconds) {
     const double elapsed = clock.seconds();
-    std::fprintf(stderr, "%s: %d/%d steps, %s in %s, elapsed %s, ETA %s\n", kCommand, done, total, model.c_str(),
-                 formatSeconds(seconds).c_str(), formatSeconds(elapsed).c_str(),
-                 formatSeconds(elapsed / done * (total - done)).c_str());
+    // The last step says it is the last rather than "ETA 0 us".
+    const std::string eta = done < total ? "ETA " + formatSeconds(elapsed / done * (total - done)) : "done";
+    std::fprintf(stderr, "%s: %d/%d steps, %s in %s, elapsed %s, %s\n", kCommand, done, total, model.c_str(),
+                 formatSeconds(seconds).c_str(), formatSeconds(elapsed).c_str(), eta.c_str());
   };
   const std::vector<FitResult> fits = fitModels(target, options);
 

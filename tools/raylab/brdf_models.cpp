@@ -11,6 +11,7 @@
 #include "command_line/cli.h"
 #include "shared/brdf_lobes.h"
 #include "util/error.h"
+#include "util/number_text.h"
 
 namespace raylab {
 
@@ -28,6 +29,10 @@ std::string lobeNames(std::uint32_t lobes) {
 }
 
 nlohmann::ordered_json paramJson(const ParamInfo& p) {
+  // A file parameter holds a loaded file's id inside raylab; its users give a path (type "file", no range).
+  if (isFileParam(p)) {
+    return {{"name", p.name}, {"type", "file"}, {"role", p.role}, {"meaning", p.meaning}};
+  }
   return {{"name", p.name},       {"type", p.rgb ? "rgb" : "scalar"}, {"min", p.min},
           {"max", p.max},         {"default", p.defaultValue},        {"scale", p.logScale ? "log" : "linear"},
           {"role", p.role},       {"meaning", p.meaning}};
@@ -62,8 +67,13 @@ int listModels(bool json) {
     std::printf("%s  (%s; %s)\n", std::string(model.name).c_str(), lobeNames(model.lobes).c_str(),
                 std::string(model.glslFile).c_str());
     for (const ParamInfo& p : model.params) {
-      std::printf("  %-8s %-3s [%g, %g] default %g%s  %s\n", std::string(p.name).c_str(), p.rgb ? "rgb" : "",
-                  p.min, p.max, p.defaultValue, p.logScale ? ", log scale" : "", std::string(p.meaning).c_str());
+      if (isFileParam(p)) {
+        std::printf("  %-8s     PATH of a file  %s\n", std::string(p.name).c_str(), std::string(p.meaning).c_str());
+        continue;
+      }
+      std::printf("  %-8s %-3s [%s, %s] default %s%s  %s\n", std::string(p.name).c_str(), p.rgb ? "rgb" : "",
+                  numberText(p.min).c_str(), numberText(p.max).c_str(), numberText(p.defaultValue).c_str(),
+                  p.logScale ? ", log scale" : "", std::string(p.meaning).c_str());
     }
     std::string presets;
     for (const Preset& preset : model.presets) {
@@ -72,8 +82,9 @@ int listModels(bool json) {
     if (!presets.empty()) std::printf("  presets: %s\n", presets.c_str());
   }
   const ParamInfo& delta = deltaParam();
-  std::printf("every model also has %s [%g, %g] default %g: the %s\n", std::string(delta.name).c_str(), delta.min,
-              delta.max, delta.defaultValue, std::string(delta.meaning).c_str());
+  std::printf("every model also has %s [%s, %s] default %s: the %s\n", std::string(delta.name).c_str(),
+              numberText(delta.min).c_str(), numberText(delta.max).c_str(), numberText(delta.defaultValue).c_str(),
+              std::string(delta.meaning).c_str());
   return kExitOk;
 }
 
@@ -86,7 +97,8 @@ void addBrdfModelsCommand(CLI::App& brdf) {
       "list the BRDF models and their parameters (names, ranges, defaults, roles)\n"
       "Lists every model of the registry (shaders/brdf/models.cmake) with its lobes and parameters, as text or, "
       "with --json, as an array of {name, lobes, delta_only, params: [{name, type, min, max, default, scale, role, "
-      "meaning}], sweep_base, presets: [{key, name, values}], glsl, reference} for scripts. docs/extending.md says how a model is added.",
+      "meaning}] (a file parameter: {name, type \"file\", role, meaning}, no range), sweep_base, presets: [{key, name, "
+      "values}], glsl, reference} for scripts. docs/extending.md says how a model is added.",
       [json] { return listModels(*json); });
   addFlag(command, "--json", *json, "print JSON instead of text");
 }
