@@ -96,6 +96,10 @@ def scene_file(work: Path) -> Path:
     return Path(g.write(str(work)))
 
 
+# The difference maps' full scale, in linear luminance (the target's renders peak near 1).
+DIFFERENCE_SCALE = 0.25
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
@@ -135,9 +139,15 @@ def main() -> None:
         ax.set_title(labels[i], fontsize=8)
         if i > 0:
             ax = figure.add_axes([i / columns, 0.44, 1.0 / columns, 0.24])
-            ax.imshow(np.clip(4.0 * np.abs(luminance[i] - luminance[0]), 0.0, 1.0), cmap="magma", vmin=0, vmax=1)
+            difference = ax.imshow(np.abs(luminance[i] - luminance[0]), cmap="magma", vmin=0.0, vmax=DIFFERENCE_SCALE)
             ax.axis("off")
-            ax.text(0.5, -0.05, "|fit - target| x4", transform=ax.transAxes, ha="center", va="top", fontsize=7)
+            ax.text(0.5, -0.05, "|fit - target|", transform=ax.transAxes, ha="center", va="top", fontsize=7)
+    if columns > 1:
+        # The difference maps' scale, in the target column's free space: linear luminance, clipped at its top.
+        bar = figure.add_axes([0.3 / columns, 0.46, 0.12 / columns, 0.20])
+        figure.colorbar(difference, cax=bar, extend="max")
+        bar.tick_params(labelsize=6)
+        bar.set_title("|Δ| luminance", fontsize=7)
     for a, theta_i in enumerate(INCIDENCE):
         ax = figure.add_axes([0.05 + a * 0.24, 0.06, 0.2, 0.3])
         for m in range(columns):
