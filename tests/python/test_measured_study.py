@@ -143,18 +143,27 @@ def test_fit_arguments_are_checked_as_the_command_line_checks_them(work):
     assert error < 1e-7 and relative < 1e-6  # the record holds floats
 
 
-# The basin check (tools/fit_basins.py, docs/fitting.md) that issue 35's criterion is measured with: on the blue
-# acrylic, the conductor's default fit must reach raylab's own 64-start search (before the grey search it stopped
-# at 1.26x, one channel a mirror under a blue plastic), and the table and JSON say so.
+# The basin check (tools/fit_basins.py, docs/fitting.md) that issue 35's criterion is measured with runs and says
+# whether each default fit is within 1% of its 64-start reference (Lambert and Cook-Torrance: a few seconds).
 @needs_data
-def test_the_basin_check_finds_the_conductor_in_its_basin(work, capsys):
+def test_the_basin_check_runs_and_reports_each_fit(work, capsys):
     import fit_basins  # noqa: E402
     out = work / "basins.json"
-    assert fit_basins.main(["--slices", str(SLICES), "--materials", "blue-acrylic", "--models", "ggx_conductor,lambert",
+    assert fit_basins.main(["--slices", str(SLICES), "--materials", "blue-acrylic", "--models", "lambert,cooktorrance",
                             "--reference", "search64", "--processes", "2", "--out", str(out)]) == 0
     records = {r["model"]: r for r in json.loads(out.read_text())}
-    assert set(records) == {"ggx_conductor", "lambert"}
+    assert set(records) == {"lambert", "cooktorrance"}
     for r in records.values():
         assert r["within"], r
         assert "multistart" not in r, "--reference search64 runs the search alone"
     assert "1/1" in capsys.readouterr().out
+
+
+# The conductor in its basin on the blue acrylic: before the grey search its default fit stopped at 0.521, one
+# channel a mirror under a blue plastic; the best of a 64-start search is 0.41447 (tools/fit_basins.py, both
+# references), and the default fit must come within 1% of it.
+@needs_data
+def test_the_conductor_fit_of_a_plastic_reaches_its_basin():
+    raylab = md.import_raylab()
+    fit = raylab.brdf.fit(SLICES / "blue-acrylic.slice", models=["ggx_conductor"], metric="log")[0]
+    assert fit["relative_error"] <= 0.41447 * 1.01, fit["param_list"]
