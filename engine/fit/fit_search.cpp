@@ -185,10 +185,11 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
         const Variable& v = plan.variables[j];
         x[j] = v.lo + (v.hi - v.lo) * (strata[j][std::size_t(p)] + uniform(random)) / count;
       }
+      // A grey colour is drawn densest near its lower bound (u^2), where the dielectrics' indices lie (eta 1-2 and
+      // k = 0 among a conductor's eta in [0.01, 10] and k in [0, 20]): uniform draws leave a plastic's basin about
+      // one point in 128.
       for (const std::array<int, 3>& colour : plan.nonlinearColours) {
-        if (!grey) continue;
-        // Drawn densest near the lower bound (u^2), where the dielectrics' indices lie (eta 1-2 and k = 0 among a
-        // conductor's eta in [0.01, 10] and k in [0, 20]): uniform draws leave a plastic's basin ~1 point in 128.
+        if (!grey) break;
         const Variable& v = plan.variables[std::size_t(colour[0])];
         const double u = (x[std::size_t(colour[0])] - v.lo) / (v.hi - v.lo);
         for (int c = 0; c < 3; ++c) x[std::size_t(colour[std::size_t(c)])] = v.lo + (v.hi - v.lo) * u * u;
@@ -236,10 +237,6 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
     }
     return true;
   };
-  // The best distinct points; then, unless one of them has it already, the best point in the narrowest quarter of
-  // the width's range (of `starts` strata): a wide lobe that fits the floor can outscore every narrow one whose other
-  // parameters the search drew badly (a glossy phenolic's highlight under gltf_pbr), and Levenberg-Marquardt does
-  // not grow a lobe from nothing.
   // The best distinct points come from the box's hypercube alone; the grey one is added below: the grey draws crowd
   // the low indices that score well on a coarse slice of a metal, and a gold's own, non-grey basin was lost.
   for (const Scored& candidate : scored) {
@@ -256,6 +253,10 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
       }
     }
   }
+  // Then, unless one of the hypercube's starts has it already, the best point in the narrowest quarter of
+  // the width's range (of `starts` strata): a wide lobe that fits the floor can outscore every narrow one whose other
+  // parameters the search drew badly (a glossy phenolic's highlight under gltf_pbr), and Levenberg-Marquardt does
+  // not grow a lobe from nothing.
   if (plan.width >= 0 && !chosen.empty()) {
     const Variable& v = plan.variables[std::size_t(plan.width)];
     const auto stratum = [&](const Scored& s) {
