@@ -23,6 +23,8 @@ constexpr int kThetaDStep = 6;
 constexpr int kPhiDStep = 12;
 // A CSV of samples is read whole: at most this many bytes (about 10 million samples).
 constexpr std::uint64_t kMaxSampleFileBytes = std::uint64_t(1) << 30;
+// The samples a CSV target may hold (docs/fitting.md): about 0.5 GiB of solver memory per thread at the cap.
+constexpr std::size_t kMaxFitPairs = 1000000;
 
 void normaliseWeights(std::vector<FitPair>& pairs) {
   double total = 0.0;
@@ -189,6 +191,14 @@ FitTarget parseFitCsv(std::string_view text, const std::string& path) {
     if (fields == 10) {
       if (v[9] < 0.0) throw Error(where + ": the weight is negative", kExitUsage);
       pair.weight = v[9];
+    }
+    if (target.pairs.size() == kMaxFitPairs) {
+      // Refused at the first sample over, before more is parsed: each fitting thread holds a Jacobian of 3 rows per
+      // pair (a million pairs of a ten-parameter model: 0.5 GiB), and a 1 GiB CSV holds ten million.
+      throw Error(where + ": more than " + std::to_string(kMaxFitPairs) +
+                      " samples; raylab fits at most that many (docs/fitting.md): subsample the file, weighting each "
+                      "kept sample by what it stands for",
+                  kExitUsage);
     }
     target.pairs.push_back(pair);
   }

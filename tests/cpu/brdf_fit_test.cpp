@@ -142,6 +142,16 @@ TEST(BrdfFit, BadTargetsAreRefusedNamingTheFileAndLine) {
   const FitTarget target = loadFitTarget("lambert");
   EXPECT_NE(errorOf([&] { fitModels(target, options({"glass"})); }).find("is not a model that can be fitted"), std::string::npos);
   EXPECT_NE(errorOf([&] { fitModels(target, options({"ward", "ward"})); }).find("twice"), std::string::npos);
+  // A million samples is the cap (each thread's Jacobian has 3 rows per sample): the next one is refused, naming
+  // its line, before anything is fitted.
+  std::string many = "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,f_r,f_g,f_b\n";
+  const std::string row = "0,0,1,0,0,1,0.1,0.1,0.1\n";
+  many.reserve(many.size() + row.size() * 1000001);
+  for (int i = 0; i < 1000000; ++i) many += row;
+  EXPECT_EQ(parseFitCsv(many, "many.csv").pairs.size(), 1000000u);
+  many += row;
+  const std::string refused = errorOf([&] { parseFitCsv(many, "many.csv"); });
+  EXPECT_NE(refused.find("many.csv:1000002: more than 1000000 samples"), std::string::npos) << refused;
 }
 
 }  // namespace
