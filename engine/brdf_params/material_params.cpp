@@ -14,8 +14,8 @@
 #include "measured/measured_library.h"
 #include "shared/brdf_lobes.h"
 #include "util/error.h"
-#include "util/number_text.h"
 #include "util/files.h"
+#include "util/number_text.h"
 
 namespace raylab {
 

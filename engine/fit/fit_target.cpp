@@ -13,6 +13,7 @@
 #include "scene/radiance_limits.h"
 #include "util/error.h"
 #include "util/files.h"
+#include "util/number_text.h"
 
 namespace raylab {
 
@@ -186,7 +187,8 @@ FitTarget parseFitCsv(std::string_view text, const std::string& path) {
     if (pair.f.x < 0.0 || pair.f.y < 0.0 || pair.f.z < 0.0) throw Error(where + ": f is negative", kExitUsage);
     // f is bounded as radiance is (scene/radiance_limits.h), as a MERL file's samples are.
     if (std::max({pair.f.x, pair.f.y, pair.f.z}) > double(kMaxRadiance)) {
-      throw Error(where + ": f above 1e+20 /sr, the bound raylab keeps radiance within", kExitUsage);
+      throw Error(where + ": f above " + numberText(kMaxRadiance) + " /sr, the bound raylab keeps radiance within",
+                  kExitUsage);
     }
     if (fields == 10) {
       if (v[9] < 0.0) throw Error(where + ": the weight is negative", kExitUsage);

@@ -6,6 +6,7 @@
 #include "scene/radiance_limits.h"
 #include "util/error.h"
 #include "util/files.h"
+#include "util/number_text.h"
 
 namespace raylab {
 
@@ -53,8 +54,9 @@ MerlSlice decodeMerlSlice(const std::string& bytes, const std::string& where) {
       const std::size_t sample = i / 3;
       throw Error(where + ": the value at theta_d row " + std::to_string(sample / kSliceThetaH) + ", theta_h column " +
                   std::to_string(sample % kSliceThetaH) + ", " + kChannels[i % 3] + " is " +
-                  (std::isnan(v) ? "NaN" : std::isinf(v) ? (v > 0 ? "inf" : "-inf") : v < 0.0f ? "negative" : "above 1e+20") +
-                  "; a slice holds finite f >= 0, at most 1e+20 /sr (the bound on radiance)", kExitUsage);
+                  (std::isnan(v) ? "NaN" : std::isinf(v) ? (v > 0 ? "inf" : "-inf") : v < 0.0f ? "negative" : "above " + numberText(kMaxRadiance)) +
+                  "; a slice holds finite f >= 0, at most " + numberText(kMaxRadiance) + " /sr (the bound on radiance)",
+                  kExitUsage);
     }
     anyPositive |= v > 0.0f;
   }

@@ -10,6 +10,7 @@
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/files.h"
+#include "util/number_text.h"
 
 namespace raylab {
 
@@ -68,10 +69,10 @@ MerlTable decodeMerl(const std::string& bytes, const std::string& where) {
     if (table.stored[i] * kMerlScale[i / kMerlSamples] > double(kMaxRadiance) && huge++ == 0) first = i;
   }
   if (huge > 0) {
-    char value[64];
+    char value[64];  // nine digits: the scaled double, not its shortest form
     std::snprintf(value, sizeof value, "%.9g", table.stored[first] * kMerlScale[first / kMerlSamples]);
-    throw Error(where + ": " + std::to_string(huge) + (huge == 1 ? " sample has" : " samples have") +
-                " f above 1e+20 /sr (the bound raylab keeps radiance within), the first at channel " +
+    throw Error(where + ": " + std::to_string(huge) + (huge == 1 ? " sample has" : " samples have") + " f above " +
+                numberText(kMaxRadiance) + " /sr (the bound raylab keeps radiance within), the first at channel " +
                 std::to_string(first / kMerlSamples) + " index " + std::to_string(first % kMerlSamples) + ": " + value);
   }
   for (std::size_t i = 0; i < kMerlSamples; ++i) {

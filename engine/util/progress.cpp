@@ -17,22 +17,20 @@ void ProgressLine::update(std::uint64_t done, std::uint64_t raysSoFar) {
   lastPrint_ = elapsed;
   const double steady = elapsed - warmupSeconds_;
   const double raysPerSecond = steady > 0.0 ? static_cast<double>(raysSoFar - warmupRays_) / steady : 0.0;
-  std::fprintf(stream_, "%s%s %llu/%llu %s  %s  %s%s", interactive_ ? "\r" : "", label_.c_str(),
-               static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_), unit_.c_str(),
-               formatSeconds(elapsed).c_str(), formatCount(raysPerSecond, "rays/s").c_str(),
-               interactive_ ? "\x1b[K" : "\n");
-  std::fflush(stream_);
-  printedAny_ = true;
+  print(done, elapsed, formatCount(raysPerSecond, "rays/s"));
 }
 
 void ProgressLine::warmedUp(std::uint64_t done, std::uint64_t raysSoFar) {
   warmupSeconds_ = clock_.seconds();
   warmupRays_ = raysSoFar;
   lastPrint_ = warmupSeconds_;
-  std::fprintf(stream_, "%s%s %llu/%llu %s  %s  (first sample: kernel compilation included)%s",
-               interactive_ ? "\r" : "", label_.c_str(), static_cast<unsigned long long>(done),
-               static_cast<unsigned long long>(total_), unit_.c_str(), formatSeconds(warmupSeconds_).c_str(),
-               interactive_ ? "\x1b[K" : "\n");
+  print(done, warmupSeconds_, "(first sample: kernel compilation included)");
+}
+
+void ProgressLine::print(std::uint64_t done, double elapsed, const std::string& tail) {
+  std::fprintf(stream_, "%s%s %llu/%llu %s  %s  %s%s", interactive_ ? "\r" : "", label_.c_str(),
+               static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_), unit_.c_str(),
+               formatSeconds(elapsed).c_str(), tail.c_str(), interactive_ ? "\x1b[K" : "\n");
   std::fflush(stream_);
   printedAny_ = true;
 }

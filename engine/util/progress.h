@@ -21,6 +21,9 @@ class ProgressLine {
   void finish();
 
  private:
+  // One line: "LABEL done/total UNIT  ELAPSED  tail", redrawn in place on a terminal.
+  void print(std::uint64_t done, double elapsed, const std::string& tail);
+
   std::string label_;
   std::uint64_t total_;
   std::string unit_;
