@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace raylab::fitting {
 
@@ -143,6 +144,49 @@ std::vector<double> boxLeastSquares(const std::vector<double>& A, const std::vec
     }
   }
   return best;
+}
+
+std::optional<std::vector<double>> channelSearch(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric,
+                                                 const std::vector<double>& x) {
+  if (plan.nonlinearColours.empty()) return std::nullopt;
+  std::vector<const FitPair*> pairs;
+  for (const FitPair& pair : coarse.pairs) pairs.push_back(&pair);
+  // A grid of about kChannelPoints points per channel over the nonlinear colours' values, each axis drawn densest near
+  // its lower bound as in the grey search (u^2): 12 x 12 for a conductor's eta and k.
+  constexpr int kChannelPoints = 144;
+  const int axes = int(plan.nonlinearColours.size());
+  const int perAxis = std::max(2, int(std::lround(std::pow(double(kChannelPoints), 1.0 / axes))));
+  int points = 1;
+  for (int a = 0; a < axes; ++a) points *= perAxis;
+  std::vector<double> repaired = x;
+  for (int c = 0; c < 3; ++c) {
+    double bestCost = INFINITY;
+    std::vector<double> bestValues;
+    for (int point = 0; point < points; ++point) {
+      std::vector<double> trial = repaired;
+      std::vector<double> values;
+      int code = point;
+      for (const std::array<int, 3>& colour : plan.nonlinearColours) {
+        const Variable& v = plan.variables[std::size_t(colour[std::size_t(c)])];
+        const double u = ((code % perAxis) + 0.5) / perAxis;
+        code /= perAxis;
+        values.push_back(v.lo + (v.hi - v.lo) * u * u);
+        trial[std::size_t(colour[std::size_t(c)])] = values.back();
+      }
+      // The other channels are held, so the cost ranks this channel's points (f's channels are separate).
+      double cost = 0.0;
+      for (const std::vector<int>& block : plan.blocks) cost = solveBlock(pairs, plan, block, metric, trial);
+      if (cost < bestCost) {
+        bestCost = cost;
+        bestValues = values;
+      }
+    }
+    for (std::size_t a = 0; a < bestValues.size(); ++a) {
+      repaired[std::size_t(plan.nonlinearColours[a][std::size_t(c)])] = bestValues[a];
+    }
+  }
+  for (const std::vector<int>& block : plan.blocks) solveBlock(pairs, plan, block, metric, repaired);
+  return repaired;
 }
 
 // The pairs the search and the first LM solves use: every k-th of the target's, about kSearchPairs.

@@ -4,6 +4,7 @@
 // engine/fit.
 #pragma once
 
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -29,6 +30,13 @@ FitTarget coarseTarget(const FitTarget& target);
 // points, best first.
 std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric, int points,
                                  int starts, std::mt19937_64& random);
+
+// A start that searches each channel again with the rest of `x` held (the width, the other channels): a grid over the
+// channel's values of the nonlinear colours, its linear values solved at each point. Levenberg-Marquardt does not
+// move one channel from a wrong basin to its neighbours' (a plastic's green fitted as a mirror: eta at its lower
+// bound, k large, its specular scale near 0). Nothing for a model without nonlinear colours.
+std::optional<std::vector<double>> channelSearch(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric,
+                                                 const std::vector<double>& x);
 
 // min over lo <= a <= hi of a'Aa - 2 b'a for A (n x n, row-major) positive semi-definite and small n.
 std::vector<double> boxLeastSquares(const std::vector<double>& A, const std::vector<double>& b,

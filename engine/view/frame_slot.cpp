@@ -59,7 +59,6 @@ FrameTimes readFrameTimes(const Device& device, const FrameSlot& slot) {
   times.displaySeconds = double(ticks[kDisplayEnd] - ticks[kTraceEnd]) * period;
   times.blitSeconds = double(ticks[kBlitEnd] - ticks[kDisplayEnd]) * period;
   times.totalSeconds = double(ticks[kFrameEnd] - ticks[kFrameBegin]) * period;
-  if (getenv("RL_GAP")) fprintf(stderr, "GAP %.6f %.6f\n", ticks[kFrameBegin]*period, ticks[kFrameEnd]*period);
   return times;
 }
 
