@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Regenerates the BRDF figures of docs/brdfs.md: one tools/brdf_plot.py figure per model of the registry
-(`raylab brdf models`; models of the test tree excluded) and a log-radius figure of a sharp lobe, into
-docs/images/brdf/. Models without a hand-picked figure below get their defaults.
+(`raylab brdf models`; models of the test tree excluded), as each model's GLSL header declares them (`// figure:`
+lines, docs/extending.md), into docs/images/brdf/. A model without one gets a figure of its defaults.
 
     .venv/bin/python tools/brdf_plots_all.py                 # about a minute
     .venv/bin/python tools/brdf_plots_all.py --only phong,glass --raylab build/debug/raylab
@@ -14,7 +14,8 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from raylab_tools import REPO, ToolError, add_raylab_option, check_raylab, reads_file, registered_models, run_main
+from raylab_tools import (REPO, ToolError, add_raylab_option, check_raylab, model_notes, reads_file,
+                          registered_models, run_main)
 
 MAX_BYTES = 150 * 1024  # the repository's limit per image
 
@@ -28,24 +29,6 @@ class Figure:
 
 
 ANISOTROPIC = ("--phi", "0,90")
-# Hand-picked figures; every other registered model gets one of its defaults (figures()).
-CHOSEN = [
-    Figure("lambert", "lambert", "rho_d=1"),
-    Figure("phong", "phong", "rho_d=0;rho_s=1;s=50"),
-    Figure("blinnphong", "blinnphong", "rho_d=0;rho_s=1;s=50"),
-    Figure("cooktorrance", "cooktorrance", "rho_d=0;rho_s=1;m=0.2;eta=1.5"),
-    Figure("cooktorrance_sharp_log", "cooktorrance", "rho_d=0;rho_s=1;m=0.02;eta=10", ("--radius", "log")),
-    Figure("ward", "ward", "rho_d=0;rho_s=1;alpha_x=0.1;alpha_y=0.4", ANISOTROPIC),
-    Figure("ward_duer", "ward_duer", "rho_d=0;rho_s=1;alpha_x=0.1;alpha_y=0.4", ANISOTROPIC),
-    Figure("ward_gmd", "ward_gmd", "rho_d=0;rho_s=1;alpha_x=0.1;alpha_y=0.4", ANISOTROPIC),
-    Figure("ashikhmin_shirley", "ashikhmin_shirley", "Rd=0.5;Rs=0.5;nu=10;nv=1000", ANISOTROPIC),
-    Figure("glass", "glass", "eta=1.5"),
-    Figure("oren_nayar", "oren_nayar", "rho_d=1;sigma=0.5"),
-    Figure("eon", "eon", "rho_d=1;r=1"),
-    Figure("gltf_pbr", "gltf_pbr", "base_color=0.9/0.6/0.2;metallic=0;roughness=0.4"),
-    Figure("ggx_conductor", "ggx_conductor", "metal=Au;alpha_x=0.1;alpha_y=0.4", ANISOTROPIC),
-    Figure("ggx_dielectric", "ggx_dielectric", "alpha_x=0.15;alpha_y=0.15;eta=1.5"),
-]
 
 
 def parse_args() -> argparse.Namespace:
@@ -61,12 +44,21 @@ def parse_args() -> argparse.Namespace:
 
 
 def figures(raylab: Path) -> list[Figure]:
-    chosen = {f.model for f in CHOSEN}
-    extra = [Figure(m["name"], m["name"], "", ANISOTROPIC if any(p["role"].endswith("_x") for p in m["params"]) else ())
-             for m in registered_models(raylab)
-             # measured has no parameters to show: its figures are those of docs/fitting.md
-             if m["name"] not in chosen and not m["glsl"].startswith("tests/") and not reads_file(m)]
-    return CHOSEN + extra
+    """Each model's `figure:` lines (its GLSL header), or one figure of its defaults, both planes for an anisotropic
+    one."""
+    result = []
+    # measured has no parameters to show: its figures are those of docs/fitting.md
+    for model in registered_models(raylab):
+        if model["glsl"].startswith("tests/") or reads_file(model):
+            continue
+        declared = model_notes(model)["figures"]
+        for figure in declared:
+            params = ";".join(item.strip() for item in figure["params"].split(",") if item.strip())
+            result.append(Figure(figure["name"], model["name"], params, tuple(figure["options"])))
+        if not declared:
+            anisotropic = any(p["role"].endswith("_x") for p in model["params"])
+            result.append(Figure(model["name"], model["name"], "", ANISOTROPIC if anisotropic else ()))
+    return result
 
 
 def selected(all_figures: list[Figure], only: str | None) -> list[Figure]:

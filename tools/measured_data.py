@@ -225,6 +225,11 @@ def published_f(family: str, lambert, params: dict, wi: np.ndarray, wo: np.ndarr
         r = np.stack([-wi[..., 0], -wi[..., 1], wi[..., 2]], -1).reshape(-1, 3)
         cos_a = np.clip((r * wo.reshape(-1, 3)).sum(-1), 0.0, 1.0)
         spec = x(params["albedo"]) * col((n + 2) / (2 * math.pi) * cos_a ** n)
+    elif family == "NganLafortune":  # bbm: Lafortune 1997 eq. 4, Cx = Cy, times (n+2) / (2 pi max(|Cz|, |Cxy|)^n)
+        n, cxy, cz = params["sharpness"], params["Cxy"], params["Cz"]
+        a, b = wi.reshape(-1, 3), wo.reshape(-1, 3)
+        d = cxy * (a[:, 0] * b[:, 0] + a[:, 1] * b[:, 1]) + cz * a[:, 2] * b[:, 2]
+        spec = x(params["albedo"]) * col((n + 2) / (2 * math.pi) * (np.maximum(d, 0.0) / max(abs(cz), abs(cxy))) ** n)
     elif family == "NganCookTorrance":  # Beckmann, V-groove, Schlick with F0 = "eta", divided by pi cos cos
         m, f0 = params["roughness"], params["eta"]
         d = np.exp(-tan2 / (m * m)) / (math.pi * m * m * cos_h ** 4)
@@ -302,6 +307,11 @@ def raylab_material(family: str, lambert, params: dict) -> tuple[str, dict]:
         return "cooktorrance", {"rho_d": rho_d, "rho_s": within("4 albedo / pi", rho_s, 0.0, 1.0),
                                 "m": within("roughness", params["roughness"], 0.001, 1.0),
                                 "eta": within("eta from F0", eta, 1.0, 10.0)}
+    if family == "NganLafortune":
+        return "lafortune", {"rho_d": rho_d, "rho_s": within("albedo", [float(v) for v in _rgb(params["albedo"])], 0.0, 2.0),
+                             "cx": within("Cxy", params["Cxy"], -1.0, 1.0), "cy": params["Cxy"],
+                             "cz": within("Cz", params["Cz"], -1.0, 1.0),
+                             "n": within("sharpness", params["sharpness"], 1.0, 20000.0), "rho_s2": [0.0, 0.0, 0.0]}
     if family == "NganAshikhminShirley":
         raise NotExpressible("raylab's ashikhmin_shirley has the paper's coupled diffuse term (28/23 (1 - Rs) ...) "
                              "and no specular scale; Ngan's has a Lambert term and a scale")
@@ -317,6 +327,8 @@ NGAN_MAPPINGS = {
     "cooktorrance": "`cooktorrance`: rho_s = 4 albedo / pi (Cook's 1/(pi cos cos) against raylab's 1/(4 cos cos)), "
                     "eta = (1 + sqrt F0) / (1 - sqrt F0) from Schlick's F0 (bbm's \"eta\"), m = roughness",
     "ashikhmin_shirley": "none: raylab's `ashikhmin_shirley` is the paper's whole model",
+    "lafortune": "`lafortune` (one lobe, Ngan's normalisation (n+2)/(2 pi max|C|^n)): rho_s = albedo, cx = cy = Cxy, "
+                 "cz = Cz, n = sharpness, rho_s2 = 0",
 }
 
 # The published families of the study: (label, file, reader) in the order of docs/measured.md.
@@ -326,6 +338,7 @@ NGAN_FAMILIES = {
     "phong": ("NganBlinnPhong", "fits_bbm/ngan_blinnphong.fit"),
     "cooktorrance": ("NganCookTorrance", "fits_bbm/ngan_cooktorrance.fit"),
     "ashikhmin_shirley": ("NganAshikhminShirley", "fits_bbm/ngan_ashikhminshirley.fit"),
+    "lafortune": ("NganLafortune", "fits_bbm/ngan_lafortune.fit"),
 }
 
 

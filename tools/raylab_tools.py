@@ -67,6 +67,41 @@ def reads_file(model: dict) -> bool:
     return any(param["role"] == "file" for param in model["params"])
 
 
+def model_notes(model: dict) -> dict:
+    """What a model's GLSL header says for the tools, parsed as the build parses it (tools/cmake/brdf_registry.py):
+    `look` (the parameter list scenes show it with, or None), `figures` ([{name, params, options}]) and
+    `sweep_scenes` ([{param, start, stop, log, set, statistic, trend, why}])."""
+    sys.path.insert(0, str(REPO / "tools" / "cmake"))
+    import brdf_registry  # noqa: E402 (the build's parser of the headers, standard library only)
+    return brdf_registry.parse_model(model["name"], "", "", str(REPO / model["glsl"]))
+
+
+def param_value(text: str) -> float | int | str | list:
+    """A value of a header's parameter list as extras.raylab holds it: r/g/b a list, 60 an int, 0.3 a float, Au a
+    name (a preset)."""
+    if "/" in text:
+        return [param_value(channel) for channel in text.split("/")]
+    try:
+        return int(text) if text.lstrip("-").isdigit() else float(text)
+    except ValueError:
+        return text
+
+
+def look_material(model: dict) -> dict:
+    """The extras.raylab material a scene shows `model` with: its header's `look:` line, or generic_material."""
+    look = model_notes(model)["look"]
+    if look is None:
+        return generic_material(model)
+    rgb = {param["name"] for param in model["params"] if param["type"] == "rgb"}
+    material = {"model": model["name"]}
+    for item in filter(None, (part.strip() for part in look.split(","))):
+        name, value = (part.strip() for part in item.split("="))
+        material[name] = param_value(value)
+        if name in rgb and not isinstance(material[name], list):
+            material[name] = [material[name]] * 3
+    return material
+
+
 def generic_material(model: dict) -> dict:
     """An extras.raylab material of a registered model for a figure without a hand-picked look for it: its
     defaults, with a warm diffuse colour and grey other colours."""

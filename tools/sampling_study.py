@@ -2,7 +2,7 @@
 """Speed against error of the path integrator's sampling strategies: MIS, BSDF sampling alone and light
 sampling alone, for each BRDF model under a real HDR environment.
 
-Each model gets one scene: a sphere of that model (the showcase's parameters) on a grey Lambert floor, lit
+Each model gets one scene: a sphere of that model (its GLSL header's `look:`) on a grey Lambert floor, lit
 only by Blender's CC0 `sunrise` world (a sun of radiance 3.4e4 over a sky of about 0.5: five orders of
 magnitude). raylab renders a reference with MIS at --reference-spp (seed 1000), then each strategy at 1, 2, 4,
 ..., --max-spp spp (seed 0). relMSE = mean((x - r)^2 / (r^2 + 0.01)) over pixels and R, G, B. An unbiased
@@ -28,8 +28,8 @@ import sys
 import time
 from pathlib import Path
 
-from raylab_tools import (REPO, ToolError, add_raylab_option, check_raylab, generic_material, reads_file, registered_models,
-                          run_main, run_raylab, venv_hint)
+from raylab_tools import (REPO, ToolError, add_raylab_option, check_raylab, look_material, model_notes, reads_file,
+                          registered_models, run_main, run_raylab, venv_hint)
 
 sys.path.insert(0, str(REPO / "tools" / "scenes"))
 import make_scenes  # noqa: E402
@@ -48,29 +48,8 @@ EPSILON = 0.01
 TARGET = 1e-3
 STRATEGIES = [("mis", "o-"), ("bsdf", "s--"), ("light", "^-.")]
 MEASURED_FILE = "measured_cooktorrance.binary"
-MODELS_IN_USE: dict[str, dict] = {}  # name -> extras.raylab material, from the registry (parse_args)
-# Hand-picked looks; every other registered model (`raylab brdf models`) gets raylab_tools.generic_material.
-LOOKS = {
-    "lambert": {"model": "lambert", "rho_d": [0.75, 0.2, 0.15]},
-    "phong": {"model": "phong", "rho_d": [0.7, 0.5, 0.1], "rho_s": [0.3, 0.3, 0.3], "s": 60},
-    "blinnphong": {"model": "blinnphong", "rho_d": [0.3, 0.65, 0.2], "rho_s": [0.3, 0.3, 0.3], "s": 120},
-    "cooktorrance": {"model": "cooktorrance", "rho_d": [0.1, 0.3, 0.7], "rho_s": [1.0, 1.0, 1.0], "m": 0.15,
-                     "eta": 1.5},
-    "ward": {"model": "ward", "rho_d": [0.15, 0.1, 0.05], "rho_s": [0.9, 0.7, 0.4], "alpha_x": 0.08, "alpha_y": 0.4},
-    "ward_duer": {"model": "ward_duer", "rho_d": [0.4, 0.1, 0.5], "rho_s": [0.5, 0.5, 0.5], "alpha_x": 0.2,
-                  "alpha_y": 0.2},
-    "ward_gmd": {"model": "ward_gmd", "rho_d": [0.1, 0.45, 0.45], "rho_s": [0.5, 0.5, 0.5], "alpha_x": 0.15,
-                 "alpha_y": 0.15},
-    "ashikhmin_shirley": {"model": "ashikhmin_shirley", "Rd": [0.6, 0.3, 0.5], "Rs": [0.05, 0.05, 0.05],
-                          "nu": 1000, "nv": 40},
-    # The second library: a named metal, frosted glass (the light through it: transmission with MIS), rough diffuse.
-    "ggx_conductor": {"model": "ggx_conductor", "metal": "Au", "alpha_x": 0.12, "alpha_y": 0.12},
-    "ggx_dielectric": {"model": "ggx_dielectric", "alpha_x": 0.1, "alpha_y": 0.1, "eta": 1.5},
-    "gltf_pbr": {"model": "gltf_pbr", "base_color": [0.9, 0.6, 0.2], "metallic": 0.5, "roughness": 0.4},
-    "oren_nayar": {"model": "oren_nayar", "rho_d": [0.8, 0.45, 0.3], "sigma": 1.0},
-    "eon": {"model": "eon", "rho_d": [0.8, 0.45, 0.3], "r": 1.0},
-}
-
+# name -> extras.raylab material: each model's `look:` line (raylab_tools.look_material), from parse_args.
+MODELS_IN_USE: dict[str, dict] = {}
 
 def write_scene(model: str, out: Path) -> Path:
     g = make_scenes.Gltf(f"sampling_{model}")
@@ -111,7 +90,7 @@ def parse_args() -> argparse.Namespace:
     if args.quick:
         args.models, args.width, args.height, args.max_spp, args.reference_spp = "lambert,cooktorrance", 48, 27, 8, 128
     registry = {m["name"]: m for m in registered_models(check_raylab(args.raylab)) if not m["delta_only"]}
-    MODELS_IN_USE.update({name: LOOKS.get(name) or generic_material(model) for name, model in registry.items()})
+    MODELS_IN_USE.update({name: look_material(model) for name, model in registry.items()})
     # A model reading a file (measured) renders the Cook-Torrance look tabulated as a MERL file beside the scene.
     for name, model in registry.items():
         if reads_file(model):
@@ -135,9 +114,8 @@ def main() -> None:
     shutil.copy2(ENVIRONMENT, args.out / "environments" / ENVIRONMENT.name)
     began, load_before = time.monotonic(), os.getloadavg()
     if any("file" in MODELS_IN_USE[m] for m in args.models.split(",")):
-        look = LOOKS["cooktorrance"]
-        params = ",".join(f"{k}={'/'.join(str(c) for c in v) if isinstance(v, list) else v}"
-                          for k, v in look.items() if k != "model")
+        cooktorrance = next(m for m in registered_models(raylab) if m["name"] == "cooktorrance")
+        params = model_notes(cooktorrance)["look"].replace(" ", "")
         run_raylab(raylab, ["brdf", "tabulate", f"cooktorrance:{params}", "--out", str(args.out / MEASURED_FILE)],
                    "raylab brdf tabulate")
     spps = [2 ** k for k in range(int(math.log2(args.max_spp)) + 1)]

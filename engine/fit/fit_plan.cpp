@@ -28,6 +28,7 @@ std::vector<Variable> variablesOf(const ModelInfo& model, bool isotropic) {
   const auto partner = [&](std::string_view role) -> const ParamInfo* {
     if (role == "slope_y") return findRole(model, "slope_x");
     if (role == "exponent_y") return findRole(model, "exponent_x");
+    if (role == "lobe_y") return findRole(model, "lobe_x");
     return nullptr;
   };
   for (const ParamInfo& param : model.params) {

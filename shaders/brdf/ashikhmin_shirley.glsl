@@ -2,6 +2,11 @@
 // term that gives way to it at grazing angles.
 // lobes: reflection diffuse glossy
 // sweep: Rd=0.2, Rs=0.1
+// look: Rd=0.6/0.3/0.5, Rs=0.05, nu=1000, nv=40
+// figure: Rd=0.5, Rs=0.5, nu=10, nv=1000 --phi 0,90
+// sweep scene: nv 1 10000 log set nu=100 -> highlight_area decreasing
+// sweep why: (N.H)^(nu cos^2 + nv sin^2) is half its peak on an ellipse of half-vector slopes whose area shrinks like
+// sweep why: 1/sqrt(nu nv)
 // (The model scales its diffuse term by (1 - Rs): in a sweep, a dielectric's small Rs keeps the body in view.
 // Rs is a Fresnel reflectance, not a lobe's weight: it has no role, so switching models does not carry it.)
 // | parameter | range      | default | kind           | meaning                                  |

@@ -1,6 +1,11 @@
 // Blinn-Phong: a cosine-power lobe of the half vector around the normal plus a Lambertian term.
 // lobes: reflection diffuse glossy
 // sweep: rho_d=0.1, rho_s=0.9
+// look: rho_d=0.3/0.65/0.2, rho_s=0.3, s=120
+// figure: rho_d=0, rho_s=1, s=50
+// sweep scene: s 1 1000 log -> highlight_area decreasing
+// sweep why: (N.H)^s falls to half its peak within an angle that shrinks like 1/sqrt(s), so the highlight's area at
+// sweep why: half maximum shrinks like 1/s, down to a pixel
 // | parameter | range      | default | kind         | meaning              |
 // |-----------|------------|---------|--------------|----------------------|
 // | rho_d     | [0, 1]     | 0.5     | rgb diffuse  | diffuse reflectance  |

@@ -1,6 +1,15 @@
 // Cook-Torrance: Beckmann microfacets with Schlick's Fresnel and Torrance-Sparrow shadowing, plus Lambert.
 // lobes: reflection diffuse glossy
 // sweep: rho_d=0.1, rho_s=0.9
+// look: rho_d=0.1/0.3/0.7, rho_s=1.0, m=0.15, eta=1.5
+// figure: rho_d=0, rho_s=1, m=0.2, eta=1.5
+// figure sharp_log: rho_d=0, rho_s=1, m=0.02, eta=10 --radius log
+// sweep scene: m 0.01 1 log -> highlight_area increasing
+// sweep why: Beckmann's D falls to half its peak within a half-vector angle that grows with m, so the highlight widens
+// sweep why: (until, dimmed by the 4% Fresnel reflectance of eta 1.5, it sinks under the diffuse body, whose own
+// sweep why: half-maximum area is the largest)
+// sweep scene: eta 1 10 -> mean increasing
+// sweep why: Schlick's F = F0 + (1 - F0)(1 - V.H)^5 grows with F0 = ((eta-1)/(eta+1))^2 at every angle
 // | parameter | range       | default | kind         | meaning                                  |
 // |-----------|-------------|---------|--------------|------------------------------------------|
 // | rho_d     | [0, 1]      | 0.5     | rgb diffuse  | diffuse reflectance                      |

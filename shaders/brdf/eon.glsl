@@ -1,5 +1,10 @@
 // EON: energy-preserving Oren-Nayar, the diffuse lobe of OpenPBR, in its exact-albedo form.
 // lobes: reflection diffuse
+// look: rho_d=0.8/0.45/0.3, r=1.0
+// figure: rho_d=1, r=1
+// sweep scene: r 0 1 set rho_d=0.8/0.45/0.3 -> mean steady
+// sweep why: EON keeps the energy as r grows: its single scattering flattens the sphere's shading (A_F (1 + r s/t)) and
+// sweep why: its multiple scattering returns the light that takes, so the mean stays put while the look changes
 // | parameter | range  | default | kind        | meaning                              |
 // |-----------|--------|---------|-------------|--------------------------------------|
 // | rho_d     | [0, 1] | 0.5     | rgb diffuse | diffuse albedo (white: no energy lost) |

@@ -1,5 +1,13 @@
 // GGX conductor: a rough metal, anisotropic GGX microfacets with the exact Fresnel term of a complex index.
 // lobes: reflection glossy
+// look: metal=Au, alpha_x=0.12, alpha_y=0.12
+// figure: metal=Au, alpha_x=0.1, alpha_y=0.4 --phi 0,90
+// sweep scene: alpha_x 0.02 0.6 log set alpha_y=0.05 metal=Au -> highlight_area increasing
+// sweep why: anisotropic GGX is half its peak on an ellipse of half-vector slopes whose area grows like alpha_x
+// sweep why: alpha_y: brushed gold's highlight stretches along the tangent
+// sweep scene: multiscatter 0 1 set alpha_x=0.8 alpha_y=0.8 metal=Ag -> mean increasing
+// sweep why: Kulla and Conty's term adds back, in proportion to multiscatter, the light single scattering loses between
+// sweep why: the facets of a rough surface: a third of it at alpha 0.8
 // | parameter | range       | default | kind         | meaning                                        |
 // |-----------|-------------|---------|--------------|------------------------------------------------|
 // | alpha_x   | [0.001, 1]  | 0.2     | log slope_x  | GGX roughness along the tangent                |

@@ -1,5 +1,10 @@
 // GGX dielectric: rough glass, anisotropic GGX microfacets that reflect and refract, two-sided.
 // lobes: reflection transmission glossy
+// look: alpha_x=0.1, alpha_y=0.1, eta=1.5
+// figure: alpha_x=0.15, alpha_y=0.15, eta=1.5
+// sweep scene: alpha_x 0.02 0.6 log set alpha_y=0.05 -> highlight_area increasing
+// sweep why: the reflected highlight of rough glass, GGX's D on an ellipse of half-vector slopes whose area grows like
+// sweep why: alpha_x alpha_y, stretches along the tangent
 // | parameter | range       | default | kind        | meaning                                          |
 // |-----------|-------------|---------|-------------|--------------------------------------------------|
 // | alpha_x   | [0.001, 1]  | 0.1     | log slope_x | GGX roughness along the tangent                  |

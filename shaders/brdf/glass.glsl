@@ -1,6 +1,13 @@
 // Glass: a smooth dielectric interface, a delta BSDF. bsdfEval and bsdfPdf return 0 for it; the renderer
 // follows the two delta directions with the weights computed here.
 // lobes: reflection transmission specular
+// look: eta=1.5, tint=0.95/0.98/1.0
+// figure: eta=1.5
+// sweep scene: eta 1 2.5 -> mean decreasing
+// sweep why: at eta 1 every pixel sees the lit checker wall straight through; a higher eta reflects more (Fresnel grows
+// sweep why: with eta at every angle) and bends rays further, and both send more of each pixel's paths to the dark
+// sweep why: background in front of the spheres. The line from the camera through each centre meets the wall at a tile
+// sweep why: corner, so each lens shows as much of the light tiles as of the dark ones at any magnification
 // | parameter | range   | default | kind | meaning                                  |
 // |-----------|---------|---------|------|------------------------------------------|
 // | eta       | [1, 10] | 1.5     | eta  | index of refraction, inside over outside |

@@ -1,6 +1,11 @@
 // glTF PBR: the metallic-roughness BRDF of the glTF 2.0 specification, Appendix B, with KHR_materials_specular.
 // lobes: reflection diffuse glossy
 // sweep: metallic=1
+// look: base_color=0.9/0.6/0.2, metallic=0.5, roughness=0.4
+// figure: base_color=0.9/0.6/0.2, metallic=0, roughness=0.4
+// sweep scene: roughness 0.1 1 set metallic=1 base_color=0.9/0.6/0.2 -> highlight_area increasing
+// sweep why: GGX's D with alpha = roughness^2 is half its peak within a half-vector angle that grows with alpha, so the
+// sweep why: metal's highlight widens
 // | parameter      | range   | default | kind            | meaning                                         |
 // |----------------|---------|---------|-----------------|-------------------------------------------------|
 // | base_color     | [0, 1]  | 0.8     | rgb diffuse     | base colour: diffuse albedo, or a metal's F0    |

@@ -1,5 +1,12 @@
 // Lambert: the ideal diffuse reflector.
 // lobes: reflection diffuse
+// look: rho_d=0.75/0.2/0.15
+// figure: rho_d=1
+// sweep scene: rho_d 0 1 -> mean increasing
+// sweep why: the radiance rho_d/pi E cos is linear in rho_d
+// sweep scene: delta 0 1 set rho_d=0.8/0.45/0.2 -> mean decreasing
+// sweep why: L = (1 - delta) diffuse + delta reflected is linear in delta, and the mirror reflects the dark background
+// sweep why: in its upper half and the checker floor in its lower half, darker on average than the lit orange body
 // | parameter | range  | default | kind        | meaning             |
 // |-----------|--------|---------|-------------|---------------------|
 // | rho_d     | [0, 1] | 0.5     | rgb diffuse | diffuse reflectance |

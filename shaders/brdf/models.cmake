@@ -19,3 +19,4 @@ raylab_brdf_model(gltf_pbr PREFIX gltfPbr GLSL brdf/gltf_pbr.glsl REFERENCE ${re
 raylab_brdf_model(ggx_conductor PREFIX ggxConductor GLSL brdf/ggx_conductor.glsl REFERENCE ${reference}/ggx_conductor.cpp)
 raylab_brdf_model(ggx_dielectric PREFIX ggxDielectric GLSL brdf/ggx_dielectric.glsl REFERENCE ${reference}/ggx_dielectric.cpp)
 raylab_brdf_model(measured PREFIX measured GLSL brdf/measured.glsl REFERENCE ${reference}/measured.cpp)
+raylab_brdf_model(lafortune PREFIX lafortune GLSL brdf/lafortune.glsl REFERENCE ${reference}/lafortune.cpp)

@@ -1,5 +1,10 @@
 // Oren-Nayar: rough diffuse, Lambertian V-grooves with Gaussian slopes, in the paper's qualitative form.
 // lobes: reflection diffuse
+// look: rho_d=0.8/0.45/0.3, sigma=1.0
+// figure: rho_d=1, sigma=0.5
+// sweep scene: sigma 0 1.5 set rho_d=0.8/0.45/0.3 -> mean decreasing
+// sweep why: A = 1 - sigma^2 / (2 (sigma^2 + 0.33)) scales the whole surface down as sigma grows; the B term, which
+// sweep why: adds light back only where the light and the viewer are on the same side at grazing, cannot make up for it
 // | parameter | range    | default | kind        | meaning                                      |
 // |-----------|----------|---------|-------------|----------------------------------------------|
 // | rho_d     | [0, 1]   | 0.5     | rgb diffuse | diffuse reflectance (albedo of a facet)      |

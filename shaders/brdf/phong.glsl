@@ -1,6 +1,13 @@
 // Phong, energy-normalised: a cosine-power lobe around the mirror direction plus a Lambertian term.
 // lobes: reflection diffuse glossy
 // sweep: rho_d=0.1, rho_s=0.9
+// look: rho_d=0.7/0.5/0.1, rho_s=0.3, s=60
+// figure: rho_d=0, rho_s=1, s=50
+// sweep scene: rho_s 0 1 -> mean increasing
+// sweep why: the specular term is linear in rho_s and the diffuse term is fixed
+// sweep scene: s 1 1000 log -> highlight_area decreasing
+// sweep why: cos^s falls to half its peak within an angle that shrinks like 1/sqrt(s), so the highlight's area at half
+// sweep why: maximum shrinks like 1/s, down to a pixel
 // | parameter | range      | default | kind                | meaning              |
 // |-----------|------------|---------|---------------------|----------------------|
 // | rho_d     | [0, 1]     | 0.5     | rgb diffuse         | diffuse reflectance  |

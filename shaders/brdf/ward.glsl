@@ -1,6 +1,11 @@
 // Ward (1992): an anisotropic Gaussian-like lobe of the half vector, plus Lambert.
 // lobes: reflection diffuse glossy
 // sweep: rho_d=0.1, rho_s=0.9
+// look: rho_d=0.15/0.1/0.05, rho_s=0.9/0.7/0.4, alpha_x=0.08, alpha_y=0.4
+// figure: rho_d=0, rho_s=1, alpha_x=0.1, alpha_y=0.4 --phi 0,90
+// sweep scene: alpha_y 0.02 0.5 log set alpha_x=0.1 -> highlight_area increasing
+// sweep why: the lobe exp(-(tan^2 along t / alpha_x^2 + tan^2 along b / alpha_y^2)) is half its peak on an ellipse of
+// sweep why: half-vector slopes whose area grows like alpha_x alpha_y
 // | parameter | range      | default | kind         | meaning                       |
 // |-----------|------------|---------|--------------|-------------------------------|
 // | rho_d     | [0, 1]     | 0.5     | rgb diffuse  | diffuse reflectance           |

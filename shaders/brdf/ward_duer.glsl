@@ -1,6 +1,8 @@
 // Ward with Dür's normalisation: the Ward lobe over cos_i cos_o instead of its square root.
 // lobes: reflection diffuse glossy
 // sweep: rho_d=0.1, rho_s=0.9
+// look: rho_d=0.4/0.1/0.5, rho_s=0.5, alpha_x=0.2, alpha_y=0.2
+// figure: rho_d=0, rho_s=1, alpha_x=0.1, alpha_y=0.4 --phi 0,90
 // | parameter | range      | default | kind         | meaning                       |
 // |-----------|------------|---------|--------------|-------------------------------|
 // | rho_d     | [0, 1]     | 0.5     | rgb diffuse  | diffuse reflectance           |

@@ -67,6 +67,16 @@ std::vector<Material> extremeMaterials() {
         materials.push_back(makeMaterial(model, with({{"alpha_x", ax}, {"alpha_y", ay}})));
       }
     }
+    // Lafortune: Ngan's forward lobe, a retro-reflector, a lobe past |Cz| (off-specular peak) and a zero lobe, at the
+    // exponents' ends, with and without the second lobe.
+    for (auto [cx, cz] : {std::pair{-0.577, 0.577}, {0.577, 0.577}, {-0.707, 1.23e-10}, {0.0, 0.0}, {-1.0, 1.0}}) {
+      for (double n : {1.0, 1000.0, 20000.0}) {
+        for (double second : {0.0, 1.0}) {
+          materials.push_back(makeMaterial("lafortune", with({{"cx", cx}, {"cy", cx}, {"cz", cz}, {"n", n},
+                                                              {"rho_s2", second}, {"n2", 20000.0 / n}})));
+        }
+      }
+    }
     const std::vector<ParamValue> asRho = {{"Rd", rho[0].value}, {"Rs", rho[1].value}};
     for (auto [nu, nv] : {std::pair{1.0, 1.0}, {10000.0, 10000.0}, {1.0, 10000.0}, {10000.0, 1.0}, {100.0, 100.0}}) {
       std::vector<ParamValue> params = {{"nu", nu}, {"nv", nv}};
@@ -111,6 +121,41 @@ TEST(BrdfReference, ValuesAtTheNormalMatchTheFormulas) {
   const double spec = std::sqrt(2.0 * 10001.0) / (8.0 * kPi) * 0.25;
   const double diff = 28.0 * 0.5 / (23.0 * kPi) * 0.75 * (31.0 / 32.0) * (31.0 / 32.0);
   EXPECT_NEAR(f(as), spec + diff, 1e-15 * (spec + diff));
+}
+
+// Lafortune's lobe with Cx = Cy = -Cz is Phong's lobe of the same exponent (C.(u * v) = |C| R.v), at any scale of
+// C; with Cx = Cy = Cz it peaks back towards wi; and its value is the paper's sum written out by hand.
+TEST(BrdfReference, LafortuneLobesAreTheirClosedForms) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> angle(0.0, 89.0), azimuth(0.0, 360.0);
+  for (int k = 0; k < 200; ++k) {
+    const dvec3 wi = direction(angle(random), azimuth(random)), wo = direction(angle(random), azimuth(random));
+    for (double scale : {0.577, 0.2, 1.0}) {
+      const Material lafortune = makeMaterial(
+          "lafortune", {{"rho_d", 0.3}, {"rho_s", 0.7}, {"cx", -scale}, {"cy", -scale}, {"cz", scale}, {"n", 37}});
+      const Material phong = makeMaterial("phong", {{"rho_d", 0.3}, {"rho_s", 0.7}, {"s", 37}});
+      EXPECT_NEAR(reference::eval(lafortune, wi, wo).x, reference::eval(phong, wi, wo).x,
+                  1e-12 * reference::eval(phong, wi, wo).x + 1e-300);
+    }
+    // Two lobes at once: f = rho_d/pi + sum rho_s (n+2)/(2 pi) max(0, d)^n / max|C|^n, by hand.
+    const Material two = makeMaterial("lafortune", {{"rho_d", 0.1}, {"rho_s", 0.5}, {"cx", -0.8}, {"cy", -0.3},
+                                                    {"cz", 0.4}, {"n", 6}, {"rho_s2", 0.25}, {"cxy2", 0.5},
+                                                    {"cz2", 0.25}, {"n2", 3}});
+    const auto lobe = [&](double cx, double cy, double cz, double n) {
+      const double d = cx * wi.x * wo.x + cy * wi.y * wo.y + cz * wi.z * wo.z;
+      const double m = std::max({std::abs(cx), std::abs(cy), std::abs(cz)});
+      return (n + 2.0) / (2.0 * kPi) * std::pow(std::max(0.0, d) / m, n);
+    };
+    // The material's parameters are floats: 1e-6 covers their rounding.
+    const double expected = 0.1 / kPi + 0.5 * lobe(-0.8, -0.3, 0.4, 6) + 0.25 * lobe(0.5, 0.5, 0.25, 3);
+    EXPECT_NEAR(reference::eval(two, wi, wo).x, expected, 1e-6 * expected);
+  }
+  // The retro-reflective lobe peaks at wo = wi: (n+2)/(2 pi) rho_s there.
+  const Material retro = makeMaterial("lafortune", {{"rho_d", 0}, {"rho_s", 1}, {"cx", 0.5}, {"cy", 0.5},
+                                                    {"cz", 0.5}, {"n", 50}});
+  const dvec3 w = direction(50, 20);
+  EXPECT_NEAR(reference::eval(retro, w, w).x, 52.0 / (2.0 * kPi), 1e-12);
+  EXPECT_LT(reference::eval(retro, w, direction(50, 200)).x, 1e-6);
 }
 
 TEST(BrdfReference, ValuesOffThePeakMatchTheFormulasInAngles) {

@@ -118,6 +118,32 @@ def test_published_fits_that_raylab_expresses_give_raylabs_own_error():
     assert checked >= 6
 
 
+@needs_data
+def test_published_fits_tool_writes_what_raylab_evaluates_as_the_paper_does(capsys):
+    """tools/published_fits.py: its --material value, evaluated by raylab, has the error of the family's formula
+    evaluated here (Ngan's Lafortune and Cook-Torrance); what raylab cannot express is refused with the reason."""
+    import published_fits
+    raylab = md.import_raylab()
+    wi, wo = md.slice_directions("centre")
+    fits = md.MEASURED / "fits_bbm"
+    for name in ("ngan_lafortune", "ngan_cooktorrance"):
+        for material in ("blue-acrylic", "black-phenolic", "cherry-235"):
+            assert published_fits.main([str(fits / f"{name}.fit"), material]) == 0
+            model, params = capsys.readouterr().out.strip().split(":", 1)
+            family, lambert, published = published_fits.read_fit(fits / f"{name}.fit", material)
+            theirs = md.slice_errors(md.published_f(family, lambert, published, wi, wo),
+                                     md.read_slice(SLICES / f"{material}.slice"))
+            ours, _ = raylab.brdf.fit_error(str(SLICES / f"{material}.slice"), model, params, metric="log")
+            assert ours == pytest.approx(theirs["error_log"], rel=1e-5), (name, material)
+    assert published_fits.main([str(fits / "ngan_ashikhminshirley.fit"), "chrome"]) == 1
+    assert "coupled diffuse term" in capsys.readouterr().err
+    assert published_fits.main([str(fits / "ngan_ward.fit"), "unobtainium"]) == 2
+    assert "no fit of 'unobtainium'" in capsys.readouterr().err
+    assert published_fits.main([str(fits / "ngan_lafortune.fit"), "chrome", "--gltf"]) == 0
+    block = json.loads(capsys.readouterr().out)["raylab"]
+    assert block["model"] == "lafortune" and block["n"] == 6630.0 and block["cx"] == block["cy"] == -0.577
+
+
 def test_fit_arguments_are_checked_as_the_command_line_checks_them(work):
     """Runs without ../shared/measured: a weighted CSV target, and the arguments users get wrong."""
     raylab = md.import_raylab()

@@ -18,7 +18,8 @@ import sys
 MAX_PARAM_FLOATS = 16  # gpu::kMaxMaterialParams (shaders/shared/scene_records.h)
 LOBES = {"reflection": 1, "transmission": 2, "diffuse": 4, "glossy": 8, "specular": 16}
 ROLES = {"diffuse", "specular", "eta", "transmittance", "slope", "slope_x", "slope_y", "exponent", "mirror_exponent",
-         "exponent_x", "exponent_y", "file", "roughness", "metallic", "specular_weight", "specular_tint"}
+         "exponent_x", "exponent_y", "lobe_x", "lobe_y", "file", "roughness", "metallic", "specular_weight",
+         "specular_tint"}
 ROW = re.compile(r"^//\s*\|\s*`?(\w+)`?\s*\|\s*\[([-0-9.e]+),\s*([-0-9.e]+)\]\s*\|\s*([-0-9.e]+)\s*\|"
                  r"\s*([^|]*)\|\s*([^|]*?)\s*\|\s*$")
 
@@ -27,9 +28,15 @@ class RegistryError(Exception):
     pass
 
 
+SWEEP_STATISTICS = {"mean", "highlight_area"}
+SWEEP_TRENDS = {"increasing", "decreasing", "steady"}
+
+
 def parse_model(name, prefix, include, path):
-    """The lobes, parameter table, sweep line and presets of the comment a model's GLSL file opens with."""
+    """The lobes, parameter table, sweep line, presets and tool lines (look, figures, sweep scenes) of the comment
+    a model's GLSL file opens with."""
     lobes, params, sweep, slot, preset_lines = None, [], "", 0, []
+    look, figure_lines, sweep_scene_lines = None, [], []
     with open(path, encoding="utf-8") as f:
         for number, line in enumerate(f, 1):
             if not line.startswith("//"):
@@ -46,6 +53,17 @@ def parse_model(name, prefix, include, path):
                 sweep = body[len("sweep:"):].strip()
             elif body.startswith("preset:"):
                 preset_lines.append((where, body[len("preset:"):].split()))
+            elif body.startswith("look:"):
+                look = (where, body[len("look:"):].strip())
+            elif body.startswith("figure") and ":" in body and re.fullmatch(r"figure( \w+)?", body.split(":")[0]):
+                head, text = body.split(":", 1)
+                figure_lines.append((where, head[len("figure"):].strip(), text.strip()))
+            elif body.startswith("sweep scene:"):
+                sweep_scene_lines.append([where, body[len("sweep scene:"):].strip(), ""])
+            elif body.startswith("sweep why:"):
+                if not sweep_scene_lines:
+                    raise RegistryError(f"{where}: a 'sweep why:' line follows its 'sweep scene:' line")
+                sweep_scene_lines[-1][2] = (sweep_scene_lines[-1][2] + " " + body[len("sweep why:"):].strip()).strip()
             elif line.lstrip("/ ").startswith("|") and not set(body) <= set("|- "):
                 match = ROW.match(line.rstrip("\n"))
                 if match is None:
@@ -78,8 +96,48 @@ def parse_model(name, prefix, include, path):
         raise RegistryError(f"{path}: a model with transmission and a density needs one scalar parameter of kind eta "
                             "(the index inside over outside)")
     presets = [parse_preset(where, words, params) for where, words in preset_lines]
+    keys = {p["name"] for p in params} | {"delta"} | {p["key"] for p in presets}
+    if look is not None:
+        check_param_list(look[0], look[1], keys)
+    figures = []
+    for where, figure_name, text in figure_lines:
+        values, _, options = text.partition(" --")
+        check_param_list(where, values, keys)
+        figures.append(dict(name=f"{name}_{figure_name}" if figure_name else name, params=values.strip(),
+                            options=("--" + options).split() if options else []))
+    sweep_scenes = [parse_sweep_scene(where, text, why, params, keys) for where, text, why in sweep_scene_lines]
     return dict(name=name, prefix=prefix, include=include, path=path, lobes=lobes, params=params, sweep=sweep,
-                presets=presets)
+                presets=presets, look=look[1] if look else None, figures=figures, sweep_scenes=sweep_scenes)
+
+
+def check_param_list(where, text, keys):
+    """`rho_d=0.3/0.65/0.2, s=120`: every name one of the model's parameters, delta or a preset key."""
+    for item in filter(None, (i.strip() for i in text.split(","))):
+        if item.count("=") != 1 or item.split("=")[0].strip() not in keys:
+            raise RegistryError(f"{where}: '{item}' is not name=value for a parameter of the model ({sorted(keys)})")
+
+
+def parse_sweep_scene(where, text, why, params, keys):
+    """`// sweep scene: s 1 1000 log [set k=v ...] -> highlight_area decreasing` and its `// sweep why:` lines: a
+    committed scene of the sweep (tools/scenes/make_scenes.py) and the trend its test checks, with the reason."""
+    sweep, arrow, expectation = text.partition("->")
+    words, expected = sweep.split(), expectation.split()
+    if not arrow or len(words) < 3 or len(expected) != 2 or expected[0] not in SWEEP_STATISTICS \
+            or expected[1] not in SWEEP_TRENDS or not why:
+        raise RegistryError(f"{where}: a sweep scene is 'PARAM FROM TO [log] [set NAME=VALUE ...] -> STATISTIC TREND' "
+                            f"(statistics {sorted(SWEEP_STATISTICS)}, trends {sorted(SWEEP_TRENDS)}), followed by "
+                            "'sweep why:' lines")
+    param, start, stop, rest = words[0], words[1], words[2], words[3:]
+    if param not in {p["name"] for p in params} | {"delta"}:
+        raise RegistryError(f"{where}: '{param}' is not a parameter of the model")
+    log = bool(rest) and rest[0] == "log"
+    rest = rest[1:] if log else rest
+    if rest and rest[0] != "set":
+        raise RegistryError(f"{where}: after the range come 'log' and 'set NAME=VALUE ...'; got '{' '.join(rest)}'")
+    fixed = rest[1:]
+    check_param_list(where, ",".join(fixed), keys)
+    return dict(param=param, start=start, stop=stop, log=log, set=fixed, statistic=expected[0], trend=expected[1],
+                why=why)
 
 
 def parse_preset(where, words, params):

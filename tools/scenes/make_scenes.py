@@ -28,6 +28,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import raylab_tools  # noqa: E402 (standard library only, as this script)
+
 FLOAT = 5126
 UNSIGNED_SHORT = 5123
 ARRAY_BUFFER = 34962
@@ -97,6 +100,8 @@ def rounded(values, digits=6):
 # ----------------------------------------------------------------------------------------------- the writer
 
 
+# Each model's look (its GLSL header's `look:` line, raylab_tools.look_material), read by main.
+LOOKS = {}
 # Each named metal's reflectance at normal incidence, from its eta and k (`raylab brdf models --json`, read by main):
 # the base colour glTF's metallic workflow gives a metal.
 METAL_F0 = {}
@@ -324,87 +329,32 @@ def add_checker(gltf, name, x_range, z_range, height, tile, materials):
 
 # ----------------------------------------------------------------------------------------------- the sweeps
 
-# The sweeps are laid out by raylab itself (engine/scene/sweep_scene.cpp, the layout of `raylab sweep`'s
-# contact sheets): this script runs `raylab sweep ... --gltf` and adds to the scene's extras.sweep the command
-# and what tests/scene/scene_render_test.cpp checks along the row: a statistic of each sphere's image and how
-# it must change from left to right, with the physical reason.
+# The sweeps are the `// sweep scene:` lines of the models' GLSL headers (docs/extending.md), laid out by raylab
+# itself (engine/scene/sweep_scene.cpp, the layout of `raylab sweep`'s contact sheets): this script runs
+# `raylab sweep ... --gltf` and adds to the scene's extras.sweep the command and what
+# tests/scene/scene_render_test.cpp checks along the row: a statistic of each sphere's image and how it must change
+# from left to right (the line's statistic and trend), with the physical reason (its `sweep why:` lines).
 #   mean            mean radiance over the sphere's projected disc (its anti-aliased rim left out)
 #   highlight_area  the number of the disc's pixels brighter than half the disc's brightest: the size of the
 #                   highlight at half its maximum
 
-SWEEPS = [
-    ("sweep_lambert_rho_d", ["--model", "lambert", "--param", "rho_d", "--from", "0", "--to", "1"],
-     "mean", "increasing", "the radiance rho_d/pi E cos is linear in rho_d"),
-    ("sweep_phong_rho_s", ["--model", "phong", "--param", "rho_s", "--from", "0", "--to", "1"],
-     "mean", "increasing", "the specular term is linear in rho_s and the diffuse term is fixed"),
-    ("sweep_phong_s", ["--model", "phong", "--param", "s", "--from", "1", "--to", "1000", "--log"],
-     "highlight_area", "decreasing",
-     "cos^s falls to half its peak within an angle that shrinks like 1/sqrt(s), so the highlight's area at half "
-     "maximum shrinks like 1/s, down to a pixel"),
-    ("sweep_blinnphong_s", ["--model", "blinnphong", "--param", "s", "--from", "1", "--to", "1000", "--log"],
-     "highlight_area", "decreasing",
-     "(N.H)^s falls to half its peak within an angle that shrinks like 1/sqrt(s), so the highlight's area at "
-     "half maximum shrinks like 1/s, down to a pixel"),
-    ("sweep_lambert_delta", ["--model", "lambert", "--param", "delta", "--from", "0", "--to", "1",
-                             "--set", "rho_d=0.8/0.45/0.2"],
-     "mean", "decreasing",
-     "L = (1 - delta) diffuse + delta reflected is linear in delta, and the mirror reflects the dark background in "
-     "its upper half and the checker floor in its lower half, darker on average than the lit orange body"),
-    ("sweep_cooktorrance_m", ["--model", "cooktorrance", "--param", "m", "--from", "0.01", "--to", "1", "--log"],
-     "highlight_area", "increasing",
-     "Beckmann's D falls to half its peak within a half-vector angle that grows with m, so the highlight widens "
-     "(until, dimmed by the 4% Fresnel reflectance of eta 1.5, it sinks under the diffuse body, whose own "
-     "half-maximum area is the largest)"),
-    ("sweep_cooktorrance_eta", ["--model", "cooktorrance", "--param", "eta", "--from", "1", "--to", "10"],
-     "mean", "increasing", "Schlick's F = F0 + (1 - F0)(1 - V.H)^5 grows with F0 = ((eta-1)/(eta+1))^2 at every angle"),
-    ("sweep_ward_alpha_y", ["--model", "ward", "--param", "alpha_y", "--from", "0.02", "--to", "0.5", "--log",
-                            "--set", "alpha_x=0.1"],
-     "highlight_area", "increasing",
-     "the lobe exp(-(tan^2 along t / alpha_x^2 + tan^2 along b / alpha_y^2)) is half its peak on an ellipse of "
-     "half-vector slopes whose area grows like alpha_x alpha_y"),
-    ("sweep_ashikhmin_shirley_nv", ["--model", "ashikhmin_shirley", "--param", "nv", "--from", "1", "--to",
-                                    "10000", "--log", "--set", "nu=100"],
-     "highlight_area", "decreasing",
-     "(N.H)^(nu cos^2 + nv sin^2) is half its peak on an ellipse of half-vector slopes whose area shrinks like "
-     "1/sqrt(nu nv)"),
-    ("sweep_glass_eta", ["--model", "glass", "--param", "eta", "--from", "1", "--to", "2.5"],
-     "mean", "decreasing",
-     "at eta 1 every pixel sees the lit checker wall straight through; a higher eta reflects more (Fresnel grows "
-     "with eta at every angle) and bends rays further, and both send more of each pixel's paths to the dark "
-     "background in front of the spheres. The line from the camera through each centre meets the wall at a tile "
-     "corner, so each lens shows as much of the light tiles as of the dark ones at any magnification"),
-    # The second library.
-    ("sweep_oren_nayar_sigma", ["--model", "oren_nayar", "--param", "sigma", "--from", "0", "--to", "1.5",
-                                "--set", "rho_d=0.8/0.45/0.3"],
-     "mean", "decreasing",
-     "A = 1 - sigma^2 / (2 (sigma^2 + 0.33)) scales the whole surface down as sigma grows; the B term, which adds "
-     "light back only where the light and the viewer are on the same side at grazing, cannot make up for it"),
-    ("sweep_eon_r", ["--model", "eon", "--param", "r", "--from", "0", "--to", "1", "--set", "rho_d=0.8/0.45/0.3"],
-     "mean", "steady",
-     "EON keeps the energy as r grows: its single scattering flattens the sphere's shading (A_F (1 + r s/t)) and "
-     "its multiple scattering returns the light that takes, so the mean stays put while the look changes"),
-    ("sweep_gltf_pbr_roughness", ["--model", "gltf_pbr", "--param", "roughness", "--from", "0.1", "--to", "1",
-                                  "--set", "metallic=1", "--set", "base_color=0.9/0.6/0.2"],
-     "highlight_area", "increasing",
-     "GGX's D with alpha = roughness^2 is half its peak within a half-vector angle that grows with alpha, so the "
-     "metal's highlight widens"),
-    ("sweep_ggx_conductor_alpha_x", ["--model", "ggx_conductor", "--param", "alpha_x", "--from", "0.02", "--to",
-                                     "0.6", "--log", "--set", "alpha_y=0.05", "--set", "metal=Au"],
-     "highlight_area", "increasing",
-     "anisotropic GGX is half its peak on an ellipse of half-vector slopes whose area grows like alpha_x alpha_y: "
-     "brushed gold's highlight stretches along the tangent"),
-    ("sweep_ggx_conductor_multiscatter", ["--model", "ggx_conductor", "--param", "multiscatter", "--from", "0",
-                                          "--to", "1", "--set", "alpha_x=0.8", "--set", "alpha_y=0.8",
-                                          "--set", "metal=Ag"],
-     "mean", "increasing",
-     "Kulla and Conty's term adds back, in proportion to multiscatter, the light single scattering loses between "
-     "the facets of a rough surface: a third of it at alpha 0.8"),
-    ("sweep_ggx_dielectric_alpha_x", ["--model", "ggx_dielectric", "--param", "alpha_x", "--from", "0.02", "--to",
-                                      "0.6", "--log", "--set", "alpha_y=0.05"],
-     "highlight_area", "increasing",
-     "the reflected highlight of rough glass, GGX's D on an ellipse of half-vector slopes whose area grows like "
-     "alpha_x alpha_y, stretches along the tangent"),
-]
+def sweeps(raylab):
+    """(name, raylab sweep arguments, statistic, trend, why) of every `// sweep scene:` line of the registered models'
+    GLSL headers (docs/extending.md), in the registry's order."""
+    models = json.loads(subprocess.run([raylab, "brdf", "models", "--json"], check=True, capture_output=True,
+                                       text=True).stdout)
+    result = []
+    for model in models:
+        if model["glsl"].startswith("tests/"):
+            continue
+        for sweep in raylab_tools.model_notes(model)["sweep_scenes"]:
+            arguments = ["--model", model["name"], "--param", sweep["param"], "--from", sweep["start"],
+                         "--to", sweep["stop"]] + (["--log"] if sweep["log"] else [])
+            for value in sweep["set"]:
+                arguments += ["--set", value]
+            result.append(("sweep_%s_%s" % (model["name"], sweep["param"]), arguments, sweep["statistic"],
+                           sweep["trend"], sweep["why"]))
+    return result
 
 
 def sweep_scene(raylab, name, arguments, statistic, trend, why):
@@ -516,21 +466,8 @@ def showcase_objects(g):
     light = g.material("checker light", {"model": "lambert", "rho_d": [0.7, 0.7, 0.68]}, (0.7, 0.7, 0.68))
     dark = g.material("checker dark", {"model": "lambert", "rho_d": [0.18, 0.18, 0.2]}, (0.18, 0.18, 0.2))
     add_checker(g, "floor", (-10.0, 10.0), (-8.0, 8.0), 0.0, 1.0, (light, dark))
-    models = [
-        ("lambert", {"model": "lambert", "rho_d": [0.75, 0.2, 0.15]}),
-        ("phong", {"model": "phong", "rho_d": [0.7, 0.5, 0.1], "rho_s": [0.3, 0.3, 0.3], "s": 60}),
-        ("blinnphong", {"model": "blinnphong", "rho_d": [0.3, 0.65, 0.2], "rho_s": [0.3, 0.3, 0.3], "s": 120}),
-        ("cooktorrance", {"model": "cooktorrance", "rho_d": [0.1, 0.3, 0.7], "rho_s": [1.0, 1.0, 1.0],
-                          "m": 0.15, "eta": 1.5}),
-        ("ward", {"model": "ward", "rho_d": [0.15, 0.1, 0.05], "rho_s": [0.9, 0.7, 0.4],
-                  "alpha_x": 0.08, "alpha_y": 0.4}),
-        ("ward_duer", {"model": "ward_duer", "rho_d": [0.4, 0.1, 0.5], "rho_s": [0.5, 0.5, 0.5],
-                       "alpha_x": 0.2, "alpha_y": 0.2}),
-        ("ward_gmd", {"model": "ward_gmd", "rho_d": [0.1, 0.45, 0.45], "rho_s": [0.5, 0.5, 0.5],
-                      "alpha_x": 0.15, "alpha_y": 0.15}),
-        ("ashikhmin_shirley", {"model": "ashikhmin_shirley", "Rd": [0.6, 0.3, 0.5], "Rs": [0.05, 0.05, 0.05],
-                               "nu": 1000, "nv": 40}),
-        ("glass", {"model": "glass", "eta": 1.5, "tint": [0.95, 0.98, 1.0]}),
+    models = [(name, LOOKS[name]) for name in ("lambert", "phong", "blinnphong", "cooktorrance", "ward", "ward_duer",
+                                                "ward_gmd", "ashikhmin_shirley", "glass")] + [
         ("mirror", {"model": "cooktorrance", "rho_d": [0.02, 0.02, 0.02], "rho_s": [1.0, 1.0, 1.0], "m": 0.05,
                     "eta": 10.0, "delta": 0.85}),
     ]
@@ -621,14 +558,17 @@ def main():
         sys.exit("make_scenes.py: %s is not an executable: build raylab first, or give --raylab" % options.raylab)
     if options.gallery:
         os.makedirs(options.gallery, exist_ok=True)
-        for name, arguments, *_ in SWEEPS:
+        for name, arguments, *_ in sweeps(options.raylab):
             path = gallery_figure(options.raylab, name, arguments, options.gallery)
             print("wrote %s (%d bytes)" % (os.path.relpath(path), os.path.getsize(path)))
         return
     os.makedirs(options.directory, exist_ok=True)
     METAL_F0.update(metal_presets(options.raylab))
-    sweeps = [sweep_scene(options.raylab, *sweep) for sweep in SWEEPS]
-    for scene in sweeps + [showcase(), showcase_hdri(), showcase_modern(), cornell_box(), cornell_box_area(), minimal()]:
+    models = json.loads(subprocess.run([options.raylab, "brdf", "models", "--json"], check=True, capture_output=True,
+                                       text=True).stdout)
+    LOOKS.update({model["name"]: raylab_tools.look_material(model) for model in models})
+    documents = [sweep_scene(options.raylab, *sweep) for sweep in sweeps(options.raylab)]
+    for scene in documents + [showcase(), showcase_hdri(), showcase_modern(), cornell_box(), cornell_box_area(), minimal()]:
         path = scene.write(options.directory)
         print("wrote %s (%d bytes)" % (os.path.relpath(path), os.path.getsize(path)))
 
