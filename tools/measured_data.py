@@ -308,7 +308,8 @@ def raylab_material(family: str, lambert, params: dict) -> tuple[str, dict]:
                                 "m": within("roughness", params["roughness"], 0.001, 1.0),
                                 "eta": within("eta from F0", eta, 1.0, 10.0)}
     if family == "NganLafortune":
-        return "lafortune", {"rho_d": rho_d, "rho_s": within("albedo", [float(v) for v in _rgb(params["albedo"])], 0.0, 2.0),
+        albedo = [float(v) for v in _rgb(params["albedo"])]
+        return "lafortune", {"rho_d": rho_d, "rho_s": within("albedo", albedo, 0.0, 2.0),
                              "cx": within("Cxy", params["Cxy"], -1.0, 1.0), "cy": params["Cxy"],
                              "cz": within("Cz", params["Cz"], -1.0, 1.0),
                              "n": within("sharpness", params["sharpness"], 1.0, 20000.0), "rho_s2": [0.0, 0.0, 0.0]}

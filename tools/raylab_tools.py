@@ -71,7 +71,8 @@ def model_notes(model: dict) -> dict:
     """What a model's GLSL header says for the tools, parsed as the build parses it (tools/cmake/brdf_registry.py):
     `look` (the parameter list scenes show it with, or None), `figures` ([{name, params, options}]) and
     `sweep_scenes` ([{param, start, stop, log, set, statistic, trend, why}])."""
-    sys.path.insert(0, str(REPO / "tools" / "cmake"))
+    if str(REPO / "tools" / "cmake") not in sys.path:
+        sys.path.insert(0, str(REPO / "tools" / "cmake"))
     import brdf_registry  # noqa: E402 (the build's parser of the headers, standard library only)
     return brdf_registry.parse_model(model["name"], "", "", str(REPO / model["glsl"]))
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -204,6 +205,35 @@ TEST(CliTest, RenderWritesExrAndPngAndReportsTimings) {
   for (std::size_t i = 0; i < image.rgba.size(); i += 4) brightest = std::max(brightest, image.rgba[i]);
   EXPECT_GT(brightest, 0.05f) << "the default scene rendered black";
   EXPECT_GT(std::filesystem::file_size(png), 100u);
+}
+
+// The tests run lavapipe with 128-bit vectors (LP_NATIVE_VECTOR_WIDTH=128, tests/CMakeLists.txt), and the
+// compile-bound ones with LLVM's optimisation passes off (GALLIVM_PERF=nopt): a cold suite compiles in about half
+// the time. That is only sound while the images do not depend on either: the same scenes under the driver's defaults
+// (256-bit vectors on AVX2 machines, optimised) and under the tests' settings give the same pixels, bit for bit (the
+// GLSL's arithmetic is per lane and LLVM keeps IEEE semantics; what the settings change is how many lanes run at
+// once, the subgroup size, and how fast the code runs).
+TEST(CliTest, ImagesDoNotDependOnTheDriverSettingsTheTestsUse) {
+  const std::string dir = scratchDir();
+  for (const char* scene : {"showcase_modern", "showcase"}) {
+    std::vector<float> pixels[2];
+    const std::vector<std::string> settings[2] = {{"LP_NATIVE_VECTOR_WIDTH=256", "GALLIVM_PERF="},
+                                                  {"LP_NATIVE_VECTOR_WIDTH=128", "GALLIVM_PERF=nopt"}};
+    for (int k = 0; k < 2; ++k) {
+      const std::string exr = dir + "/driver_settings_" + std::to_string(k) + ".exr";
+      const CommandResult result =
+          runRaylab({"render", std::string(RAYLAB_SOURCE_DIR) + "/assets/scenes/" + scene + ".gltf", "--width", "64",
+                     "--height", "48", "--spp", "2", "--out", exr, "--no-png"},
+                    settings[k]);
+      ASSERT_EQ(result.exitCode, 0) << scene << " with " << settings[k][0] << ":\n" << result.output;
+      pixels[k] = readExr(exr).rgba;
+    }
+    ASSERT_EQ(pixels[0].size(), pixels[1].size());
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < pixels[0].size(); ++i) differing += std::memcmp(&pixels[0][i], &pixels[1][i], 4) != 0;
+    EXPECT_EQ(differing, 0u) << scene << ": " << differing
+                             << " channel values differ between the driver's defaults and the tests' settings";
+  }
 }
 
 // The cost map: a false-colour PNG and the raw clock ticks per sample beside it, positive where the scene is,

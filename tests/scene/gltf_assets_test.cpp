@@ -42,6 +42,7 @@ const std::map<std::string, Expected> kExpected = {
     {"sweep_oren_nayar_sigma", {8, 1, 0}},
     {"sweep_phong_rho_s", {8, 1, 0}},
     {"sweep_phong_s", {8, 1, 0}},
+    {"sweep_lafortune_rho_s2", {8, 1, 0}},
     {"sweep_ward_alpha_y", {8, 1, 0}},
 };
 
