@@ -20,6 +20,7 @@ tests/scene/scene_render_test.cpp checks along the row, its trend and the physic
 
 import argparse
 import base64
+import functools
 import json
 import math
 import os
@@ -107,11 +108,16 @@ LOOKS = {}
 METAL_F0 = {}
 
 
+@functools.lru_cache(maxsize=None)
+def registry(raylab):
+    """The BRDF model registry as `raylab brdf models --json` prints it."""
+    return json.loads(subprocess.run([raylab, "brdf", "models", "--json"], check=True, capture_output=True,
+                                     text=True).stdout)
+
+
 def metal_presets(raylab):
     """{name: F0 RGB} of ggx_conductor's named metals, as the raylab binary declares them."""
-    models = json.loads(subprocess.run([raylab, "brdf", "models", "--json"], check=True, capture_output=True,
-                                       text=True).stdout)
-    conductor = next(model for model in models if model["name"] == "ggx_conductor")
+    conductor = next(model for model in registry(raylab) if model["name"] == "ggx_conductor")
     return {preset["name"]: [((n - 1) ** 2 + k * k) / ((n + 1) ** 2 + k * k)
                              for n, k in zip(preset["values"]["eta"], preset["values"]["k"])]
             for preset in conductor["presets"] if preset["key"] == "metal"}
@@ -341,10 +347,8 @@ def add_checker(gltf, name, x_range, z_range, height, tile, materials):
 def sweeps(raylab):
     """(name, raylab sweep arguments, statistic, trend, why) of every `// sweep scene:` line of the registered models'
     GLSL headers (docs/extending.md), in the registry's order."""
-    models = json.loads(subprocess.run([raylab, "brdf", "models", "--json"], check=True, capture_output=True,
-                                       text=True).stdout)
     result = []
-    for model in models:
+    for model in registry(raylab):
         if model["glsl"].startswith("tests/"):
             continue
         for sweep in raylab_tools.model_notes(model)["sweep_scenes"]:
@@ -564,9 +568,7 @@ def main():
         return
     os.makedirs(options.directory, exist_ok=True)
     METAL_F0.update(metal_presets(options.raylab))
-    models = json.loads(subprocess.run([options.raylab, "brdf", "models", "--json"], check=True, capture_output=True,
-                                       text=True).stdout)
-    LOOKS.update({model["name"]: raylab_tools.look_material(model) for model in models})
+    LOOKS.update({model["name"]: raylab_tools.look_material(model) for model in registry(options.raylab)})
     documents = [sweep_scene(options.raylab, *sweep) for sweep in sweeps(options.raylab)]
     for scene in documents + [showcase(), showcase_hdri(), showcase_modern(), cornell_box(), cornell_box_area(), minimal()]:
         path = scene.write(options.directory)
