@@ -72,6 +72,30 @@ double solveBlock(const std::vector<const FitPair*>& pairs, const ModelPlan& pla
   return std::isfinite(cost) ? cost : INFINITY;
 }
 
+// The metric's cost of x on `pairs`, with its linear blocks solved by least squares in turn (`cycles` times when
+// there are several) and written into x.
+double solvedCost(const std::vector<const FitPair*>& pairs, const ModelPlan& plan, FitMetric metric, int cycles,
+                  std::vector<double>& x) {
+  if (plan.blocks.empty()) {
+    reference::Material material = plan.base;
+    applyVariables(plan.variables, x.data(), material);
+    double cost = 0.0;
+    for (const FitPair* pair : pairs) {
+      const glm::dvec3 f = reference::eval(material, pair->wi, pair->wo);
+      for (int c = 0; c < 3; ++c) {
+        const double r = residual(metric, pair->f[c], f[c], pair->wi.z);
+        cost += pair->weight * r * r;
+      }
+    }
+    return std::isfinite(cost) ? cost : INFINITY;
+  }
+  double cost = INFINITY;
+  for (int cycle = 0; cycle < cycles; ++cycle) {
+    for (const std::vector<int>& block : plan.blocks) cost = solveBlock(pairs, plan, block, metric, x);
+  }
+  return cost;
+}
+
 }  // namespace
 
 // min over lo <= a <= hi of a'Aa - 2 b'a (A positive semi-definite, n <= 4): the optimum of a convex quadratic
@@ -174,8 +198,7 @@ std::optional<std::vector<double>> channelSearch(const FitTarget& coarse, const 
         trial[std::size_t(colour[std::size_t(c)])] = values.back();
       }
       // The other channels are held, so the cost ranks this channel's points (f's channels are separate).
-      double cost = 0.0;
-      for (const std::vector<int>& block : plan.blocks) cost = solveBlock(pairs, plan, block, metric, trial);
+      const double cost = solvedCost(pairs, plan, metric, 1, trial);
       if (cost < bestCost) {
         bestCost = cost;
         bestValues = values;
@@ -185,7 +208,7 @@ std::optional<std::vector<double>> channelSearch(const FitTarget& coarse, const 
       repaired[std::size_t(plan.nonlinearColours[a][std::size_t(c)])] = bestValues[a];
     }
   }
-  for (const std::vector<int>& block : plan.blocks) solveBlock(pairs, plan, block, metric, repaired);
+  solvedCost(pairs, plan, metric, 1, repaired);
   return repaired;
 }
 
@@ -248,25 +271,8 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
   std::vector<Scored> scored;
   const int cycles = plan.blocks.size() > 1 ? 3 : 1;
   for (std::size_t index = 0; index < xs.size(); ++index) {
-    std::vector<double>& x = xs[index];
-    double cost = INFINITY;
-    if (plan.blocks.empty()) {
-      reference::Material material = plan.base;
-      applyVariables(plan.variables, x.data(), material);
-      cost = 0.0;
-      for (const FitPair* pair : pairs) {
-        const glm::dvec3 f = reference::eval(material, pair->wi, pair->wo);
-        for (int c = 0; c < 3; ++c) {
-          const double r = residual(metric, pair->f[c], f[c], pair->wi.z);
-          cost += pair->weight * r * r;
-        }
-      }
-      if (!std::isfinite(cost)) cost = INFINITY;
-    }
-    for (int cycle = 0; cycle < cycles; ++cycle) {
-      for (const std::vector<int>& block : plan.blocks) cost = solveBlock(pairs, plan, block, metric, x);
-    }
-    scored.push_back({x, cost, index >= firstGrey});
+    const double cost = solvedCost(pairs, plan, metric, cycles, xs[index]);
+    scored.push_back({xs[index], cost, index >= firstGrey});
   }
   std::stable_sort(scored.begin(), scored.end(), [](const Scored& a, const Scored& b) { return a.cost < b.cost; });
   std::vector<Scored> chosen;
