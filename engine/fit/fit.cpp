@@ -275,10 +275,10 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
     int pending = 0;  // starts not finished
     StartResult best;
     double searchSeconds = 0.0;
-    double repairSeconds = 0.0;
+    double channelSearchSeconds = 0.0;
   };
   std::vector<Chain> chains(plans.size());
-  enum class Step { kSearch, kStart, kRepair, kPolish };
+  enum class Step { kSearch, kStart, kChannelSearch, kPolish };
   struct Task {
     Step step;
     std::size_t model;
@@ -320,7 +320,7 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
     chain.best = *best;
     chain.best.seconds = 0.0;
     if (searched && !plans[m].nonlinearColours.empty()) {
-      ready.push_back({Step::kRepair, m});
+      ready.push_back({Step::kChannelSearch, m});
       ++total;
     } else if (coarseToFine) {
       ready.push_back({Step::kPolish, m});
@@ -356,19 +356,17 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
           chain.results[task.start] = solveStart(startTarget, plans[task.model], chain.starts[task.start],
                                                  options.metric, coarseToFine ? kMaxCoarseIterations : kMaxIterations);
           seconds = chain.results[task.start].seconds;
-        } else if (task.step == Step::kRepair) {
+        } else if (task.step == Step::kChannelSearch) {
           const Stopwatch clock;
-          if (const auto start = channelSearch(coarse, plans[task.model], options.metric, chain.best.x)) {
-            StartResult repaired = solveStart(startTarget, plans[task.model], *start, options.metric,
-                                              coarseToFine ? kMaxCoarseIterations : kMaxIterations);
-            if (!repaired.failed && repaired.cost < chain.best.cost) {
-              repaired.seconds = 0.0;
-              chain.best = std::move(repaired);
-            }
+          StartResult fromGrid = solveStart(startTarget, plans[task.model],
+                                            channelSearch(coarse, plans[task.model], options.metric, chain.best.x),
+                                            options.metric, coarseToFine ? kMaxCoarseIterations : kMaxIterations);
+          if (!fromGrid.failed && fromGrid.cost < chain.best.cost) {
+            fromGrid.seconds = 0.0;
+            chain.best = std::move(fromGrid);
           }
-          seconds = clock.seconds();
-          chain.repairSeconds = seconds;
-          label += " repair";
+          seconds = chain.channelSearchSeconds = clock.seconds();
+          label += " channel search";
         } else {
           StartResult fine = solveStart(target, plans[task.model], chain.best.x, options.metric);
           seconds = fine.seconds;
@@ -390,7 +388,7 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
         total += int(chain.starts.size()) + (coarseToFine ? 1 : 0) - options.starts - (coarseToFine ? 1 : 0);
       } else if (task.step == Step::kStart && --chain.pending == 0) {
         finishStarts(task.model);
-      } else if (task.step == Step::kRepair && coarseToFine) {
+      } else if (task.step == Step::kChannelSearch && coarseToFine) {
         ready.push_back({Step::kPolish, task.model});
       }
       ++done;
@@ -411,7 +409,7 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
     FitResult fit;
     fit.model = std::string(plans[m].model->name);
     const Chain& chain = chains[m];
-    fit.seconds = chain.searchSeconds + chain.repairSeconds + chain.best.seconds;
+    fit.seconds = chain.searchSeconds + chain.channelSearchSeconds + chain.best.seconds;
     for (const StartResult& r : chain.results) {
       fit.seconds += r.seconds;
       ++fit.starts;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 namespace raylab::fitting {
 
@@ -170,9 +169,8 @@ std::vector<double> boxLeastSquares(const std::vector<double>& A, const std::vec
   return best;
 }
 
-std::optional<std::vector<double>> channelSearch(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric,
-                                                 const std::vector<double>& x) {
-  if (plan.nonlinearColours.empty()) return std::nullopt;
+std::vector<double> channelSearch(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric,
+                                  const std::vector<double>& x) {
   std::vector<const FitPair*> pairs;
   for (const FitPair& pair : coarse.pairs) pairs.push_back(&pair);
   // A grid of about kChannelPoints points per channel over the nonlinear colours' values, each axis drawn densest near

@@ -4,7 +4,6 @@
 // engine/fit.
 #pragma once
 
-#include <optional>
 #include <random>
 #include <vector>
 
@@ -34,8 +33,8 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
 // A start that searches each channel again with the rest of `x` held (the width, the other channels): a grid over the
 // channel's values of the nonlinear colours, its linear values solved at each point. Levenberg-Marquardt does not
 // move one channel from a wrong basin to its neighbours' (a plastic's green fitted as a mirror: eta at its lower
-// bound, k large, its specular scale near 0). Nothing for a model without nonlinear colours.
-std::optional<std::vector<double>> channelSearch(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric,
+// bound, k large, its specular scale near 0). For a model with nonlinear colours (plan.nonlinearColours).
+std::vector<double> channelSearch(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric,
                                                  const std::vector<double>& x);
 
 // min over lo <= a <= hi of a'Aa - 2 b'a for A (n x n, row-major) positive semi-definite and small n.

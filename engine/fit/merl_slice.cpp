@@ -54,7 +54,10 @@ MerlSlice decodeMerlSlice(const std::string& bytes, const std::string& where) {
       const std::size_t sample = i / 3;
       throw Error(where + ": the value at theta_d row " + std::to_string(sample / kSliceThetaH) + ", theta_h column " +
                   std::to_string(sample % kSliceThetaH) + ", " + kChannels[i % 3] + " is " +
-                  (std::isnan(v) ? "NaN" : std::isinf(v) ? (v > 0 ? "inf" : "-inf") : v < 0.0f ? "negative" : "above " + numberText(kMaxRadiance)) +
+                  (std::isnan(v)   ? "NaN"
+                   : std::isinf(v) ? (v > 0 ? "inf" : "-inf")
+                   : v < 0.0f      ? "negative"
+                                   : "above " + numberText(kMaxRadiance)) +
                   "; a slice holds finite f >= 0, at most " + numberText(kMaxRadiance) + " /sr (the bound on radiance)",
                   kExitUsage);
     }
