@@ -57,13 +57,18 @@ def main(argv=None) -> int:
     parser.add_argument("material", metavar="MATERIAL", help="the measured material's name (blue-acrylic)")
     parser.add_argument("--gltf", action="store_true", help="print the glTF extras.raylab block instead")
     args = parser.parse_args(argv)
+    family = "published"
     try:
         family, lambert, params = read_fit(args.fit_file, args.material)
+        model, values = md.raylab_material(family, lambert, params)
     except (md.DataError, OSError) as error:
         print(f"published_fits.py: error: {error}", file=sys.stderr)
         return 2
-    try:
-        model, values = md.raylab_material(family, lambert, params)
+    except KeyError as missing:
+        # A column or parameter the family's formula needs is missing, or not a number ("sharpness = nan").
+        print(f"published_fits.py: error: {args.fit_file}: the {family} fit of {args.material} has no number for "
+              f"{missing}", file=sys.stderr)
+        return 2
     except md.NotExpressible as reason:
         print(f"published_fits.py: {args.material} in {args.fit_file.name} ({family}) cannot be expressed exactly by "
               f"raylab's models: {reason}", file=sys.stderr)

@@ -144,6 +144,26 @@ def test_published_fits_tool_writes_what_raylab_evaluates_as_the_paper_does(caps
     assert block["model"] == "lafortune" and block["n"] == 6630.0 and block["cx"] == block["cy"] == -0.577
 
 
+def test_published_fits_tool_refuses_what_is_not_a_fit_file(work, capsys):
+    """Runs without ../shared/measured: a FIFO, a directory, a line whose parameter is not a number and a table without
+    the family's columns are each an error naming the file (exit 2), never a traceback."""
+    import os
+    import published_fits
+    fifo = work / "pipe.fit"
+    os.mkfifo(fifo)
+    folder = work / "folder.fit"
+    folder.mkdir()
+    nan = work / "nan.fit"
+    nan.write_text("x = Aggregate(Lambertian(albedo = [0.1, 0.1, 0.1]), NganLafortune(albedo = [0.1, 0.1, 0.1], "
+                   "Cxy = -0.5, Cz = 0.5, sharpness = nan))\n")
+    columns = work / "columns.csv"
+    columns.write_text("name,A_r\nx,1\n")
+    for path, message in ((fifo, "not a regular file"), (folder, "not a regular file"), (nan, "'sharpness'"),
+                          (columns, "'kD_r'")):
+        assert published_fits.main([str(path), "x"]) == 2, path
+        assert message in capsys.readouterr().err, path
+
+
 def test_fit_arguments_are_checked_as_the_command_line_checks_them(work):
     """Runs without ../shared/measured: a weighted CSV target, and the arguments users get wrong."""
     raylab = md.import_raylab()
