@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "util/error.h"
+#include "vk/driver_shader_cache.h"
 #include "vk/vk_check.h"
 
 namespace raylab {
@@ -232,6 +233,7 @@ T loadDeviceFunction(VkDevice device, const char* name) {
 }  // namespace
 
 Instance createInstance(const InstanceOptions& options) {
+  separateShaderCacheByDriverSettings();  // before anything loads the driver
   Instance instance;
   instance.validation = options.validation || envFlag("RAYLAB_VALIDATION");
   if (instance.validation && !hasLayer(kValidationLayer)) {

@@ -30,7 +30,7 @@ std::string findXvfbRun() {
   return "";
 }
 
-CommandResult runView(const std::vector<std::string>& arguments) {
+CommandResult runView(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
   const std::string xvfbRun = findXvfbRun();
   if (xvfbRun.empty()) {
     ADD_FAILURE() << "xvfb-run is not installed: run tools/setup.sh test (it installs the packages xvfb and xauth)";
@@ -38,7 +38,7 @@ CommandResult runView(const std::vector<std::string>& arguments) {
   }
   std::vector<std::string> command = {xvfbRun, "-a", "-s", "-screen 0 1024x768x24", RAYLAB_BINARY, "view"};
   command.insert(command.end(), arguments.begin(), arguments.end());
-  return runCommand(command);
+  return runCommand(command, environment);
 }
 
 std::string writeScript(const std::string& name, const std::string& text) {

@@ -17,8 +17,8 @@ inline const std::string kMinimalScene = std::string(RAYLAB_SOURCE_DIR) + "/asse
 std::string scratchDir();
 // xvfb-run from PATH; empty when it is not installed.
 std::string findXvfbRun();
-// Runs `raylab view ARGS` on a private X server.
-CommandResult runView(const std::vector<std::string>& arguments);
+// Runs `raylab view ARGS` on a private X server; `environment` as runCommand's.
+CommandResult runView(const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {});
 std::string writeScript(const std::string& name, const std::string& text);
 // Exit 0 and no validation message.
 void expectCleanRun(const CommandResult& result);
