@@ -280,7 +280,7 @@ class NotExpressible(Exception):
 
 
 def raylab_material(family: str, lambert, params: dict) -> tuple[str, dict]:
-    """The raylab model and parameters that equal a published Ngan fit exactly (docs/measured.md, "Published fits");
+    """The raylab model and parameters that equal a published fit exactly (docs/measured.md, "Published fits");
     NotExpressible with the reason otherwise."""
     rho_d = [float(v) for v in _rgb(lambert)]
 
@@ -316,20 +316,42 @@ def raylab_material(family: str, lambert, params: dict) -> tuple[str, dict]:
     if family == "NganAshikhminShirley":
         raise NotExpressible("raylab's ashikhmin_shirley has the paper's coupled diffuse term (28/23 (1 - Rs) ...) "
                              "and no specular scale; Ngan's has a Lambert term and a scale")
+    if family == "LowMicrofacetFit":
+        return "abc_microfacet", {"rho_d": rho_d, "a": within("A", [float(v) for v in _rgb(params["A"])], 0.0, 1e5),
+                                  "b": within("B", float(params["B"]), 1.0, 1e8),
+                                  "c": within("C", float(params["C"]), 0.01, 4.0),
+                                  "ior": within("eta", float(params["eta"]), 1.0, 100.0)}
+    if family == "Bagher":  # bbm's names for the same fits as dj_brdf's BagherSGD
+        family, params = "BagherSGD", {"rhoS": params["albedo"], "alpha": params["alpha"], "p": params["p"],
+                                       "f0": params["eta"][0], "f1": params["eta"][1], "kap": params["K"],
+                                       "lambda": params["Lambda"], "c": params["c"], "k": params["k"],
+                                       "theta0": params["theta0"]}
+    if family == "BagherSGD":
+        rgb = {key: [float(v) for v in _rgb(params[key])] for key in params}
+        return "sgd", {"rho_d": rho_d, "rho_s": within("rhoS kap", [s * k for s, k in zip(rgb["rhoS"], rgb["kap"])],
+                                                       0.0, 1e6),
+                       "alpha": within("alpha", rgb["alpha"], 1e-6, 1.0), "p": within("p", rgb["p"], 0.0, 2.0),
+                       "f0": within("f0", rgb["f0"], 0.0, 10.0), "f1": within("f1", rgb["f1"], -1.0, 10.0),
+                       "lambda": within("lambda", rgb["lambda"], 0.0, 1e8), "c": within("c", rgb["c"], 0.0, 1e38),
+                       "k": within("k", rgb["k"], 0.1, 1000.0), "theta0": within("theta0", rgb["theta0"], -1.0, 1.5)}
     raise NotExpressible(f"raylab has no model of the family {family} (issue: the measured-BRDF models)")
 
 
-# How each Ngan family maps onto raylab's model of the same name (bbm's ngan.h conventions), for the docs.
-NGAN_MAPPINGS = {
-    "ward": "`ward`: rho_d = the Lambert albedo, rho_s = albedo, alpha_x = alpha_y = roughness",
-    "ward_duer": "`ward_duer`: as Ward",
-    "phong": "`phong` (bbm reads Ngan's Blinn-Phong as the modified Phong about the mirror direction): rho_s = "
-             "albedo, s = sharpness",
-    "cooktorrance": "`cooktorrance`: rho_s = 4 albedo / pi (Cook's 1/(pi cos cos) against raylab's 1/(4 cos cos)), "
-                    "eta = (1 + sqrt F0) / (1 - sqrt F0) from Schlick's F0 (bbm's \"eta\"), m = roughness",
-    "ashikhmin_shirley": "none: raylab's `ashikhmin_shirley` is the paper's whole model",
-    "lafortune": "`lafortune` (one lobe, Ngan's normalisation (n+2)/(2 pi max|C|^n)): rho_s = albedo, cx = cy = Cxy, "
-                 "cz = Cz, n = sharpness, rho_s2 = 0",
+# How each published family maps onto a raylab model (bbm's ngan.h and dj_brdf's conventions), for the docs; keyed by
+# the label of published_fits().
+MAPPINGS = {
+    "Ngan ward": "`ward`: rho_d = the Lambert albedo, rho_s = albedo, alpha_x = alpha_y = roughness",
+    "Ngan ward_duer": "`ward_duer`: as Ward",
+    "Ngan phong": "`phong` (bbm reads Ngan's Blinn-Phong as the modified Phong about the mirror direction): "
+                  "rho_s = albedo, s = sharpness",
+    "Ngan cooktorrance": "`cooktorrance`: rho_s = 4 albedo / pi (Cook's 1/(pi cos cos) against raylab's "
+                         "1/(4 cos cos)), eta = (1 + sqrt F0) / (1 - sqrt F0) from Schlick's F0 (bbm's \"eta\"), m = roughness",
+    "Ngan ashikhmin_shirley": "none: raylab's `ashikhmin_shirley` is the paper's whole model",
+    "Ngan lafortune": "`lafortune` (one lobe, Ngan's normalisation (n+2)/(2 pi max|C|^n)): rho_s = albedo, "
+                      "cx = cy = Cxy, cz = Cz, n = sharpness, rho_s2 = 0",
+    "Löw ABC": "`abc_microfacet` (the fits' own form, with their 1/pi): rho_d = kD, a = A, b = B, c = C, ior = ior",
+    "Bagher SGD": "`sgd` (dj_brdf's form; F clamped at 0): rho_d = rhoD, rho_s = rhoS kap, the other ten by name "
+                  "(lambda = Lambda, f0 and f1 = bbm's eta pair)",
 }
 
 # The published families of the study: (label, file, reader) in the order of docs/measured.md.

@@ -76,13 +76,12 @@ def mapping_check(raylab, fits_by_label: dict, slices: dict[str, Path], publishe
     """For the published fits raylab expresses exactly: raylab's own error of the mapped material against the
     formula's, the largest difference over the materials."""
     lines = []
-    for model, (family, _) in md.NGAN_FAMILIES.items():
-        label = f"Ngan {model}"
+    for label, mapping in md.MAPPINGS.items():
         worst, count, refused = 0.0, 0, defaultdict(int)
         for material, path in slices.items():
             if material not in fits_by_label[label]:
                 continue
-            _, lambert, params = fits_by_label[label][material]
+            family, lambert, params = fits_by_label[label][material]
             try:
                 rmodel, rparams = md.raylab_material(family, lambert, params)
             except md.NotExpressible as reason:
@@ -95,7 +94,7 @@ def mapping_check(raylab, fits_by_label: dict, slices: dict[str, Path], publishe
             worst = max(worst, abs(error - mine) / mine)
             count += 1
         note = "; ".join(f"{n} refused ({why})" for why, n in refused.items())
-        lines.append(f"| Ngan {model} | {md.NGAN_MAPPINGS[model]} | {count} | "
+        lines.append(f"| {label} | {mapping} | {count} | "
                      f"{worst:.1e} | {note or '—'} |")
     return lines
 

@@ -46,10 +46,10 @@ float log1pOverX(float x) {
   return log(1.0 + x) / x;
 }
 
-// exp(x) - 1 for x <= 0 without the cancellation of exp(x) - 1 near 0: Taylor series below 1/2 in size
-// (the first omitted term is 0.5^10/10! = 3e-10 relative).
+// exp(x) - 1 without the cancellation of exp(x) - 1 near 0: Taylor series below 1/2 in size (the first omitted
+// term is 0.5^10/10! = 3e-10 relative).
 float expm1Accurate(float x) {
-  if (x > -0.5) {
+  if (abs(x) < 0.5) {
     return x * (1.0 + x * (1.0 / 2.0 + x * (1.0 / 6.0 + x * (1.0 / 24.0 + x * (1.0 / 120.0 + x * (1.0 / 720.0 +
            x * (1.0 / 5040.0 + x * (1.0 / 40320.0 + x * (1.0 / 362880.0)))))))));
   }

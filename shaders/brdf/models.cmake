@@ -20,3 +20,5 @@ raylab_brdf_model(ggx_conductor PREFIX ggxConductor GLSL brdf/ggx_conductor.glsl
 raylab_brdf_model(ggx_dielectric PREFIX ggxDielectric GLSL brdf/ggx_dielectric.glsl REFERENCE ${reference}/ggx_dielectric.cpp)
 raylab_brdf_model(measured PREFIX measured GLSL brdf/measured.glsl REFERENCE ${reference}/measured.cpp)
 raylab_brdf_model(lafortune PREFIX lafortune GLSL brdf/lafortune.glsl REFERENCE ${reference}/lafortune.cpp)
+raylab_brdf_model(abc_microfacet PREFIX abcMicrofacet GLSL brdf/abc_microfacet.glsl REFERENCE ${reference}/abc_microfacet.cpp)
+raylab_brdf_model(sgd PREFIX sgd GLSL brdf/sgd.glsl REFERENCE ${reference}/sgd.cpp)

@@ -4,6 +4,7 @@
 // the hard cases (sharp lobes, cosines of 1e-7), the shading frame and the sampler's bookkeeping.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -156,6 +157,29 @@ TEST(BrdfReference, LafortuneLobesAreTheirClosedForms) {
   const dvec3 w = direction(50, 20);
   EXPECT_NEAR(reference::eval(retro, w, w).x, 52.0 / (2.0 * kPi), 1e-12);
   EXPECT_LT(reference::eval(retro, w, direction(50, 200)).x, 1e-6);
+}
+
+// Löw's ABC microfacet model written out in angles: wi at 60 deg and wo at 30 deg on the other side put H 15 deg from
+// n and 45 deg from wo; F is the textbook Fresnel pair with Snell's cos theta_t; at the normal f = (rho_d + A F0)/pi.
+TEST(BrdfReference, AbcMicrofacetIsItsFormulaInAngles) {
+  const dvec3 wi = direction(60, 0);
+  const dvec3 wo = direction(30, 180);
+  const double cosI = 0.5, cosO = std::cos(30 * kDegree), cosH = std::cos(15 * kDegree), VoH = std::cos(45 * kDegree);
+  for (const auto& [a, b, c, ior] : {std::array<double, 4>{100, 2000, 1.25, 1.5}, std::array<double, 4>{8, 30, 0.5, 20},
+                                     std::array<double, 4>{1100, 262144, 1, 1.25}}) {
+    const Material abc = makeMaterial("abc_microfacet", {{"rho_d", 0.25}, {"a", a}, {"b", b}, {"c", c}, {"ior", ior}});
+    const double cosT = std::sqrt(1.0 - (1.0 - VoH * VoH) / (ior * ior));
+    const double rs = (VoH - ior * cosT) / (VoH + ior * cosT);
+    const double rp = (ior * VoH - cosT) / (ior * VoH + cosT);
+    const double F = 0.5 * (rs * rs + rp * rp);
+    const double G = std::min({1.0, 2.0 * cosH * cosO / VoH, 2.0 * cosH * cosI / VoH});
+    const double D = a / std::pow(1.0 + b * (1.0 - cosH), c);
+    const double expected = 0.25 / kPi + D * F * G / (kPi * cosI * cosO);
+    EXPECT_NEAR(reference::eval(abc, wi, wo).x, expected, 1e-12 * expected) << a << " " << b << " " << c;
+    const double f0 = (ior - 1.0) * (ior - 1.0) / ((ior + 1.0) * (ior + 1.0));
+    const dvec3 n(0.0, 0.0, 1.0);
+    EXPECT_NEAR(reference::eval(abc, n, n).x, (0.25 + a * f0) / kPi, 1e-12 * (0.25 + a * f0) / kPi);
+  }
 }
 
 TEST(BrdfReference, ValuesOffThePeakMatchTheFormulasInAngles) {

@@ -58,6 +58,10 @@ std::vector<SamplingCase> samplingCases() {
       {"ggx_conductor", {{"alpha_x", 0.1}, {"alpha_y", 0.5}, {"eta", 1.5}, {"k", 0}}},
       {"ggx_dielectric", {{"alpha_x", 0.3}, {"alpha_y", 0.3}, {"eta", 1.5}}},
       {"ggx_dielectric", {{"alpha_x", 0.1}, {"alpha_y", 0.4}, {"eta", 1.33}, {"tint", 0.5}}},
+      // C below, at and above 1: the three forms of the inverse CDF.
+      {"abc_microfacet", {{"rho_d", 0.4}, {"a", 2}, {"b", 100}, {"c", 1.5}, {"ior", 1.5}}},
+      {"abc_microfacet", {{"rho_d", 0}, {"a", 1}, {"b", 30}, {"c", 0.5}, {"ior", 10}}},
+      {"abc_microfacet", {{"rho_d", 0.2}, {"a", 5}, {"b", 200}, {"c", 1}, {"ior", 1.5}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;

@@ -69,6 +69,8 @@ std::vector<SamplingCase> samplingCases() {
       {"ggx_conductor", {{"alpha_x", 0.1f}, {"alpha_y", 0.5f}, {"eta", 1.5f}, {"k", 0.0f}}},
       {"ggx_dielectric", {{"alpha_x", 0.3f}, {"alpha_y", 0.3f}, {"eta", 1.5f}}},
       {"ggx_dielectric", {{"alpha_x", 0.1f}, {"alpha_y", 0.4f}, {"eta", 1.33f}, {"tint", 0.5f}}},
+      {"abc_microfacet", {{"rho_d", 0.4f}, {"a", 2.0f}, {"b", 100.0f}, {"c", 1.5f}, {"ior", 1.5f}}},
+      {"abc_microfacet", {{"rho_d", 0.0f}, {"a", 1.0f}, {"b", 30.0f}, {"c", 0.5f}, {"ior", 10.0f}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;

@@ -15,7 +15,7 @@ import os
 import re
 import sys
 
-MAX_PARAM_FLOATS = 16  # gpu::kMaxMaterialParams (shaders/shared/scene_records.h)
+MAX_PARAM_FLOATS = 32  # gpu::kMaxMaterialParams (shaders/shared/scene_records.h)
 LOBES = {"reflection": 1, "transmission": 2, "diffuse": 4, "glossy": 8, "specular": 16}
 ROLES = {"diffuse", "specular", "eta", "transmittance", "slope", "slope_x", "slope_y", "exponent", "mirror_exponent",
          "exponent_x", "exponent_y", "lobe_x", "lobe_y", "file", "roughness", "metallic", "specular_weight",
