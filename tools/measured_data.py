@@ -138,7 +138,7 @@ _PARAM = re.compile(r"([A-Za-z0-9_]+)\s*=\s*(\[\[[^\]]*\]\s*,\s*\[[^\]]*\]\]|\[[
 def _value(text: str):
     text = text.strip()
     if text.startswith("[["):
-        return [_value(part + "]") for part in re.findall(r"\[([^\[\]]*)", text)]
+        return [_value(f"[{part}]") for part in re.findall(r"\[([^\[\]]*)\]", text)]
     if text.startswith("["):
         return [float(x) for x in text.strip("[]").split(",")]
     return float(text)

@@ -3,7 +3,7 @@
 // sweep: rho_d=0.1
 // look: rho_d=0.08/0.2/0.55, a=400, b=20000, c=1, ior=1.5
 // figure: rho_d=0, a=100, b=2000, c=1, ior=1.5
-// figure heavy_tail_log: rho_d=0, a=1100, b=260000, c=0.6, ior=1.5 --radius log
+// figure heavy_tail_log: rho_d=0, a=300, b=260000, c=0.7, ior=1.5 --radius log
 // | parameter | range         | default | kind         | meaning                                                    |
 // |-----------|---------------|---------|--------------|------------------------------------------------------------|
 // | rho_d     | [0, 1]        | 0.2     | rgb diffuse  | diffuse reflectance                                        |

@@ -272,10 +272,30 @@ def test_sgd_with_bagher_s_published_parameters_is_bagher_s_formula():
         for name in "rgb":  # the record holds rho_s = rhoS kap as one float
             stored[f"rhoS_{name}"] = float(np.float32(rows[material][f"rhoS_{name}"] * rows[material][f"kap_{name}"]))
             stored[f"kap_{name}"] = 1.0
-        expected = bagher_sgd(stored, wi.astype(np.float64), wo.astype(np.float64))
+        unit = lambda w: w.astype(np.float64) / np.linalg.norm(w.astype(np.float64), axis=1, keepdims=True)  # noqa: E731
+        expected = bagher_sgd(stored, unit(wi), unit(wo))  # raylab's reference takes the float inputs as unit vectors
         ours = raylab.brdf.eval("sgd", values, wi=wi, wo=wo, backend="cpu")
         assert np.all(np.isfinite(ours))
         np.testing.assert_allclose(ours, expected, rtol=1e-5, atol=1e-30, err_msg=material)
         device = raylab.brdf.eval("sgd", values, wi=wi, wo=wo)
         significant = expected > 1e-3 * expected.max()
         np.testing.assert_allclose(device[significant], expected[significant], rtol=2e-3, err_msg=material)
+
+
+@needs_data
+def test_the_two_sources_of_bagher_s_and_low_s_fits_give_the_same_material(capsys):
+    """bbm's bagher_sgd.fit (nested [[f0], [f1]] lists) and dj_brdf's CSV hold the same SGD fits, and bbm's and dj_brdf's
+    Löw ABC fits agree to their printed digits: tools/published_fits.py writes the same `sgd` material from both."""
+    import published_fits
+    outputs = []
+    for path in (md.MEASURED / "fits_bbm/bagher_sgd.fit", md.MEASURED / "fits_djbrdf/merl_sgd_bagher2012_fits.csv"):
+        assert published_fits.main([str(path), "gold-metallic-paint"]) == 0
+        outputs.append(capsys.readouterr().out.strip())
+    assert outputs[0] == outputs[1] and outputs[0].startswith("sgd:")
+    for path in (md.MEASURED / "fits_bbm/low_lowmicrofacet_E2.fit", md.MEASURED / "fits_djbrdf/merl_abc_low2012_fits.csv"):
+        assert published_fits.main([str(path), "gold-metallic-paint"]) == 0
+        model, text = capsys.readouterr().out.strip().split(":", 1)
+        assert model == "abc_microfacet"
+        outputs.append(dict(item.split("=") for item in text.split(",")))
+    for key in ("b", "c", "ior"):
+        assert float(outputs[2][key]) == pytest.approx(float(outputs[3][key]), rel=1e-4)
