@@ -243,6 +243,12 @@ def published_f(family: str, lambert, params: dict, wi: np.ndarray, wo: np.ndarr
         d = 1.0 / (1.0 + params["B"] * (1.0 - cos_h)) ** params["C"]
         g = _vgroove(cos_h, cos_i, cos_o, cos_d)
         spec = x(params["A"]) * col(_fresnel_dielectric(cos_d, params["eta"]) * d * g / (math.pi * cos_i * cos_o))
+    elif family == "LowSmooth":  # Löw 2012 smooth surface (bbm): A (1 + B |wi_xy + wo_xy|^2)^-C F(cos from |wi_xy - wo_xy|)
+        a, b = wi.reshape(-1, 3), wo.reshape(-1, 3)
+        projected_sum = ((a[:, :2] + b[:, :2]) ** 2).sum(1)
+        cos_projected = np.sqrt(np.maximum(0.0, 1.0 - 0.25 * ((a[:, :2] - b[:, :2]) ** 2).sum(1)))
+        spec = x(params["A"]) * col((1.0 + params["B"] * projected_sum) ** -params["C"] *
+                                    _fresnel_dielectric(cos_projected, params["eta"]))
     elif family == "BagherSGD":  # dj_brdf's statement of Bagher et al. 2012, per channel
         spec = np.zeros((cos_i.size, 3))
         theta_i, theta_o = np.arccos(np.clip(cos_i, -1, 1)), np.arccos(np.clip(cos_o, -1, 1))
@@ -321,6 +327,10 @@ def raylab_material(family: str, lambert, params: dict) -> tuple[str, dict]:
                                   "b": within("B", float(params["B"]), 1.0, 1e8),
                                   "c": within("C", float(params["C"]), 0.01, 4.0),
                                   "ior": within("eta", float(params["eta"]), 1.0, 100.0)}
+    if family == "LowSmooth":
+        return "abc_smooth", {"rho_d": rho_d, "a": within("A", [float(v) for v in _rgb(params["A"])], 0.0, 1e5),
+                              "b": within("B", float(params["B"]), 1.0, 1e8), "c": within("C", float(params["C"]), 0.01, 4.0),
+                              "ior": within("eta", float(params["eta"]), 1.0, 100.0)}
     if family == "Bagher":  # bbm's names for the same fits as dj_brdf's BagherSGD
         family, params = "BagherSGD", {"rhoS": params["albedo"], "alpha": params["alpha"], "p": params["p"],
                                        "f0": params["eta"][0], "f1": params["eta"][1], "kap": params["K"],
@@ -349,6 +359,7 @@ MAPPINGS = {
     "Ngan ashikhmin_shirley": "none: raylab's `ashikhmin_shirley` is the paper's whole model",
     "Ngan lafortune": "`lafortune` (one lobe, Ngan's normalisation (n+2)/(2 pi max|C|^n)): rho_s = albedo, "
                       "cx = cy = Cxy, cz = Cz, n = sharpness, rho_s2 = 0",
+    "Löw smooth": "`abc_smooth` (bbm's LowSmooth form): rho_d = the Lambert albedo, a = A, b = B, c = C, ior = eta",
     "Löw ABC": "`abc_microfacet` (the fits' own form, with their 1/pi): rho_d = kD, a = A, b = B, c = C, ior = ior",
     "Bagher SGD": "`sgd` (dj_brdf's form; F clamped at 0): rho_d = rhoD, rho_s = rhoS kap, the other ten by name "
                   "(lambda = Lambda, f0 and f1 = bbm's eta pair)",
@@ -367,11 +378,14 @@ NGAN_FAMILIES = {
 
 def published_fits(measured: Path = MEASURED) -> dict[str, dict[str, tuple]]:
     """label -> material -> (family, lambert, params) of every published fit with a formula here: Ngan's five
-    families that raylab has a model of (keyed by that raylab model), Löw's ABC and Bagher's SGD."""
+    families that raylab has a model of (keyed by that raylab model), Löw's smooth-surface and ABC models and Bagher's
+    SGD."""
     out: dict[str, dict[str, tuple]] = {}
     for model, (family, relative) in NGAN_FAMILIES.items():
         out[f"Ngan {model}"] = {m: (fit["family"], fit["lambert"], fit["params"])
                                for m, fit in read_bbm_fits(measured / relative).items()}
+    out["Löw smooth"] = {m: (fit["family"], fit["lambert"], fit["params"])
+                         for m, fit in read_bbm_fits(measured / "fits_bbm/low_lowsmooth_E2.fit").items()}
     out["Löw ABC"] = {m: ("LowMicrofacetFit", *low_abc_params(row))
                       for m, row in read_dj_csv(measured / "fits_djbrdf/merl_abc_low2012_fits.csv").items()}
     out["Bagher SGD"] = {m: ("BagherSGD", *bagher_params(row))

@@ -22,6 +22,7 @@
 #ifndef RAYLAB_BRDF_ABC_MICROFACET_GLSL
 #define RAYLAB_BRDF_ABC_MICROFACET_GLSL
 
+#include "brdf/abc.glsl"
 #include "brdf/fresnel.glsl"
 #include "brdf/microfacet.glsl"
 #include "brdf/sampling.glsl"
@@ -32,19 +33,8 @@ float abcOneMinusCos(HalfVector hv) {
   return dot(hv.h.xy, hv.h.xy) / (hv.len * (hv.len + hv.h.z));
 }
 
-// expm1(s) / s, 1 at s = 0 (s = (1 - C) log(1 + B) lies in [-27, 16]).
-float abcExpm1OverX(float s) {
-  return abs(s) < 1.0e-3 ? 1.0 + s * (0.5 + s / 6.0) : expm1Accurate(s) / s;
-}
-
-// 1 / Z, Z = integral over [0, 1] of (1 + B x)^-C dx = log(1 + B) expm1((1 - C) log(1 + B)) / ((1 - C) log(1 + B)) / B.
-float abcInverseNormaliser(float b, float c) {
-  const float logB = log1pAccurate(b);
-  return b / (logB * abcExpm1OverX((1.0 - c) * logB));
-}
-
-// (1 + B x)^-C
-float abcShape(float b, float c, float x) { return exp(-c * log1pAccurate(b * x)); }
+// 1 / Z, Z = the integral over [0, 1] of (1 + B x)^-C dx.
+float abcInverseNormaliser(float b, float c) { return 1.0 / abcIntegral(b, c); }
 
 vec3 abcMicrofacetEval(vec3 rhoD, vec3 a, float b, float c, float ior, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return vec3(0.0);  // one-sided; also false for NaN directions

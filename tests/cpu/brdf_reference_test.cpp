@@ -182,6 +182,27 @@ TEST(BrdfReference, AbcMicrofacetIsItsFormulaInAngles) {
   }
 }
 
+// Löw's smooth-surface model written out: the projected distance from the mirror direction, the Fresnel factor at
+// the cosine of the projected difference, no division by cosines; at the mirror direction f = rho_d/pi + A F(cos).
+TEST(BrdfReference, AbcSmoothIsItsFormula) {
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> angle(0.0, 89.0), azimuth(0.0, 360.0);
+  const Material smooth = makeMaterial("abc_smooth", {{"rho_d", 0.25}, {"a", 40}, {"b", 3000}, {"c", 0.75}, {"ior", 2}});
+  for (int k = 0; k < 200; ++k) {
+    const dvec3 wi = direction(angle(random), azimuth(random)), wo = direction(angle(random), azimuth(random));
+    const double d2 = (wi.x + wo.x) * (wi.x + wo.x) + (wi.y + wo.y) * (wi.y + wo.y);
+    const double cosD = std::sqrt(1.0 - 0.25 * ((wi.x - wo.x) * (wi.x - wo.x) + (wi.y - wo.y) * (wi.y - wo.y)));
+    const double cosT = std::sqrt(1.0 - (1.0 - cosD * cosD) / 4.0);
+    const double rs = (cosD - 2.0 * cosT) / (cosD + 2.0 * cosT), rp = (2.0 * cosD - cosT) / (2.0 * cosD + cosT);
+    const double expected = 0.25 / kPi + 40.0 * std::pow(1.0 + 3000.0 * d2, -0.75) * 0.5 * (rs * rs + rp * rp);
+    EXPECT_NEAR(reference::eval(smooth, wi, wo).x, expected, 1e-12 * expected);
+  }
+  const dvec3 wi = direction(50, 20), mirror(-wi.x, -wi.y, wi.z);
+  const double cosI = std::cos(50 * kDegree), cosT = std::sqrt(1.0 - (1.0 - cosI * cosI) / 4.0);
+  const double rs = (cosI - 2.0 * cosT) / (cosI + 2.0 * cosT), rp = (2.0 * cosI - cosT) / (2.0 * cosI + cosT);
+  EXPECT_NEAR(reference::eval(smooth, wi, mirror).x, 0.25 / kPi + 40.0 * 0.5 * (rs * rs + rp * rp), 1e-12);
+}
+
 TEST(BrdfReference, ValuesOffThePeakMatchTheFormulasInAngles) {
   // wi at 60 deg, wo at 30 deg on the other side (phi 0 and 180): H lies 15 deg from n towards wi, the angle
   // between wo and H is 45 deg, and R_i is 30 deg from wo. Each model written with these angles by hand.

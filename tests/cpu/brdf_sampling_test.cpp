@@ -62,6 +62,8 @@ std::vector<SamplingCase> samplingCases() {
       {"abc_microfacet", {{"rho_d", 0.4}, {"a", 2}, {"b", 100}, {"c", 1.5}, {"ior", 1.5}}},
       {"abc_microfacet", {{"rho_d", 0}, {"a", 1}, {"b", 30}, {"c", 0.5}, {"ior", 10}}},
       {"abc_microfacet", {{"rho_d", 0.2}, {"a", 5}, {"b", 200}, {"c", 1}, {"ior", 1.5}}},
+      {"abc_smooth", {{"rho_d", 0.4}, {"a", 2}, {"b", 50}, {"c", 1}, {"ior", 1.5}}},
+      {"abc_smooth", {{"rho_d", 0}, {"a", 1}, {"b", 300}, {"c", 0.5}, {"ior", 5}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;
