@@ -365,6 +365,10 @@ MAPPINGS = {
                   "(lambda = Lambda, f0 and f1 = bbm's eta pair)",
 }
 
+# The raylab model of each published family that is not Ngan's (his are keyed by that model), for the comparison of
+# raylab's fit of a family with the published one.
+FAMILY_MODELS = {"Löw smooth": "abc_smooth", "Löw ABC": "abc_microfacet", "Bagher SGD": "sgd"}
+
 # The published families of the study: (label, file, reader) in the order of docs/measured.md.
 NGAN_FAMILIES = {
     "ward": ("NganWard", "fits_bbm/ngan_ward.fit"),

@@ -106,7 +106,7 @@ def published_section(records: list[dict], fits_by_label: dict, published: dict,
     for label, errors in published.items():
         med = lambda k: np.median([e[k] for e in errors.values()])  # noqa: E731
         row = [label, str(len(errors)), f"{med('relative_cos'):.3f}", f"{med('relative_log'):.3f}"]
-        model = label.split(" ", 1)[1] if label.startswith("Ngan ") else None
+        model = label.split(" ", 1)[1] if label.startswith("Ngan ") else md.FAMILY_MODELS.get(label)
         if model is not None and all(model in materials[m] for m in errors):
             ours = {m: materials[m][model][key] for m in errors}
             theirs = {m: errors[m][key] for m in errors}

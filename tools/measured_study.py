@@ -81,6 +81,15 @@ def stored(path: Path, description: dict) -> dict | None:
     return data.get("record") if isinstance(data, dict) and data.get("description") == description else None
 
 
+def model_tables() -> dict[str, str]:
+    """A digest of each model's parameter table (ranges, defaults, scales, roles; not the meanings): a stored fit is
+    reused only while its model's table is the one it was fitted with, so a changed model is refitted alone."""
+    import raylab
+    return {name: hashlib.sha256(json.dumps([{k: v for k, v in p.items() if k != "meaning"} for p in params],
+                                            sort_keys=True).encode()).hexdigest()[:16]
+            for name, params in raylab.brdf.models().items()}
+
+
 def run_study(slices: dict[str, Path], models: list[str], metric: str, out: Path, workers=None, scheduler=None,
               kill_one_worker_after: int | None = None) -> list[dict]:
     """Fits every model to every slice on a Dask cluster; returns the records (also OUT/fits.json). With
@@ -92,11 +101,12 @@ def run_study(slices: dict[str, Path], models: list[str], metric: str, out: Path
     from raylab.farm.progress import Progress
 
     digests = {material: sha256(path) for material, path in slices.items()}
+    tables = model_tables()
     jobs, records = [], {}
     for material, path in slices.items():
         for model in models:
-            description = {"slice": digests[material], "model": model, "metric": metric, "version": FIT_VERSION,
-                           **FIT_OPTIONS}
+            description = {"slice": digests[material], "model": model, "table": tables[model], "metric": metric,
+                           "version": FIT_VERSION, **FIT_OPTIONS}
             done = stored(job_path(out, material, model, metric), description)
             if done is not None:
                 records[(material, model)] = done

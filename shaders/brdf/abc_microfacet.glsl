@@ -8,7 +8,7 @@
 // |-----------|---------------|---------|--------------|------------------------------------------------------------|
 // | rho_d     | [0, 1]        | 0.2     | rgb diffuse  | diffuse reflectance                                        |
 // | a         | [0, 100000]   | 100     | rgb specular | A: the distribution's peak (unnormalised, as Löw fitted it) |
-// | b         | [1, 100000000] | 10000  | log slope    | B: the inverse width in 1 - cos(theta_h)                   |
+// | b         | [1, 100000000] | 10000  | log exponent | B: the inverse width in 1 - cos(theta_h)                   |
 // | c         | [0.01, 4]     | 1       |              | C: the tail's exponent (small: long tails)                 |
 // | ior       | [1, 100]      | 1.5     | eta          | index of refraction of the exact Fresnel term              |
 // Löw, Kronander, Ynnerman & Unger, "BRDF Models for Accurate and Efficient Rendering of Glossy Surfaces", ACM TOG

@@ -8,7 +8,7 @@
 // |-----------|----------------|---------|--------------|-----------------------------------------------------------|
 // | rho_d     | [0, 1]         | 0.2     | rgb diffuse  | diffuse reflectance                                       |
 // | a         | [0, 100000]    | 20      | rgb specular | A: the lobe's peak over its Fresnel factor (as fitted)    |
-// | b         | [1, 100000000] | 2000    | log slope    | B: the inverse width in the projected distance            |
+// | b         | [1, 100000000] | 2000    | log exponent | B: the inverse width in the projected distance            |
 // | c         | [0.01, 4]      | 1       |              | C: the tail's exponent (small: long tails)                |
 // | ior       | [1, 100]       | 1.5     | eta          | index of refraction of the Fresnel factor                 |
 // Löw, Kronander, Ynnerman & Unger, "BRDF Models for Accurate and Efficient Rendering of Glossy Surfaces", ACM TOG
