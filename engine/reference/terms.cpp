@@ -41,6 +41,11 @@ double F_DielectricExact(double etaI, double etaT, double cosI, double cosT) {
   return 0.5 * (rs * rs + rp * rp);
 }
 
+double F_DielectricFromOutside(double eta, double cosI) {
+  const double sin2T = (1.0 - cosI * cosI) / (eta * eta);
+  return F_DielectricExact(1.0, eta, cosI, std::sqrt(std::max(0.0, 1.0 - sin2T)));
+}
+
 double G_TorranceSparrow(double NoH, double NoV, double NoL, double VoH) {
   return std::min({1.0, 2.0 * NoH * NoV / VoH, 2.0 * NoH * NoL / VoH});
 }

@@ -37,6 +37,9 @@ double F0FromEta(double eta);
 // (r_s^2 + r_p^2) / 2 from the cosines on the incident (etaI) and transmitted (etaT) sides. The caller
 // handles total internal reflection; etaI cosI + etaT cosT must be > 0.
 double F_DielectricExact(double etaI, double etaT, double cosI, double cosT);
+// The same for light arriving from outside (index 1) at cosI onto a dielectric of index eta >= 1 (no total internal
+// reflection), cos theta_t from Snell's law.
+double F_DielectricFromOutside(double eta, double cosI);
 
 // Torrance-Sparrow V-cavity shadowing and masking (Torrance & Sparrow, JOSA 57(9), 1967, in the form of
 // Blinn 1977 and Cook & Torrance 1982): min(1, 2 NoH NoV / VoH, 2 NoH NoL / VoH). Needs VoH > 0.

@@ -316,8 +316,12 @@ TEST(AlbedoFacts, WhiteEonIsOneAndOrenNayarIsAAtNormalIncidence) {
       const double A = 1.0 - sigma * sigma / (2.0 * (sigma * sigma + 0.33));
       EXPECT_NEAR(row.albedo.front(), A, 1e-6) << row.label;  // float sigma: A to about 1e-8
       EXPECT_LE(row.max(), 1.0125) << row.label;
-      if (sigma == 0.0) EXPECT_NEAR(row.max(), 1.0, 1e-7) << row.label;
-      if (sigma >= 0.5) EXPECT_LT(row.max(), 1.0) << row.label;
+      if (sigma == 0.0) {
+        EXPECT_NEAR(row.max(), 1.0, 1e-7) << row.label;
+      }
+      if (sigma >= 0.5) {
+        EXPECT_LT(row.max(), 1.0) << row.label;
+      }
       ++orenNayarRows;
     }
   }

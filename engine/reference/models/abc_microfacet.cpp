@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "generated/reference_params.h"
+#include "reference/abc_terms.h"
 #include "reference/sampling.h"
 #include "reference/terms.h"
 
@@ -22,20 +23,8 @@ double oneMinusCos(const dvec3& h) {
 
 double shape(const AbcMicrofacetParams& p, double x) { return std::pow(1.0 + p.b * x, -p.c); }
 
-// Z = integral over [0, 1] of (1 + B x)^-C dx.
-double normaliser(const AbcMicrofacetParams& p) {
-  const double logB = std::log1p(p.b);
-  const double s = (1.0 - p.c) * logB;
-  return logB / p.b * (s == 0.0 ? 1.0 : std::expm1(s) / s);
-}
-
-double fresnel(double ior, double cosI) {
-  const double sin2T = (1.0 - cosI * cosI) / (ior * ior);
-  return F_DielectricExact(1.0, ior, cosI, std::sqrt(std::max(0.0, 1.0 - sin2T)));
-}
-
 // The lobe's albedo at normal incidence, 8 A Z F0: its share of the sampling mixture.
-dvec3 lobeWeight(const AbcMicrofacetParams& p) { return p.a * (8.0 * normaliser(p) * F0FromEta(p.ior)); }
+dvec3 lobeWeight(const AbcMicrofacetParams& p) { return p.a * (8.0 * abcIntegral(p.b, p.c) * F0FromEta(p.ior)); }
 
 }  // namespace
 
@@ -51,7 +40,7 @@ Lobes abcMicrofacetEval(const AbcMicrofacetParams& p, const dvec3& wi, const dve
   const double NoH = h.z / length;
   const double D = shape(p, oneMinusCos(h));
   const double G = G_TorranceSparrow(NoH, wo.z, wi.z, VoH);
-  return {diffuseOnly.diffuse, p.a * (D * fresnel(p.ior, VoH) * G / (kPi * wi.z * wo.z))};
+  return {diffuseOnly.diffuse, p.a * (D * F_DielectricFromOutside(p.ior, VoH) * G / (kPi * wi.z * wo.z))};
 }
 
 // u.x draws x = 1 - cos theta_h: (1 + B x)^(1 - C) = 1 + u.x ((1 + B)^(1 - C) - 1), or (1 + B x) = (1 + B)^u.x at C = 1;
@@ -71,7 +60,7 @@ double abcMicrofacetPdfSpecular(const AbcMicrofacetParams& p, const dvec3& wi, c
   const double length = glm::length(h);
   const double VoH = 0.5 * length;  // see abcMicrofacetEval
   if (!(VoH > 0.0)) return 0.0;
-  const double pH = shape(p, oneMinusCos(h)) / (2.0 * kPi * normaliser(p));
+  const double pH = shape(p, oneMinusCos(h)) / (2.0 * kPi * abcIntegral(p.b, p.c));
   return pH / (4.0 * VoH);
 }
 

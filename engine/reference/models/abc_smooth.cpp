@@ -8,24 +8,13 @@
 #include <cmath>
 
 #include "generated/reference_params.h"
+#include "reference/abc_terms.h"
 #include "reference/sampling.h"
 #include "reference/terms.h"
 
 namespace raylab::reference {
 
 namespace {
-
-double fresnel(double ior, double cosI) {
-  const double sin2T = (1.0 - cosI * cosI) / (ior * ior);
-  return F_DielectricExact(1.0, ior, cosI, std::sqrt(std::max(0.0, 1.0 - sin2T)));
-}
-
-// The integral of (1 + B t)^-C over t in [0, 1].
-double integral(double b, double c) {
-  const double logB = std::log1p(b);
-  const double s = (1.0 - c) * logB;
-  return logB / b * (s == 0.0 ? 1.0 : std::expm1(s) / s);
-}
 
 // L of the paper's eq. 19: the integral over the unit disc of 1 / (1 + B |x + p|^2) is pi L / B, |p| = sin(theta_o).
 double logNormaliser(double b, const dvec3& wo) {
@@ -40,7 +29,7 @@ Lobes abcSmoothEval(const AbcSmoothParams& p, const dvec3& wi, const dvec3& wo) 
   const dvec2 sum = dvec2(wi) + dvec2(wo), difference = dvec2(wi) - dvec2(wo);
   const double cosD = std::sqrt(std::max(0.0, 1.0 - 0.25 * glm::dot(difference, difference)));
   const double shape = std::pow(1.0 + p.b * glm::dot(sum, sum), -p.c);
-  return {p.rho_d * kInvPi, p.a * (shape * fresnel(p.ior, cosD))};
+  return {p.rho_d * kInvPi, p.a * (shape * F_DielectricFromOutside(p.ior, cosD))};
 }
 
 // u.x the radius (eqs. 20 and 22), u.y the angle from wo's azimuth (eq. 21).
@@ -67,7 +56,7 @@ double abcSmoothPdfSpecular(const AbcSmoothParams& p, const dvec3& wi, const dve
 // coordinates the lobe is 1/cos(theta_o) times longer along theta than across it, which one pair of widths cannot
 // follow: those coordinates missed 1% of the albedo at 60 degrees.)
 SpecularLobe abcSmoothSpecularLobe(const AbcSmoothParams& p) {
-  const dvec3 weight = p.a * (kPi * F0FromEta(p.ior) * integral(p.b, p.c));
+  const dvec3 weight = p.a * (kPi * F0FromEta(p.ior) * abcIntegral(p.b, p.c));
   return {mixtureProbability(p.rho_d, weight), dvec2(std::min(1.0, std::sqrt(std::expm1(1.0 / p.c) / p.b))), false};
 }
 
