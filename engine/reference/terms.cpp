@@ -42,8 +42,11 @@ double F_DielectricExact(double etaI, double etaT, double cosI, double cosT) {
 }
 
 double F_DielectricFromOutside(double eta, double cosI) {
-  const double sin2T = (1.0 - cosI * cosI) / (eta * eta);
-  return F_DielectricExact(1.0, eta, cosI, std::sqrt(std::max(0.0, 1.0 - sin2T)));
+  // Equal indices are no interface, at every angle (at cos_i = 0 the amplitudes would be 0/0).
+  if (eta == 1.0) return 0.0;
+  // cos^2 theta_t = (eta^2 - 1 + cos_i^2) / eta^2: 1 - (1 - cos_i^2) / eta^2 loses cos_i^2 at grazing incidence.
+  const double cosT = std::sqrt(std::max(0.0, (eta - 1.0) * (eta + 1.0) + cosI * cosI)) / eta;
+  return F_DielectricExact(1.0, eta, cosI, cosT);
 }
 
 double G_TorranceSparrow(double NoH, double NoV, double NoL, double VoH) {

@@ -38,7 +38,7 @@ double F0FromEta(double eta);
 // handles total internal reflection; etaI cosI + etaT cosT must be > 0.
 double F_DielectricExact(double etaI, double etaT, double cosI, double cosT);
 // The same for light arriving from outside (index 1) at cosI onto a dielectric of index eta >= 1 (no total internal
-// reflection), cos theta_t from Snell's law.
+// reflection), cos theta_t from Snell's law; 0 for eta = 1.
 double F_DielectricFromOutside(double eta, double cosI);
 
 // Torrance-Sparrow V-cavity shadowing and masking (Torrance & Sparrow, JOSA 57(9), 1967, in the form of

@@ -203,6 +203,19 @@ TEST(BrdfReference, AbcSmoothIsItsFormula) {
   EXPECT_NEAR(reference::eval(smooth, wi, mirror).x, 0.25 / kPi + 40.0 * 0.5 * (rs * rs + rp * rp), 1e-12);
 }
 
+// ior = 1 is no interface: the ABC models' Fresnel factor is 0 at every angle, grazing included, where Snell's
+// cos theta_t computed as sqrt(1 - sin^2) made it 1 (ABC, 3e34 /sr at the grazing mirror pair) or 0/0 (smooth).
+TEST(BrdfReference, AbcModelsAtIorOneHaveNoSpecularEvenAtGrazing) {
+  const dvec3 grazing(1.0, 0.0, 1e-15), opposite(-1.0, 0.0, 1e-15), retro = grazing;
+  for (const char* model : {"abc_microfacet", "abc_smooth"}) {
+    const Material material = makeMaterial(model, {{"rho_d", 0.5}, {"a", 100000}, {"b", 1}, {"c", 4}, {"ior", 1}});
+    for (const dvec3& wo : {opposite, retro, dvec3(0.6, 0.0, 0.8)}) {
+      const dvec3 f = reference::eval(material, grazing, wo);
+      EXPECT_EQ(f.x, 0.5 / kPi) << model;
+    }
+  }
+}
+
 TEST(BrdfReference, ValuesOffThePeakMatchTheFormulasInAngles) {
   // wi at 60 deg, wo at 30 deg on the other side (phi 0 and 180): H lies 15 deg from n towards wi, the angle
   // between wo and H is 45 deg, and R_i is 30 deg from wo. Each model written with these angles by hand.
