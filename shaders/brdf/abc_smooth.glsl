@@ -2,7 +2,7 @@
 // lobes: reflection diffuse glossy
 // sweep: rho_d=0.1
 // look: rho_d=0.08/0.2/0.55, a=100, b=20000, c=1, ior=1.5
-// figure: rho_d=0, a=20, b=2000, c=1, ior=1.5
+// figure: rho_d=0, a=200, b=2000, c=1, ior=1.5
 // figure long_tail_log: rho_d=0, a=40, b=100000, c=0.5, ior=1.5 --radius log
 // | parameter | range          | default | kind         | meaning                                                   |
 // |-----------|----------------|---------|--------------|-----------------------------------------------------------|
