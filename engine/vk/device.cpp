@@ -233,7 +233,7 @@ T loadDeviceFunction(VkDevice device, const char* name) {
 }  // namespace
 
 Instance createInstance(const InstanceOptions& options) {
-  separateShaderCacheByVectorWidth();  // before anything loads the driver
+  separateShaderCacheByDriverSettings();  // before anything loads the driver
   Instance instance;
   instance.validation = options.validation || envFlag("RAYLAB_VALIDATION");
   if (instance.validation && !hasLayer(kValidationLayer)) {

@@ -36,14 +36,17 @@ std::string folderPart(const std::string& value) {
 
 }  // namespace
 
-void separateShaderCacheByVectorWidth() {
+void separateShaderCacheByDriverSettings() {
   static std::once_flag once;
   std::call_once(once, [] {
     const std::string width = environment("LP_NATIVE_VECTOR_WIDTH");
-    if (width.empty()) return;
+    const std::string perf = environment("GALLIVM_PERF");
+    if (width.empty() && perf.empty()) return;
     const std::string parent = mesaCacheParent();
     if (parent.empty()) return;  // Mesa finds no cache folder either and caches nothing
-    setenv("MESA_SHADER_CACHE_DIR", (parent + "/raylab-lavapipe-width" + folderPart(width)).c_str(), 1);
+    const std::string folder = parent + "/raylab-lavapipe-width" + folderPart(width.empty() ? "default" : width) +
+                               "-perf" + folderPart(perf.empty() ? "default" : perf);
+    setenv("MESA_SHADER_CACHE_DIR", folder.c_str(), 1);
   });
 }
 
