@@ -1,7 +1,7 @@
 // Bagher's shifted gamma distribution (SGD): a microfacet model whose every term has its own value per colour channel.
 // lobes: reflection diffuse glossy
 // sweep: rho_d=0.1
-// look: rho_d=0.1/0.25/0.5, rho_s=300, alpha=0.01, p=0.5, f0=0.05, f1=0, lambda=0, c=0, k=10, theta0=0.5
+// look: rho_d=0.1/0.25/0.5, rho_s=300, alpha=0.01, p=0.5, f0=0.05, f1=0, lambda=1, c=1, k=2, theta0=0.5
 // figure: rho_d=0, rho_s=300, alpha=0.01, p=0.5, f0=0.05, f1=0, lambda=0
 // figure shadowed: rho_d=0, rho_s=300, alpha=0.01, p=0.5, f0=0.05, f1=0, lambda=1, c=1, k=2, theta0=0.5
 // | parameter | range          | default | kind         | meaning                                                        |
