@@ -49,6 +49,8 @@ double F_DielectricFromOutside(double eta, double cosI) {
   return F_DielectricExact(1.0, eta, cosI, cosT);
 }
 
+double expm1OverX(double x) { return x == 0.0 ? 1.0 : std::expm1(x) / x; }
+
 double G_TorranceSparrow(double NoH, double NoV, double NoL, double VoH) {
   return std::min({1.0, 2.0 * NoH * NoV / VoH, 2.0 * NoH * NoL / VoH});
 }

@@ -45,4 +45,7 @@ double F_DielectricFromOutside(double eta, double cosI);
 // Blinn 1977 and Cook & Torrance 1982): min(1, 2 NoH NoV / VoH, 2 NoH NoL / VoH). Needs VoH > 0.
 double G_TorranceSparrow(double NoH, double NoV, double NoL, double VoH);
 
+// expm1(x) / x, 1 at x = 0 (its limit).
+double expm1OverX(double x);
+
 }  // namespace raylab::reference

@@ -4,15 +4,10 @@
 
 #include "brdf/common.glsl"
 
-// expm1(s) / s, 1 at s = 0 (s = (1 - C) log(1 + B) lies in [-27, 16]).
-float abcExpm1OverX(float s) {
-  return abs(s) < 1.0e-3 ? 1.0 + s * (0.5 + s / 6.0) : expm1Accurate(s) / s;
-}
-
 // The integral of (1 + B x)^-C over x in [0, 1]: log(1 + B) expm1(s) / (s B) with s = (1 - C) log(1 + B).
 float abcIntegral(float b, float c) {
   const float logB = log1pAccurate(b);
-  return logB * abcExpm1OverX((1.0 - c) * logB) / b;
+  return logB * expm1OverX((1.0 - c) * logB) / b;
 }
 
 // (1 + B x)^-C

@@ -33,9 +33,6 @@ float abcOneMinusCos(HalfVector hv) {
   return dot(hv.h.xy, hv.h.xy) / (hv.len * (hv.len + hv.h.z));
 }
 
-// 1 / Z, Z = the integral over [0, 1] of (1 + B x)^-C dx.
-float abcInverseNormaliser(float b, float c) { return 1.0 / abcIntegral(b, c); }
-
 vec3 abcMicrofacetEval(vec3 rhoD, vec3 a, float b, float c, float ior, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return vec3(0.0);  // one-sided; also false for NaN directions
   wi = liftOffHorizon(wi);
@@ -50,7 +47,7 @@ vec3 abcMicrofacetEval(vec3 rhoD, vec3 a, float b, float c, float ior, vec3 wi, 
 
 // The lobe's albedo at normal incidence, 8 A Z F0: its share of the sampling mixture.
 vec3 abcLobeWeight(vec3 a, float b, float c, float ior) {
-  return a * (8.0 * F0FromEta(ior) / abcInverseNormaliser(b, c));
+  return a * (8.0 * F0FromEta(ior) * abcIntegral(b, c));
 }
 
 // The half vector's density (1 + B x)^-C / (2 pi Z) per unit solid angle; reflecting wo divides by 4 (V.H).
@@ -58,7 +55,7 @@ float abcMicrofacetPdf(vec3 rhoD, vec3 a, float b, float c, float ior, vec3 wi, 
   if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
   const HalfVector hv = halfVector(liftOffHorizon(wi), liftOffHorizon(wo));
   const float pSpec = specularProbability(rhoD, abcLobeWeight(a, b, c, ior));
-  const float pH = abcShape(b, c, abcOneMinusCos(hv)) * abcInverseNormaliser(b, c) / kTwoPi;
+  const float pH = abcShape(b, c, abcOneMinusCos(hv)) / (kTwoPi * abcIntegral(b, c));
   return (1.0 - pSpec) * cosineHemispherePdf(wi) + pSpec * pH / (4.0 * hv.VoH);
 }
 

@@ -56,6 +56,9 @@ float expm1Accurate(float x) {
   return exp(x) - 1.0;
 }
 
+// expm1(x) / x, 1 at x = 0 (its limit), without dividing by a small x: the series below 1e-3 in size.
+float expm1OverX(float x) { return abs(x) < 1.0e-3 ? 1.0 + x * (0.5 + x / 6.0) : expm1Accurate(x) / x; }
+
 float pow5(float x) {
   const float x2 = x * x;
   return x2 * x2 * x;

@@ -81,9 +81,7 @@ float sgdProxyAlpha(vec3 alpha) { return exp((log(alpha.x) + log(alpha.y) + log(
 vec3 sgdLobeWeight(vec3 rhoS, vec3 alpha, vec3 p, vec3 f0, vec3 f1) {
   const vec3 logAlpha = log(alpha);
   const vec3 s = (1.0 - p) * logAlpha;
-  const vec3 ratio = vec3(abs(s.x) < 1.0e-3 ? 1.0 : expm1Accurate(s.x) / s.x,
-                          abs(s.y) < 1.0e-3 ? 1.0 : expm1Accurate(s.y) / s.y,
-                          abs(s.z) < 1.0e-3 ? 1.0 : expm1Accurate(s.z) / s.z);
+  const vec3 ratio = vec3(expm1OverX(s.x), expm1OverX(s.y), expm1OverX(s.z));
   const vec3 E = -logAlpha * ratio + exp(-1.0);
   return 4.0 * rhoS * (max(f0 - f1, vec3(0.0)) + 0.04) * alpha * E;
 }

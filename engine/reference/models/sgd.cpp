@@ -40,8 +40,7 @@ dvec3 lobeWeight(const SgdParams& p) {
   dvec3 weight;
   for (int i = 0; i < 3; ++i) {
     const double logAlpha = std::log(p.alpha[i]);
-    const double s = (1.0 - p.p[i]) * logAlpha;
-    const double E = -logAlpha * (s == 0.0 ? 1.0 : std::expm1(s) / s) + std::exp(-1.0);
+    const double E = -logAlpha * expm1OverX((1.0 - p.p[i]) * logAlpha) + std::exp(-1.0);
     weight[i] = 4.0 * p.rho_s[i] * (std::max(p.f0[i] - p.f1[i], 0.0) + 0.04) * p.alpha[i] * E;
   }
   return weight;
