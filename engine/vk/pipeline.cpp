@@ -5,6 +5,7 @@
 #include "shader_registry.h"
 #include "util/error.h"
 #include "vk/debug_name.h"
+#include "vk/spirv_specialization.h"
 #include "vk/vk_check.h"
 
 namespace raylab {
@@ -27,6 +28,12 @@ const VkSpecializationInfo* SpecializationConstants::info() {
   info_.dataSize = values_.size() * sizeof(std::uint32_t);
   info_.pData = values_.data();
   return &info_;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> SpecializationConstants::values() const {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::size_t i = 0; i < entries_.size(); ++i) pairs.emplace_back(entries_[i].constantID, values_[i]);
+  return pairs;
 }
 
 VkDescriptorSetLayout createDescriptorSetLayout(const Device& device, std::span<const DescriptorBinding> bindings,
@@ -58,9 +65,15 @@ VkPipelineLayout createPipelineLayout(const Device& device, VkDescriptorSetLayou
   return layout;
 }
 
-VkShaderModule createShaderModule(const Device& device, std::string_view kernelName) {
-  const std::span<const std::uint32_t> spirv = embeddedSpirv(kernelName);
+VkShaderModule createShaderModule(const Device& device, std::string_view kernelName,
+                                  const SpecializationConstants* constants) {
+  std::span<const std::uint32_t> spirv = embeddedSpirv(kernelName);
   if (spirv.empty()) throw Error("kernel " + std::string(kernelName) + " is not embedded in this build");
+  std::vector<std::uint32_t> specialized;
+  if (constants != nullptr) {
+    specialized = specializeSpirv(spirv, constants->values(), kernelName);
+    spirv = specialized;
+  }
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   moduleInfo.codeSize = spirv.size_bytes();
   moduleInfo.pCode = spirv.data();
@@ -73,7 +86,7 @@ VkShaderModule createShaderModule(const Device& device, std::string_view kernelN
 VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, std::string_view kernelName,
                                  SpecializationConstants* constants) {
   const std::string name(kernelName);
-  const VkShaderModule module = createShaderModule(device, kernelName);
+  const VkShaderModule module = createShaderModule(device, kernelName, constants);
 
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;

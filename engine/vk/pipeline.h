@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "vk/device.h"
@@ -18,6 +19,8 @@ class SpecializationConstants {
   SpecializationConstants& set(std::uint32_t id, std::uint32_t value);
   // Valid while this object lives and is not modified.
   const VkSpecializationInfo* info();
+  // Each (constant id, value), in the order set.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> values() const;
 
  private:
   std::vector<VkSpecializationMapEntry> entries_;
@@ -39,9 +42,11 @@ VkPipelineLayout createPipelineLayout(const Device& device, VkDescriptorSetLayou
                                       std::uint32_t pushConstantBytes, const char* name,
                                       VkShaderStageFlags stages = VK_SHADER_STAGE_COMPUTE_BIT);
 
-// A module of the kernel embedded as `kernelName` (shaders/<kernelName>), debug-named after it; the caller
-// destroys it once its pipeline exists. Throws if it is not embedded.
-VkShaderModule createShaderModule(const Device& device, std::string_view kernelName);
+// A module of the kernel embedded as `kernelName` (shaders/<kernelName>), debug-named after it, specialised on the
+// host with `constants` where given (vk/spirv_specialization.h); the caller destroys it once its pipeline exists.
+// Throws if it is not embedded.
+VkShaderModule createShaderModule(const Device& device, std::string_view kernelName,
+                                  const SpecializationConstants* constants = nullptr);
 
 // Builds the kernel embedded as `kernelName` (shaders/<kernelName>). Throws if it is not embedded.
 VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, std::string_view kernelName,

@@ -54,7 +54,7 @@ VkPipeline createRayTracingPipeline(const Device& device, VkPipelineLayout layou
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
   const auto addStage = [&](std::string_view kernel, VkShaderStageFlagBits stage) {
-    modules.push_back(createShaderModule(device, kernel));
+    modules.push_back(createShaderModule(device, kernel, constants));
     stages.push_back(stageInfo(stage, modules.back(), constants));
     return static_cast<std::uint32_t>(stages.size() - 1);
   };

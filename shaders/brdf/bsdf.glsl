@@ -15,9 +15,6 @@
 #include "brdf/delta_event.glsl"
 #include "brdf/sampling.glsl"
 
-// The RGB parameter starting at `slot` of the model's table (shared/scene_records.h).
-vec3 paramRgb(MaterialRecord m, uint slot) { return vec3(m.params[slot], m.params[slot + 1u], m.params[slot + 2u]); }
-
 #include "generated/bsdf_models.glsl"
 
 vec3 bsdfEval(MaterialRecord m, vec3 wi, vec3 wo) { return modelEval(m, wi, wo); }

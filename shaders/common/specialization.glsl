@@ -12,9 +12,12 @@ layout(constant_id = kSpecIntegrator) const uint kIntegrator = kIntegratorSlides
 layout(constant_id = kSpecSampling) const uint kSampling = kSamplingMis;
 layout(constant_id = kSpecLightKinds) const uint kLightKinds = kAllLightKinds;
 
-// After specialization these fold to constants and the driver removes the code they guard.
-bool modelEnabled(uint model) { return (kEnabledModels & (1u << model)) != 0u; }
-bool featureEnabled(uint feature) { return (kFeatures & feature) != 0u; }
-bool lightKindEnabled(uint kind) { return (kLightKinds & (1u << kind)) != 0u; }
+// Macros, not functions: with a literal argument each is a specialization-constant expression, so the host folds
+// it and drops the code it guards before the driver sees the kernel (engine/vk/spirv_specialization.h). A
+// function call would stay a call until inlined, and the driver would translate every model of the library
+// before removing the unused ones.
+#define modelEnabled(model) ((kEnabledModels & (1u << (model))) != 0u)
+#define featureEnabled(feature) ((kFeatures & (feature)) != 0u)
+#define lightKindEnabled(kind) ((kLightKinds & (1u << (kind))) != 0u)
 
 #endif
