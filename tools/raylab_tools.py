@@ -64,7 +64,7 @@ def registered_models(raylab: Path) -> list[dict]:
 
 def reads_file(model: dict) -> bool:
     """A model whose data comes from a file (measured): figures give it one, or leave it out."""
-    return any(param["role"] == "file" for param in model["params"])
+    return any(param["role"] in ("file", "network") for param in model["params"])
 
 
 def model_notes(model: dict) -> dict:

@@ -29,6 +29,7 @@ packages=(
   libglfw3-dev libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libopenexr-dev libimgui-dev
   libgtest-dev libembree-dev libcli11-dev pybind11-dev python3-dev
   libceres-dev  # raylab brdf fit: Ceres Solver (engine/fit)
+  libhdf5-dev   # neural BRDFs: the published Keras .h5 weight files (engine/measured/nbrdf.h)
   xvfb xauth assimp-testmodels
   python3 python3-venv
   blender-data  # CC0 HDR worlds that light the environment scenes (copied beside them, see environments)

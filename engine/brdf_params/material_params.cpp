@@ -143,13 +143,15 @@ void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 valu
     // holds it; a user gives a path (setFileParam).
     const auto id = static_cast<std::uint32_t>(value.x);
     bool loaded = value.x == float(id) && id != kNoMeasuredFile;
+    std::string path;
     if (loaded) {
       try {
-        measuredFilePath(id);
+        path = measuredFilePath(id);
       } catch (const Error&) {
         loaded = false;
       }
     }
+    if (loaded) checkFileKind(path, param->role, where + ": " + std::string(name));
     if (!loaded) {
       throw Error(where + ": " + std::string(name) + " of " + std::string(model.name) + " is a file: give its path (" +
                   std::string(name) + "=PATH)");
@@ -176,7 +178,14 @@ glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name) {
   return param == &kDelta ? glm::vec3(record.delta) : readSlot(record, *param);
 }
 
-bool isFileParam(const ParamInfo& param) { return param.role == "file"; }
+bool isFileParam(const ParamInfo& param) { return param.role == "file" || param.role == "network"; }
+
+const ParamInfo* findFileParam(const ModelInfo& model) {
+  for (const ParamInfo& param : model.params) {
+    if (isFileParam(param)) return &param;
+  }
+  return nullptr;
+}
 
 void setFileParam(gpu::MaterialRecord& record, std::string_view name, const std::string& path, const std::string& where) {
   const ParamInfo* param = findParam(modelInfo(record.model), name);
@@ -187,6 +196,7 @@ void setFileParam(gpu::MaterialRecord& record, std::string_view name, const std:
   if (path.empty()) throw Error(where + ": " + std::string(name) + " is empty; expected the path of a file");
   std::uint32_t id = kNoMeasuredFile;
   try {
+    checkFileKind(path, param->role, where + ": " + std::string(name));
     id = loadMeasured(path);
   } catch (const FileError& error) {
     throw FileError(where + ": " + std::string(name) + ": " + error.what(), error.problem());
@@ -205,7 +215,7 @@ void checkFileParams(const gpu::MaterialRecord& record, const std::string& where
   for (const ParamInfo& param : modelInfo(record.model).params) {
     if (isFileParam(param) && fileParamPath(record, param).empty()) {
       throw Error(where + ": " + std::string(modelInfo(record.model).name) + " needs its " + std::string(param.name) +
-                  " (" + std::string(param.name) + "=PATH of a MERL .binary file)");
+                  " (" + std::string(param.name) + "=PATH of " + fileKindText(param.role) + ")");
     }
   }
 }

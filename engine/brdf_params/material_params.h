@@ -89,8 +89,10 @@ void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 valu
 // The current value of a parameter (RGB parameters return three channels, scalars a splat).
 glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name);
 
-// A parameter naming a data file (role `file`: the measured model's MERL file).
+// A parameter naming a data file (role `file`: measured's MERL file; role `network`: nbrdf's Keras file).
 bool isFileParam(const ParamInfo& param);
+// The model's file parameter, or null.
+const ParamInfo* findFileParam(const ModelInfo& model);
 // Loads the file at `path` (measured_library.h: once per process, every check of its reader) and points the
 // parameter at it. Throws Error starting with `where` and naming the file.
 void setFileParam(gpu::MaterialRecord& record, std::string_view name, const std::string& path, const std::string& where);

@@ -1,6 +1,8 @@
 #include "brdf_tables/brdf_tables.h"
 
 #include <algorithm>
+#include <bit>
+#include <memory>
 #include <string>
 
 #include "brdf_params/material_params.h"
@@ -32,8 +34,10 @@ DeviceMaterials deviceMaterials(std::span<const gpu::MaterialRecord> records, st
     gpu::MaterialRecord& record = out.records[i];
     for (const ParamInfo& param : modelInfo(record.model).params) {
       if (!isFileParam(param)) continue;
-      checkFileParams(record, "material " + (i < names.size() ? "'" + names[i] + "'" : std::to_string(i)));
+      const std::string where = "material " + (i < names.size() ? "'" + names[i] + "'" : std::to_string(i));
+      checkFileParams(record, where);
       const auto id = static_cast<std::uint32_t>(record.params[param.slot]);
+      checkFileKind(measuredFilePath(id), param.role, where);
       auto at = std::find(out.measuredFiles.begin(), out.measuredFiles.end(), id);
       if (at == out.measuredFiles.end()) at = out.measuredFiles.insert(out.measuredFiles.end(), id);
       record.params[param.slot] = float(at - out.measuredFiles.begin());
@@ -43,18 +47,30 @@ DeviceMaterials deviceMaterials(std::span<const gpu::MaterialRecord> records, st
 }
 
 Buffer createBrdfTables(const Device& device, std::span<const std::uint32_t> measuredFiles) {
-  std::vector<float> values = brdfTableValues();
-  const std::uint64_t bytes =
-      (std::uint64_t(gpu::kMeasuredOffset) + std::uint64_t(gpu::kMeasuredBlockFloats) * measuredFiles.size()) * sizeof(float);
+  if (measuredFiles.size() > gpu::kMaxFileBlocks) {
+    throw Error(std::to_string(measuredFiles.size()) + " measured and neural BRDF files in one scene; the BRDF tables "
+                "hold at most " + std::to_string(gpu::kMaxFileBlocks));
+  }
+  std::vector<std::shared_ptr<const MeasuredFile>> files;
+  std::uint64_t floats = gpu::kFileBlocksOffset;
+  for (const std::uint32_t id : measuredFiles) {
+    files.push_back(measuredFile(id));
+    floats += files.back()->network ? gpu::kNbrdfBlockFloats : gpu::kMeasuredBlockFloats;
+  }
+  const std::uint64_t bytes = floats * sizeof(float);
   const std::uint64_t limit = device.properties.limits.maxStorageBufferRange;
   if (bytes > limit) {
     throw Error(std::to_string(measuredFiles.size()) + " measured files need " + std::to_string(bytes >> 20) +
-                " MiB of BRDF tables (17 MiB each); the device binds at most " + std::to_string(limit >> 20) +
+                " MiB of BRDF tables (17 MiB per MERL file); the device binds at most " + std::to_string(limit >> 20) +
                 " MiB in one buffer (maxStorageBufferRange): use fewer measured files in one scene");
   }
-  values.resize(gpu::kMeasuredOffset, 0.0f);
-  for (const std::uint32_t id : measuredFiles) {
-    const std::vector<float> block = measuredDeviceBlock(*measuredFile(id));
+  std::vector<float> values = brdfTableValues();
+  values.resize(gpu::kFileBlocksOffset, 0.0f);
+  values.reserve(floats);
+  for (std::size_t b = 0; b < files.size(); ++b) {
+    // The directory holds each block's first float as the bits of a uint (exact beyond float's 2^24 integers).
+    values[gpu::kFileDirectoryOffset + b] = std::bit_cast<float>(std::uint32_t(values.size()));
+    const std::vector<float> block = measuredDeviceBlock(*files[b]);
     values.insert(values.end(), block.begin(), block.end());
   }
   return createBufferWithData<float>(device, values, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "brdf tables");

@@ -53,11 +53,24 @@ Store& store() {
   return instance;
 }
 
+// A network's sampler reads every 10th phi_d bin: 48,600 evaluations, a few hundredths of a second.
+constexpr int kNetworkSamplerPhiStride = 10;
+
 std::shared_ptr<const MeasuredFile> readFile(const std::string& path) {
   auto file = std::make_shared<MeasuredFile>();
   file->path = path;
-  file->table = readMerl(path);
-  file->sampling = measuredSampling(file->table);
+  if (isNbrdfPath(path)) {
+    const NbrdfNetwork& network = file->network.emplace(readNbrdf(path));
+    file->sampling = binnedSampling(
+        [&network](int h, int d, int p) {
+          glm::dvec3 wi, wo;
+          return merlBinCentre(h, d, p, &wi, &wo) ? nbrdfEval(network, wi, wo) : glm::dvec3(-1.0);
+        },
+        kNetworkSamplerPhiStride);
+  } else {
+    file->table = readMerl(path);
+    file->sampling = measuredSampling(file->table);
+  }
   return file;
 }
 
@@ -116,12 +129,18 @@ std::uint32_t loadMeasured(const std::string& path) {
     const std::string usedKey =
         identity ? std::to_string(identity->device) + ":" + std::to_string(identity->inode) : name;
     if (std::find(used.begin(), used.end(), usedKey) == used.end()) {
-      if (used.size() >= kMaxMeasuredFilesPerScene) {
+      const bool merl = !isNbrdfPath(name);
+      if (merl && activeLimit->merlFiles_ >= kMaxMeasuredFilesPerScene) {
         throw Error(path + ": " + activeLimit->what_ + " would use more than " +
                     std::to_string(kMaxMeasuredFilesPerScene) +
-                    " measured files (the device tables hold that many in the 128 MiB every Vulkan device binds)");
+                    " measured files (MERL tables: the device holds that many in the 128 MiB every Vulkan device binds)");
+      }
+      if (used.size() >= kMaxFilesPerScene) {
+        throw Error(path + ": " + activeLimit->what_ + " would use more than " + std::to_string(kMaxFilesPerScene) +
+                    " measured and neural BRDF files (the device tables' directory holds that many)");
       }
       used.push_back(usedKey);
+      activeLimit->merlFiles_ += merl ? 1 : 0;
     }
   }
   if (id != kNoMeasuredFile) {
@@ -188,13 +207,51 @@ std::uint32_t measuredFileCount() {
   return std::uint32_t(s.entries.size());
 }
 
+std::uint32_t latestMeasuredFile(std::string_view role) {
+  Store& s = store();
+  const std::lock_guard lock(s.mutex);
+  for (auto id = std::uint32_t(s.entries.size()); id > kNoMeasuredFile; --id) {
+    if (isNbrdfPath(s.entries[id - 1].path) == (role == "network")) return id;
+  }
+  return kNoMeasuredFile;
+}
+
+std::string fileKindExtension(std::string_view role) { return role == "network" ? ".h5" : ".binary"; }
+
 std::size_t residentMeasuredFiles() {
   Store& s = store();
   const std::lock_guard lock(s.mutex);
   return std::size_t(std::count_if(s.entries.begin(), s.entries.end(), [](const Entry& e) { return e.file != nullptr; }));
 }
 
+std::string fileKindText(std::string_view role) {
+  return role == "network" ? "a neural BRDF .h5 file (Keras weights, its .json beside it)" : "a MERL .binary file";
+}
+
+void checkFileKind(const std::string& path, std::string_view role, const std::string& where) {
+  const bool network = isNbrdfPath(path);
+  if (network != (role == "network")) {
+    throw Error(where + ": " + path + " is " + fileKindText(network ? "network" : "file") + "; this parameter takes " +
+                fileKindText(role) + (network ? " (a neural BRDF renders as model nbrdf)" : " (a MERL file renders as model measured)"));
+  }
+}
+
 std::vector<float> measuredDeviceBlock(const MeasuredFile& file) {
+  const auto writeSampler = [&file](float* sampler) {
+    for (int j = 0; j < kMerlThetaH; ++j) {
+      sampler[gpu::kSamplerPmf + j] = float(file.sampling.pmf[j]);
+      sampler[gpu::kSamplerCdf + j] = float(file.sampling.cdf[j]);
+    }
+    for (int k = 0; k <= kMerlThetaH; ++k) sampler[gpu::kSamplerDensity + k] = float(file.sampling.density[k]);
+    sampler[gpu::kSamplerCosineProbability] = float(file.sampling.cosineProbability);
+  };
+  if (file.network) {
+    static_assert(gpu::kNbrdfWeightFloats == kNbrdfWeights);
+    std::vector<float> block(gpu::kNbrdfBlockFloats, 0.0f);
+    std::copy(file.network->weights.begin(), file.network->weights.end(), block.begin() + gpu::kNbrdfWeights);
+    writeSampler(block.data() + gpu::kNbrdfSampler);
+    return block;
+  }
   std::vector<float> block(gpu::kMeasuredBlockFloats, 0.0f);
   for (std::size_t i = 0; i < kMerlSamples; ++i) {
     for (std::size_t c = 0; c < 3; ++c) {
@@ -202,12 +259,7 @@ std::vector<float> measuredDeviceBlock(const MeasuredFile& file) {
       block[gpu::kMeasuredValues + 3 * i + c] = stored < 0.0 ? 0.0f : float(stored * kMerlScale[c]);
     }
   }
-  for (int j = 0; j < kMerlThetaH; ++j) {
-    block[gpu::kMeasuredPmf + j] = float(file.sampling.pmf[j]);
-    block[gpu::kMeasuredCdf + j] = float(file.sampling.cdf[j]);
-  }
-  for (int k = 0; k <= kMerlThetaH; ++k) block[gpu::kMeasuredDensity + k] = float(file.sampling.density[k]);
-  block[gpu::kMeasuredCosineProbability] = float(file.sampling.cosineProbability);
+  writeSampler(block.data() + gpu::kMeasuredSampler);
   return block;
 }
 

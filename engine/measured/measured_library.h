@@ -1,5 +1,5 @@
-// The measured files this process has loaded: a material of model `measured` holds its file's id here in its
-// `file` parameter (an integer in a float slot, exact below 2^24), so that the reference, the parameter table and
+// The measured files this process has loaded, MERL tables and neural BRDFs (nbrdf.h) alike: a material of model
+// `measured` or `nbrdf` holds its file's id here in its file parameter (an integer in a float slot, exact below 2^24), so that the reference, the parameter table and
 // the device all find the same table however many materials use it. Thread-safe (the Python module is called from
 // threads).
 //
@@ -11,12 +11,15 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "measured/measured_sampling.h"
 #include "measured/merl.h"
+#include "measured/nbrdf.h"
 #include "shared/brdf_tables.h"
 
 namespace raylab {
@@ -24,21 +27,31 @@ namespace raylab {
 // No file: the value of a `file` parameter no file was given for. A scene refuses a measured material without one.
 inline constexpr std::uint32_t kNoMeasuredFile = 0;
 
-// The measured files one scene (or one `brdf eval` CSV) may use: as many blocks as fit, after the build-time tables,
-// in the 2^27 bytes of maxStorageBufferRange every Vulkan device provides (lavapipe's limit too).
+// The MERL files one scene (or one `brdf eval` CSV) may use: as many blocks as fit, after the build-time tables and
+// the directory, in the 2^27 bytes of maxStorageBufferRange every Vulkan device provides (lavapipe's limit too).
 inline constexpr std::size_t kMaxMeasuredFilesPerScene =
-    ((std::size_t(1) << 27) / sizeof(float) - gpu::kMeasuredOffset) / gpu::kMeasuredBlockFloats;
+    ((std::size_t(1) << 27) / sizeof(float) - gpu::kFileBlocksOffset) / gpu::kMeasuredBlockFloats;
+// Files of either kind in one scene: the directory's entries (a network's block is 4 KB).
+inline constexpr std::size_t kMaxFilesPerScene = gpu::kMaxFileBlocks;
 // Tables kept in memory when nothing holds them (33 MiB each, in doubles).
 inline constexpr std::size_t kResidentMeasuredFiles = 8;
 
 struct MeasuredFile {
-  std::string path;  // absolute, as loaded
-  MerlTable table;
+  std::string path;                     // absolute, as loaded
+  MerlTable table;                      // a MERL file's (empty for a network)
+  std::optional<NbrdfNetwork> network;  // a neural BRDF's (a `.h5` path)
   MeasuredSampling sampling;
 };
 
+// What a file parameter of `role` ("file": a MERL table; "network": a neural BRDF) accepts, as a user reads it.
+std::string fileKindText(std::string_view role);
+// Throws Error, naming `where`, unless the file at `path` is of the kind `role` accepts (a file's kind is its
+// extension's: loadMeasured reads a `.h5` as a network, anything else as MERL).
+void checkFileKind(const std::string& path, std::string_view role, const std::string& where);
+
 // While one is alive on a thread, loadMeasured counts the distinct files loaded there and refuses, before reading
-// it, a file beyond kMaxMeasuredFilesPerScene: a scene's loader and a CSV's reader hold one. `what` names the
+// it, a MERL file beyond kMaxMeasuredFilesPerScene or any file beyond kMaxFilesPerScene: a scene's loader and a
+// CSV's reader hold one. `what` names the
 // whole ("scene.gltf").
 class MeasuredFileLimit {
  public:
@@ -51,11 +64,12 @@ class MeasuredFileLimit {
   friend std::uint32_t loadMeasured(const std::string& path);
   std::string what_;
   std::vector<std::string> files_;
+  std::size_t merlFiles_ = 0;
   MeasuredFileLimit* outer_;
 };
 
-// Reads and checks the MERL file at `path` (readMerl's checks) unless the same file, unchanged, is loaded already;
-// returns its id (>= 1). Throws Error naming the file.
+// Reads and checks the file at `path` (readNbrdf's checks for a `.h5`, else readMerl's) unless the same file,
+// unchanged, is loaded already; returns its id (>= 1). Throws Error naming the file.
 std::uint32_t loadMeasured(const std::string& path);
 // The file of an id loadMeasured returned (read again if it was evicted; the newest version if it changed); throws
 // Error for any other id, or when an evicted file can no longer be read.
@@ -66,11 +80,15 @@ std::string measuredFilePath(std::uint32_t id);
 // How many files were loaded: their ids are 1 to this (the viewer lists their folders, and a material switched to
 // `measured` takes the last one).
 std::uint32_t measuredFileCount();
+// The id of the file of the kind `role` accepts (fileKindText) loaded most recently, or kNoMeasuredFile.
+std::uint32_t latestMeasuredFile(std::string_view role);
+// The extension of the files of that kind (".binary", ".h5").
+std::string fileKindExtension(std::string_view role);
 // How many tables are in memory now.
 std::size_t residentMeasuredFiles();
 
-// The floats of one block of the device's BRDF tables (shared/brdf_tables.h, kMeasuredBlockFloats): f in RGB
-// triples (scaled, missing as 0), the sampler's tables and its cosine probability.
+// The floats of the file's block of the device's BRDF tables (shared/brdf_tables.h): a MERL file's f in RGB triples
+// (scaled, missing as 0) or a network's weights, then the sampler's tables and its cosine probability.
 std::vector<float> measuredDeviceBlock(const MeasuredFile& file);
 
 }  // namespace raylab

@@ -32,17 +32,26 @@ int merlThetaHBin(double thetaH) {
 }
 
 MeasuredSampling measuredSampling(const MerlTable& table) {
+  return binnedSampling(
+      [&table](int h, int d, int p) {
+        const std::size_t i = std::size_t(p) + std::size_t(kMerlPhiD) * (std::size_t(d) + std::size_t(kMerlThetaD) * h);
+        const glm::dvec3 stored(table.stored[i], table.stored[i + kMerlSamples], table.stored[i + 2 * kMerlSamples]);
+        return stored * glm::dvec3(kMerlScale[0], kMerlScale[1], kMerlScale[2]);
+      },
+      1);
+}
+
+MeasuredSampling binnedSampling(const std::function<glm::dvec3(int h, int d, int p)>& value, int phiStride) {
   constexpr int kNearMirrorThetaD = kMerlThetaD / 3;  // theta_d < 30 degrees
   std::array<double, kMerlThetaH> weight{};
   for (int h = 0; h < kMerlThetaH; ++h) {
     double sum = 0.0;
     int count = 0;
     for (int d = 0; d < kNearMirrorThetaD; ++d) {
-      for (int p = 0; p < kMerlPhiD; ++p) {
-        const std::size_t i = std::size_t(p) + std::size_t(kMerlPhiD) * (std::size_t(d) + std::size_t(kMerlThetaD) * h);
-        const glm::dvec3 stored(table.stored[i], table.stored[i + kMerlSamples], table.stored[i + 2 * kMerlSamples]);
-        if (stored.x < 0.0 || stored.y < 0.0 || stored.z < 0.0) continue;  // missing
-        sum += luminance(stored * glm::dvec3(kMerlScale[0], kMerlScale[1], kMerlScale[2]));
+      for (int p = 0; p < kMerlPhiD; p += phiStride) {
+        const glm::dvec3 f = value(h, d, p);
+        if (f.x < 0.0 || f.y < 0.0 || f.z < 0.0) continue;  // missing
+        sum += luminance(f);
         ++count;
       }
     }
@@ -83,7 +92,9 @@ MeasuredSampling measuredSampling(const MerlTable& table) {
     if (2.0 * thetaH >= 0.5 * kPi) break;
     const glm::dvec3 half(std::sin(thetaH), 0.0, std::cos(thetaH));
     const glm::dvec3 wi = 2.0 * half.z * half - n;
-    const double f = luminance(merlLookup(table, wi, n));
+    const std::size_t i = merlIndex(wi, n);
+    const glm::dvec3 binned = value(int(i / (kMerlThetaD * kMerlPhiD)), int(i / kMerlPhiD % kMerlThetaD), int(i % kMerlPhiD));
+    const double f = luminance(glm::max(binned, glm::dvec3(0.0)));  // missing: 0, as merlLookup gives it
     albedo += f * wi.z * 4.0 * half.z * binSolidAngle(h);
     if (2.0 * thetaH < 80.0 / 180.0 * kPi) floor = std::min(floor, f);
   }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 
 #include <glm/glm.hpp>
 
@@ -25,6 +26,10 @@ struct MeasuredSampling {
 };
 
 MeasuredSampling measuredSampling(const MerlTable& table);
+// The same sampler for any BRDF given at the database's bins: value(h, d, p) is f (RGB) at bin (theta_h, theta_d,
+// phi_d), negative in a channel where the sample is missing. Every `phiStride`-th phi_d bin is read (a neural
+// BRDF is smooth in phi_d, and each value costs a network evaluation).
+MeasuredSampling binnedSampling(const std::function<glm::dvec3(int h, int d, int p)>& value, int phiStride);
 
 // Lower edge of theta_h bin j (j = 90: pi/2): theta = (j / 90)^2 pi/2, the database's non-linear axis.
 double merlThetaHEdge(int j);

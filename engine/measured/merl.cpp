@@ -127,21 +127,22 @@ void merlDirections(double thetaH, double thetaD, double phiD, glm::dvec3* wi, g
   *wo = 2.0 * glm::dot(half, *wi) * half - *wi;
 }
 
+bool merlBinCentre(int h, int d, int p, glm::dvec3* wi, glm::dvec3* wo) {
+  // The centre of bin h of the non-linear axis: sqrt(theta_h / (pi/2)) * 90 = h + 1/2.
+  const double u = (h + 0.5) / kMerlThetaH;
+  merlDirections(u * u * 0.5 * kPi, (d + 0.5) / kMerlThetaD * 0.5 * kPi, (p + 0.5) / kMerlPhiD * kPi, wi, wo);
+  return wi->z > 0.0 && wo->z > 0.0;
+}
+
 MerlTable tabulateMerl(const std::function<glm::dvec3(const glm::dvec3& wi, const glm::dvec3& wo)>& f) {
   MerlTable table;
   table.stored.assign(3 * kMerlSamples, 0.0);
   for (int h = 0; h < kMerlThetaH; ++h) {
-    // The centre of bin h of the non-linear axis: sqrt(theta_h / (pi/2)) * 90 = h + 1/2.
-    const double u = (h + 0.5) / kMerlThetaH;
-    const double thetaH = u * u * 0.5 * kPi;
     for (int d = 0; d < kMerlThetaD; ++d) {
-      const double thetaD = (d + 0.5) / kMerlThetaD * 0.5 * kPi;
       for (int p = 0; p < kMerlPhiD; ++p) {
-        const double phiD = (p + 0.5) / kMerlPhiD * kPi;
         glm::dvec3 wi, wo;
-        merlDirections(thetaH, thetaD, phiD, &wi, &wo);
         const std::size_t index = binIndex(h, d, p);
-        if (!(wi.z > 0.0 && wo.z > 0.0)) {
+        if (!merlBinCentre(h, d, p, &wi, &wo)) {
           // Below the horizon the pair does not exist: the database marks such samples missing.
           for (int c = 0; c < 3; ++c) table.stored[index + c * kMerlSamples] = -1.0;
           ++table.missing;

@@ -50,5 +50,7 @@ MerlTable tabulateMerl(const std::function<glm::dvec3(const glm::dvec3& wi, cons
 
 // The pair (wi, wo) at half/difference angles (theta_h, theta_d, phi_d), with phi_h = 0.
 void merlDirections(double thetaH, double thetaD, double phiD, glm::dvec3* wi, glm::dvec3* wo);
+// The pair at the centre of bin (h, d, p); false where it does not exist (a direction at or below the horizon).
+bool merlBinCentre(int h, int d, int p, glm::dvec3* wi, glm::dvec3* wo);
 
 }  // namespace raylab

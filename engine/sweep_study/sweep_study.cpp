@@ -74,7 +74,7 @@ SweepSpec validatedSpec(const SweepOptions& o) {
   }
   if (o.log && o.linear) usage("--log and --linear exclude each other");
   // A sweep's scene is a glTF of numbers (gltf_write); a model reading a file is rendered from a scene of yours.
-  if (findRole(*model, "file") != nullptr) {
+  if (findFileParam(*model) != nullptr) {
     usage("--model " + o.model + " reads a file: sweeps take models of numbers only (render a scene of yours with "
           "--material NAME=" + o.model + ":file=PATH, docs/fitting.md)");
   }

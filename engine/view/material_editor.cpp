@@ -43,11 +43,13 @@ bool drawParam(gpu::MaterialRecord& record, const ParamInfo& param) {
   return changed;
 }
 
-// The MERL files a user may pick: the .binary files in the current directory and in the folders of the files
-// already loaded (a scene's own folder once it names one), at most kMaxListed, by name.
+// The files a user may pick for a parameter of `role`: those of its kind (.binary MERL files, .h5 networks) in the
+// current directory and in the folders of the files already loaded (a scene's own folder once it names one), at
+// most kMaxListed, by name.
 constexpr std::size_t kMaxListed = 64;
 
-std::vector<std::string> measuredCandidates() {
+std::vector<std::string> measuredCandidates(std::string_view role) {
+  const std::string extension = fileKindExtension(role);
   std::set<std::filesystem::path> folders = {std::filesystem::current_path()};
   for (std::uint32_t id = 1; id <= measuredFileCount(); ++id) {
     folders.insert(std::filesystem::path(measuredFilePath(id)).parent_path());
@@ -57,7 +59,7 @@ std::vector<std::string> measuredCandidates() {
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
       if (files.size() >= kMaxListed) break;
-      if (entry.path().extension() == ".binary" && entry.is_regular_file(error)) {
+      if (entry.path().extension() == extension && entry.is_regular_file(error)) {
         files.insert(std::filesystem::absolute(entry.path()).lexically_normal().string());
       }
     }
@@ -70,11 +72,13 @@ std::vector<std::string> measuredCandidates() {
 bool drawFileParam(gpu::MaterialRecord& record, const ParamInfo& param) {
   static std::string problem;
   const std::string current = fileParamPath(record, param);
-  const std::string shown = current.empty() ? "(pick a .binary file)" : std::filesystem::path(current).filename().string();
+  const std::string extension = fileKindExtension(param.role);
+  const std::string shown =
+      current.empty() ? "(pick a " + extension + " file)" : std::filesystem::path(current).filename().string();
   bool changed = false;
   if (ImGui::BeginCombo(std::string(param.name).c_str(), shown.c_str())) {
-    const std::vector<std::string> candidates = measuredCandidates();
-    if (candidates.empty()) ImGui::TextDisabled("no .binary file here or beside the loaded ones");
+    const std::vector<std::string> candidates = measuredCandidates(param.role);
+    if (candidates.empty()) ImGui::TextDisabled("no %s file here or beside the loaded ones", extension.c_str());
     for (const std::string& path : candidates) {
       if (ImGui::Selectable(std::filesystem::path(path).filename().string().c_str(), path == current) && path != current) {
         try {
@@ -104,15 +108,16 @@ bool drawMaterialEditor(gpu::MaterialRecord& record) {
       const bool selected = model.id == record.model;
       // A model that reads a file can be chosen once a file is loaded (then it takes the last one): the first comes
       // from its file list below, or from --compare, a scene or Python.
-      const bool needsFile = findRole(model, "file") != nullptr && measuredFileCount() == 0;
+      const ParamInfo* fileParam = findFileParam(model);
+      const bool needsFile = fileParam != nullptr && latestMeasuredFile(fileParam->role) == kNoMeasuredFile;
       if (needsFile) {
         gpu::MaterialRecord candidate = record;
-        const std::vector<std::string> files = measuredCandidates();
+        const std::vector<std::string> files = measuredCandidates(fileParam->role);
         ImGui::BeginDisabled(files.empty());
         if (ImGui::Selectable(std::string(model.name).c_str(), selected) && !selected) {
           try {
             switchModel(candidate, model.id);
-            setFileParam(candidate, findRole(model, "file")->name, files.front(), "panel");
+            setFileParam(candidate, fileParam->name, files.front(), "panel");
             record = candidate;
             changed = true;
           } catch (const Error&) {
@@ -121,7 +126,9 @@ bool drawMaterialEditor(gpu::MaterialRecord& record) {
         }
         ImGui::EndDisabled();
         if (files.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-          ImGui::SetTooltip("no .binary file in the current directory: make one with raylab brdf tabulate");
+          ImGui::SetTooltip(fileParam->role == std::string_view("network")
+                                ? "no .h5 neural BRDF in the current directory or beside the loaded files"
+                                : "no .binary file in the current directory: make one with raylab brdf tabulate");
         }
         continue;
       }

@@ -97,12 +97,15 @@ void switchModel(gpu::MaterialRecord& record, std::uint32_t model) {
     carry(next, "exponent", glm::vec3(blinn));
     carry(next, "mirror_exponent", glm::vec3(blinn / kMirrorToHalfwayExponent));
   }
-  // A measured material keeps its file, else takes the one most recently loaded (none yet: it has none, and the
-  // panel asks for one).
-  if (const ParamInfo* file = findRole(modelInfo(model), "file"); file != nullptr) {
-    const ParamInfo* had = findRole(modelInfo(record.model), "file");
-    if (had != nullptr && record.params[had->slot] != 0.0f) next.params[file->slot] = record.params[had->slot];
-    else if (measuredFileCount() > 0) next.params[file->slot] = float(measuredFileCount());
+  // A material reading a file keeps its file when the new model reads the same kind (measured, nbrdf), else takes
+  // the one of that kind most recently loaded (none yet: it has none, and the panel asks for one).
+  if (const ParamInfo* file = findFileParam(modelInfo(model)); file != nullptr) {
+    const ParamInfo* had = findFileParam(modelInfo(record.model));
+    if (had != nullptr && had->role == file->role && record.params[had->slot] != 0.0f) {
+      next.params[file->slot] = record.params[had->slot];
+    } else {
+      next.params[file->slot] = float(latestMeasuredFile(file->role));
+    }
   }
   record = next;
 }

@@ -298,7 +298,7 @@ SceneEffect applyToScene(const ScriptEvent& event, Scene& scene) {
         }
         gpu::MaterialRecord switched = material->record;
         switchModel(switched, model->id);
-        const ParamInfo* file = findRole(*model, "file");
+        const ParamInfo* file = findFileParam(*model);
         if (!event.path.empty() && file == nullptr) throw Error(event.where + ": " + std::string(model->name) + " reads no file");
         if (file != nullptr && !event.path.empty()) setFileParam(switched, file->name, event.path, event.where);
         checkFileParams(switched, event.where + " (name its file: model " + event.name + " " + event.param + " FILE)");

@@ -14,4 +14,7 @@ layout(set = 0, binding = kBindingBrdfTables, scalar) readonly buffer BrdfTables
 float ggxAlbedoLossEntry(uint i) { return brdfTables[kGgxAlbedoOffset + i]; }
 float ggxAverageLossEntry(uint i) { return brdfTables[kGgxAlbedoAverageOffset + i]; }
 
+// Where the block of a file parameter's file begins (the parameter holds the block's number, exact in a float).
+uint fileBlock(float file) { return floatBitsToUint(brdfTables[kFileDirectoryOffset + uint(file)]); }
+
 #endif

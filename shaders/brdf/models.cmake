@@ -23,3 +23,4 @@ raylab_brdf_model(lafortune PREFIX lafortune GLSL brdf/lafortune.glsl REFERENCE 
 raylab_brdf_model(abc_microfacet PREFIX abcMicrofacet GLSL brdf/abc_microfacet.glsl REFERENCE ${reference}/abc_microfacet.cpp)
 raylab_brdf_model(sgd PREFIX sgd GLSL brdf/sgd.glsl REFERENCE ${reference}/sgd.cpp)
 raylab_brdf_model(abc_smooth PREFIX abcSmooth GLSL brdf/abc_smooth.glsl REFERENCE ${reference}/abc_smooth.cpp)
+raylab_brdf_model(nbrdf PREFIX nbrdf GLSL brdf/nbrdf.glsl REFERENCE ${reference}/nbrdf.cpp)

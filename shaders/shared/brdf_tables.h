@@ -8,14 +8,21 @@
 // Stored as the energy lost, not E: float keeps 1 - E to full relative precision where E is nearly 1, and the
 // compensation divides by 1 - E_avg.
 // The values are computed at build time (engine/reference/ggx_albedo_table.cpp) into generated/ggx_albedo.h.
-//   [kMeasuredOffset + b kMeasuredBlockFloats, ...) block b: one measured (MERL) file the scene uses, in the
-//                                             order the upload numbers them (engine/measured/measured_library.h):
+//   [kFileDirectoryOffset, +kMaxFileBlocks)   where block b begins, as the bits of a uint: the files the scene uses,
+//                                             in the order the upload numbers them (engine/brdf_tables), from
+//                                             kFileBlocksOffset on. A material of model `measured` or `nbrdf` holds
+//                                             its block's number b in its file parameter. Two kinds of block:
+//   a measured (MERL) file, kMeasuredBlockFloats:
 //     [kMeasuredValues, +3 kMerlSamples)      f in RGB triples at the file's sample index (scaled; missing = 0)
-//     [kMeasuredPmf, +kMerlThetaH)            its sampler's theta_h bin probabilities (measured_sampling.h)
-//     [kMeasuredCdf, +kMerlThetaH)            their inclusive running sum
-//     [kMeasuredDensity, +kMerlThetaH + 1)    the half vector's density per unit solid angle at each bin edge
-//     [kMeasuredCosineProbability]            the probability of the cosine-weighted lobe
-// A material of model `measured` holds its block's number in its `file` parameter.
+//     [kMeasuredSampler, +kSamplerFloats)     its half-vector sampler
+//   a neural BRDF (engine/measured/nbrdf.h), kNbrdfBlockFloats:
+//     [kNbrdfWeights, +kNbrdfWeightFloats)    each layer's kernel (inputs x outputs, row-major), then its bias
+//     [kNbrdfSampler, +kSamplerFloats)        its half-vector sampler
+//   a half-vector sampler (engine/measured/measured_sampling.h):
+//     [kSamplerPmf, +kMerlThetaH)             the theta_h bins' probabilities
+//     [kSamplerCdf, +kMerlThetaH)             their inclusive running sum
+//     [kSamplerDensity, +kMerlThetaH + 1)     the half vector's density per unit solid angle at each bin edge
+//     [kSamplerCosineProbability]             the probability of the cosine-weighted lobe
 #ifndef RAYLAB_SHARED_BRDF_TABLES_H
 #define RAYLAB_SHARED_BRDF_TABLES_H
 
@@ -32,13 +39,28 @@ RL_CONST uint kMerlThetaHBins = 90;
 RL_CONST uint kMerlThetaDBins = 90;
 RL_CONST uint kMerlPhiDBins = 180;
 RL_CONST uint kMerlSampleCount = kMerlThetaHBins * kMerlThetaDBins * kMerlPhiDBins;
-RL_CONST uint kMeasuredOffset = kBrdfTableFloats;
+RL_CONST uint kMaxFileBlocks = 64;
+RL_CONST uint kFileDirectoryOffset = kBrdfTableFloats;
+RL_CONST uint kFileBlocksOffset = kFileDirectoryOffset + kMaxFileBlocks;
+
+RL_CONST uint kSamplerPmf = 0;
+RL_CONST uint kSamplerCdf = kSamplerPmf + kMerlThetaHBins;
+RL_CONST uint kSamplerDensity = kSamplerCdf + kMerlThetaHBins;
+RL_CONST uint kSamplerCosineProbability = kSamplerDensity + kMerlThetaHBins + 1;
+RL_CONST uint kSamplerFloats = kSamplerCosineProbability + 1;
+
 RL_CONST uint kMeasuredValues = 0;
-RL_CONST uint kMeasuredPmf = 3 * kMerlSampleCount;
-RL_CONST uint kMeasuredCdf = kMeasuredPmf + kMerlThetaHBins;
-RL_CONST uint kMeasuredDensity = kMeasuredCdf + kMerlThetaHBins;
-RL_CONST uint kMeasuredCosineProbability = kMeasuredDensity + kMerlThetaHBins + 1;
-RL_CONST uint kMeasuredBlockFloats = kMeasuredCosineProbability + 1;
+RL_CONST uint kMeasuredSampler = 3 * kMerlSampleCount;
+RL_CONST uint kMeasuredBlockFloats = kMeasuredSampler + kSamplerFloats;
+
+RL_CONST uint kNbrdfInputs = 6;
+RL_CONST uint kNbrdfHidden = 21;
+RL_CONST uint kNbrdfOutputs = 3;
+RL_CONST uint kNbrdfWeights = 0;
+RL_CONST uint kNbrdfWeightFloats = kNbrdfInputs * kNbrdfHidden + kNbrdfHidden + kNbrdfHidden * kNbrdfHidden + kNbrdfHidden +
+                                   kNbrdfHidden * kNbrdfOutputs + kNbrdfOutputs;
+RL_CONST uint kNbrdfSampler = kNbrdfWeights + kNbrdfWeightFloats;
+RL_CONST uint kNbrdfBlockFloats = kNbrdfSampler + kSamplerFloats;
 
 RL_NAMESPACE_END
 

@@ -264,7 +264,7 @@ TEST_F(BrdfDeviceSamplingRobustness, DegenerateInputsGiveFiniteSamplesOrNone) {
       for (const auto& [d, sp] : {std::pair{0.0f, 0.0f}, std::pair{1.0f, 1.0f}, std::pair{0.0f, 1.0f}}) {
         gpu::MaterialRecord record = defaultRecord(model.id);
         for (const ParamInfo& p : model.params) {
-          if (isFileParam(p)) setParam(record, p.name, glm::vec3(float(measuredTestFile(0))), "test");
+          if (isFileParam(p)) setParam(record, p.name, glm::vec3(float(testFileFor(p, 0))), "test");
         }
         bool applies = true;
         for (const Param& p : scalars) applies = applies && findParam(model, p.name) != nullptr;

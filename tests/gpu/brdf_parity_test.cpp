@@ -88,7 +88,7 @@ gpu::MaterialRecord randomMaterial(std::uint32_t model, Random& random) {
   for (const ParamInfo& p : modelInfo(model).params) {
     glm::vec3 value;
     if (isFileParam(p)) {
-      value = glm::vec3(float(measuredTestFile(random.uniform() < 0.5 ? 0 : 1)));
+      value = glm::vec3(float(testFileFor(p, random.uniform() < 0.5 ? 0 : 1)));
       setParam(record, p.name, value, "random material");
       continue;
     }
@@ -227,7 +227,7 @@ std::vector<gpu::MaterialRecord> cornerMaterials(std::uint32_t model) {
     for (const auto& [d, other] : reflectances) {
       gpu::MaterialRecord record = defaultRecord(model);
       for (const ParamInfo& p : info.params) {
-        if (isFileParam(p)) setParam(record, p.name, glm::vec3(float(measuredTestFile(0))), "corner");
+        if (isFileParam(p)) setParam(record, p.name, glm::vec3(float(testFileFor(p, 0))), "corner");
         if (!p.rgb) continue;
         const glm::vec3 value = &p == diffuse ? d : other;
         setParam(record, p.name, glm::clamp(value, glm::vec3(p.min), glm::vec3(p.max)), "corner");

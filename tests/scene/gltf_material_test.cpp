@@ -63,9 +63,9 @@ TEST(GltfMaterial, ExtrasRaylabChoosesTheModelAndItsParameters) {
 TEST(GltfMaterial, EveryModelOfTheTableCanBeChosen) {
   for (const ModelInfo& model : allModels()) {
     const json raylab = {{"extras", {{"raylab", {{"model", std::string(model.name)}}}}}};
-    if (findRole(model, "file") != nullptr) {
+    if (findFileParam(model) != nullptr) {
       // A model reading a file needs it named (measured_cli_test renders one from a scene's folder).
-      EXPECT_NE(materialError(raylab).find("measured needs its file"), std::string::npos) << model.name;
+      EXPECT_NE(materialError(raylab).find(std::string(model.name) + " needs its file"), std::string::npos) << model.name;
       continue;
     }
     const Scene scene = loadMaterial(raylab);

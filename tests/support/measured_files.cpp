@@ -9,6 +9,7 @@
 #include "measured/measured_library.h"
 #include "measured/merl.h"
 #include "reference/brdf_reference.h"
+#include "support/nbrdf_files.h"
 
 namespace raylab::test {
 
@@ -32,5 +33,9 @@ std::string measuredTestPath(int which) {
 }
 
 std::uint32_t measuredTestFile(int which) { return loadMeasured(measuredTestPath(which)); }
+
+std::uint32_t testFileFor(const ParamInfo& param, int which) {
+  return param.role == std::string_view("network") ? nbrdfTestFile(which) : measuredTestFile(which);
+}
 
 }  // namespace raylab::test

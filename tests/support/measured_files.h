@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string>
 
+#include "brdf_params/material_params.h"
+
 namespace raylab::test {
 
 struct MeasuredTestFile {
@@ -25,5 +27,8 @@ inline constexpr MeasuredTestFile kMeasuredTestFiles[] = {
 std::string measuredTestPath(int which);
 // Its id, loaded on first use.
 std::uint32_t measuredTestFile(int which);
+// The id of test file `which` (0 or 1) of the kind the file parameter `param` takes: a MERL file above, or a
+// neural BRDF (nbrdf_files.h).
+std::uint32_t testFileFor(const ParamInfo& param, int which);
 
 }  // namespace raylab::test

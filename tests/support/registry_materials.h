@@ -32,7 +32,7 @@ inline std::vector<GenericMaterial> uncoveredModelMaterials(const std::set<std::
       GenericMaterial material{std::string(model.name), {}};
       for (const ParamInfo& p : model.params) {
         if (p.rgb) material.params.push_back({p.name, p.role == "diffuse" ? diffuse : other});
-        if (isFileParam(p)) material.params.push_back({p.name, double(measuredTestFile(variant))});
+        if (isFileParam(p)) material.params.push_back({p.name, double(testFileFor(p, variant))});
       }
       ++variant;
       materials.push_back(material);

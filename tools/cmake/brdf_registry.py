@@ -18,7 +18,7 @@ import sys
 MAX_PARAM_FLOATS = 32  # gpu::kMaxMaterialParams (shaders/shared/scene_records.h)
 LOBES = {"reflection": 1, "transmission": 2, "diffuse": 4, "glossy": 8, "specular": 16}
 ROLES = {"diffuse", "specular", "eta", "transmittance", "slope", "slope_x", "slope_y", "exponent", "mirror_exponent",
-         "exponent_x", "exponent_y", "lobe_x", "lobe_y", "file", "roughness", "metallic", "specular_weight",
+         "exponent_x", "exponent_y", "lobe_x", "lobe_y", "file", "network", "roughness", "metallic", "specular_weight",
          "specular_tint"}
 ROW = re.compile(r"^//\s*\|\s*`?(\w+)`?\s*\|\s*\[([-0-9.e]+),\s*([-0-9.e]+)\]\s*\|\s*([-0-9.e]+)\s*\|"
                  r"\s*([^|]*)\|\s*([^|]*?)\s*\|\s*$")
@@ -76,7 +76,7 @@ def parse_model(name, prefix, include, path):
                 roles = [t for t in tags if t not in ("rgb", "log")]
                 if len(roles) > 1 or (roles and roles[0] not in ROLES):
                     raise RegistryError(f"{where}: kind is rgb, log and at most one role of {sorted(ROLES)}")
-                if "file" in roles and (rgb or log):
+                if ("file" in roles or "network" in roles) and (rgb or log):
                     raise RegistryError(f"{where}: a file parameter is one scalar slot (the file's id), neither rgb nor log")
                 lo, hi, default = float(lo), float(hi), float(default)
                 if not lo <= default <= hi or (log and lo <= 0):
