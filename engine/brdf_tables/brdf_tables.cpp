@@ -55,7 +55,7 @@ Buffer createBrdfTables(const Device& device, std::span<const std::uint32_t> mea
   std::uint64_t floats = gpu::kFileBlocksOffset;
   for (const std::uint32_t id : measuredFiles) {
     files.push_back(measuredFile(id));
-    floats += files.back()->network ? gpu::kNbrdfBlockFloats : gpu::kMeasuredBlockFloats;
+    floats += (files.back()->network ? gpu::kNbrdfBlockFloats : gpu::kMeasuredBlockFloats) + 3;  // + alignment
   }
   const std::uint64_t bytes = floats * sizeof(float);
   const std::uint64_t limit = device.properties.limits.maxStorageBufferRange;
@@ -68,7 +68,9 @@ Buffer createBrdfTables(const Device& device, std::span<const std::uint32_t> mea
   values.resize(gpu::kFileBlocksOffset, 0.0f);
   values.reserve(floats);
   for (std::size_t b = 0; b < files.size(); ++b) {
-    // The directory holds each block's first float as the bits of a uint (exact beyond float's 2^24 integers).
+    // Each block starts at a multiple of 4 floats (a network is read as vec4s). The directory holds its first
+    // float as the bits of a uint (exact beyond float's 2^24 integers).
+    values.resize((values.size() + 3) / 4 * 4, 0.0f);
     values[gpu::kFileDirectoryOffset + b] = std::bit_cast<float>(std::uint32_t(values.size()));
     const std::vector<float> block = measuredDeviceBlock(*files[b]);
     values.insert(values.end(), block.begin(), block.end());

@@ -246,9 +246,8 @@ std::vector<float> measuredDeviceBlock(const MeasuredFile& file) {
     sampler[gpu::kSamplerCosineProbability] = float(file.sampling.cosineProbability);
   };
   if (file.network) {
-    static_assert(gpu::kNbrdfWeightFloats == kNbrdfWeights);
     std::vector<float> block(gpu::kNbrdfBlockFloats, 0.0f);
-    std::copy(file.network->weights.begin(), file.network->weights.end(), block.begin() + gpu::kNbrdfWeights);
+    writeNbrdfDeviceLayout(*file.network, block.data());
     writeSampler(block.data() + gpu::kNbrdfSampler);
     return block;
   }

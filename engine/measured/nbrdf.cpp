@@ -9,6 +9,7 @@
 #include <mutex>
 #include <vector>
 
+#include "shared/brdf_tables.h"
 #include "util/error.h"
 #include "util/files.h"
 
@@ -207,6 +208,31 @@ NbrdfNetwork readNbrdf(const std::string& path) {
                     error.problem());
   }
   return decodeNbrdf(weights, architecture, path);
+}
+
+void writeNbrdfDeviceLayout(const NbrdfNetwork& network, float* out) {
+  static_assert(gpu::kNbrdfInputs == kNbrdfInputs && gpu::kNbrdfHidden == kNbrdfHidden &&
+                gpu::kNbrdfOutputs == kNbrdfOutputs);
+  constexpr int h = kNbrdfHidden, o = kNbrdfOutputs, n = kNbrdfInputs;
+  const float* w1 = network.weights.data();
+  const float* b1 = w1 + n * h;
+  const float* w2 = b1 + h;
+  const float* b2 = w2 + h * h;
+  const float* w3 = b2 + h;
+  const float* b3 = w3 + h * o;
+  std::fill(out, out + 4 * gpu::kNbrdfNetwork4, 0.0f);
+  const auto vec4At = [out](std::uint32_t index) { return out + 4 * index; };
+  for (int i = 0; i < h; ++i) {
+    float* first = vec4At(gpu::kNbrdfFirstLayer4 + 2 * i);
+    for (int k = 0; k < n; ++k) first[k] = w1[k * h + i];
+    first[n] = b1[i];  // the input's seventh component is 1
+    float* row = vec4At(gpu::kNbrdfSecondLayer4 + gpu::kNbrdfHidden4 * i);
+    for (int j = 0; j < h; ++j) row[j] = w2[i * h + j];
+    float* third = vec4At(gpu::kNbrdfThirdLayer4 + i);
+    for (int c = 0; c < o; ++c) third[c] = w3[i * o + c];
+  }
+  std::copy(b2, b2 + h, vec4At(gpu::kNbrdfSecondBias4));
+  std::copy(b3, b3 + o, vec4At(gpu::kNbrdfThirdBias4));
 }
 
 std::array<double, kNbrdfInputs> nbrdfInput(const glm::dvec3& wi, const glm::dvec3& wo) {

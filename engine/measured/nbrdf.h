@@ -41,6 +41,10 @@ NbrdfNetwork readNbrdf(const std::string& path);
 // The same checks of the files' bytes; `where` names them in errors.
 NbrdfNetwork decodeNbrdf(const std::string& weightBytes, const std::string& architectureText, const std::string& where);
 
+// Writes the network in the device's layout (shared/brdf_tables.h: vec4s of weights, 4 * gpu::kNbrdfNetwork4 floats)
+// at `out`.
+void writeNbrdfDeviceLayout(const NbrdfNetwork& network, float* out);
+
 // The network's input for the pair (wi, wo): unit, in the local frame, above the horizon. The difference vector is
 // folded to phi_d in [0, pi), as MERL folds it by reciprocity: the published networks were trained on phi_d over
 // [0, 2 pi) from a reader that clamps phi_d >= pi to the last bin, so only this half holds the measurement, and

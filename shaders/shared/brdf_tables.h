@@ -15,9 +15,14 @@
 //   a measured (MERL) file, kMeasuredBlockFloats:
 //     [kMeasuredValues, +3 kMerlSamples)      f in RGB triples at the file's sample index (scaled; missing = 0)
 //     [kMeasuredSampler, +kSamplerFloats)     its half-vector sampler
-//   a neural BRDF (engine/measured/nbrdf.h), kNbrdfBlockFloats:
-//     [kNbrdfWeights, +kNbrdfWeightFloats)    each layer's kernel (inputs x outputs, row-major), then its bias
-//     [kNbrdfSampler, +kSamplerFloats)        its half-vector sampler
+//   a neural BRDF (engine/measured/nbrdf.h), kNbrdfBlockFloats, its network in vec4s (offsets in vec4s from the
+//   block's start, which is a multiple of 4 floats) so that a kernel loads four weights at a time:
+//     [kNbrdfFirstLayer4, +2 kNbrdfHidden)     per first-layer unit i: (W1[0..3][i]), (W1[4][i], W1[5][i], b1[i], 0)
+//     [kNbrdfSecondLayer4, +6 kNbrdfHidden)    per first-layer unit i: W2[i][0..20] and three zeros
+//     [kNbrdfSecondBias4, +6)                 b2[0..20] and three zeros
+//     [kNbrdfThirdLayer4, +kNbrdfHidden)      per second-layer unit j: (W3[j][0..2], 0)
+//     [kNbrdfThirdBias4]                      (b3[0..2], 0)
+//     [kNbrdfSampler, +kSamplerFloats)        its half-vector sampler (in floats)
 //   a half-vector sampler (engine/measured/measured_sampling.h):
 //     [kSamplerPmf, +kMerlThetaH)             the theta_h bins' probabilities
 //     [kSamplerCdf, +kMerlThetaH)             their inclusive running sum
@@ -56,10 +61,14 @@ RL_CONST uint kMeasuredBlockFloats = kMeasuredSampler + kSamplerFloats;
 RL_CONST uint kNbrdfInputs = 6;
 RL_CONST uint kNbrdfHidden = 21;
 RL_CONST uint kNbrdfOutputs = 3;
-RL_CONST uint kNbrdfWeights = 0;
-RL_CONST uint kNbrdfWeightFloats = kNbrdfInputs * kNbrdfHidden + kNbrdfHidden + kNbrdfHidden * kNbrdfHidden + kNbrdfHidden +
-                                   kNbrdfHidden * kNbrdfOutputs + kNbrdfOutputs;
-RL_CONST uint kNbrdfSampler = kNbrdfWeights + kNbrdfWeightFloats;
+RL_CONST uint kNbrdfHidden4 = (kNbrdfHidden + 3) / 4;  // vec4s of one layer's 21 values
+RL_CONST uint kNbrdfFirstLayer4 = 0;
+RL_CONST uint kNbrdfSecondLayer4 = kNbrdfFirstLayer4 + 2 * kNbrdfHidden;
+RL_CONST uint kNbrdfSecondBias4 = kNbrdfSecondLayer4 + kNbrdfHidden4 * kNbrdfHidden;
+RL_CONST uint kNbrdfThirdLayer4 = kNbrdfSecondBias4 + kNbrdfHidden4;
+RL_CONST uint kNbrdfThirdBias4 = kNbrdfThirdLayer4 + kNbrdfHidden;
+RL_CONST uint kNbrdfNetwork4 = kNbrdfThirdBias4 + 1;
+RL_CONST uint kNbrdfSampler = 4 * kNbrdfNetwork4;
 RL_CONST uint kNbrdfBlockFloats = kNbrdfSampler + kSamplerFloats;
 
 RL_NAMESPACE_END
