@@ -1,4 +1,5 @@
-// Measured materials from the command line as users name them (issue 24): `raylab brdf tabulate` writes a MERL file,
+// Measured materials from the command line as users name them (issues 24 and 36): `raylab brdf tabulate` writes a MERL
+// file (of any model, a neural BRDF's too),
 // `--material NAME=measured:file=...` and extras.raylab's "file" render it, `raylab brdf fit` ranks models on it;
 // every bad file (truncated, wrong dimensions, NaN, all missing, a directory, a device, a file outside the scene's
 // folder) is refused with a message naming it, a non-zero exit, and nothing written.
@@ -11,6 +12,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "measured/merl.h"
+#include "measured/nbrdf.h"
+#include "support/nbrdf_files.h"
 #include "support/run_command.h"
 
 namespace raylab::test {
@@ -35,14 +39,14 @@ void writeBytes(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
 
-// A scene folder with minimal.gltf whose sphere is measured with `file` (as written in the glTF).
-fs::path sceneWithFile(const fs::path& dir, const std::string& file) {
+// A scene folder with minimal.gltf whose sphere is `model` (measured or nbrdf) with `file` (as written in the glTF).
+fs::path sceneWithFile(const fs::path& dir, const std::string& file, const std::string& model = "measured") {
   fs::create_directories(dir);
   std::string text = readBytes(fs::path(RAYLAB_SOURCE_DIR) / "assets" / "scenes" / "minimal.gltf");
   const std::string from = R"("model": "cooktorrance",)";
   const std::size_t at = text.find(from);
   const std::size_t end = text.find('}', at);
-  text.replace(at, end - at, R"("model": "measured", "file": ")" + file + "\"\n        ");
+  text.replace(at, end - at, R"("model": ")" + model + R"(", "file": ")" + file + "\"\n        ");
   const fs::path scene = dir / "scene.gltf";
   writeBytes(scene, text);
   return scene;
@@ -284,6 +288,57 @@ TEST(MeasuredCli, ASliceIsATargetAndABadOneIsAUsageError) {
   EXPECT_NE(material.exitCode, 0);
   EXPECT_EQ(material.output.find("neither"), std::string::npos) << material.output;
   EXPECT_NE(material.output.find("absent.binary"), std::string::npos) << material.output;
+}
+
+TEST_F(MeasuredCliTest, ANeuralBrdfRendersFromTheCommandLineAndFromGltfAndTabulatesOnTheMerlGrid) {
+  const fs::path network = nbrdfTestPath(1);
+  const fs::path out = scratch() / "neural";
+  fs::create_directories(out);
+  const CommandResult cli = runRaylab({"render", "--material", "phong=nbrdf:file=" + network.string(), "--out",
+                                       (out / "cli.exr").string(), "--spp", "2", "--width", "32", "--height", "24"});
+  EXPECT_EQ(cli.exitCode, 0) << cli.output;
+  EXPECT_TRUE(fs::exists(out / "cli.exr"));
+  const fs::path folder = scratch() / "neural_scene";
+  fs::create_directories(folder);
+  for (const char* extension : {".h5", ".json"}) {
+    fs::copy_file(fs::path(network).replace_extension(extension), folder / (std::string("net") + extension),
+                  fs::copy_options::overwrite_existing);
+  }
+  const CommandResult gltf = runRaylab({"render", sceneWithFile(folder, "net.h5", "nbrdf").string(), "--out",
+                                        (out / "gltf.exr").string(), "--spp", "2", "--width", "32", "--height", "24"});
+  EXPECT_EQ(gltf.exitCode, 0) << gltf.output;
+
+  // The MERL grid of the network: the reference's f at every bin's centre, so the study fits full-3D targets too.
+  const fs::path table = out / "net.binary";
+  const CommandResult made = runRaylab({"brdf", "tabulate", "nbrdf:file=" + network.string(), "--out", table.string()});
+  ASSERT_EQ(made.exitCode, 0) << made.output;
+  const MerlTable merl = readMerl(table.string());
+  const NbrdfNetwork weights = testNetwork(1);
+  int checked = 0;
+  for (int h = 0; h < kMerlThetaH; h += 7) {
+    for (int d = 0; d < kMerlThetaD; d += 11) {
+      for (int p = 0; p < kMerlPhiD; p += 13) {
+        glm::dvec3 wi, wo;
+        if (!merlBinCentre(h, d, p, &wi, &wo)) continue;
+        const glm::dvec3 expected = nbrdfEval(weights, wi, wo);
+        const std::size_t i = std::size_t(p) + std::size_t(kMerlPhiD) * (std::size_t(d) + std::size_t(kMerlThetaD) * h);
+        for (int c = 0; c < 3; ++c) {
+          ASSERT_NEAR(merl.stored[i + c * kMerlSamples] * kMerlScale[c], expected[c], 1e-12 * expected[c] + 1e-300);
+        }
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 500);
+
+  // The architecture beside it is part of the file: without it the scene is refused, naming both.
+  fs::remove(folder / "net.json");
+  const CommandResult lonely = runRaylab({"render", sceneWithFile(folder, "net.h5", "nbrdf").string(), "--out",
+                                          (out / "lonely.exr").string(), "--spp", "1", "--width", "8", "--height", "8"});
+  EXPECT_NE(lonely.exitCode, 0);
+  EXPECT_NE(lonely.output.find("net.h5: its architecture"), std::string::npos) << lonely.output;
+  EXPECT_NE(lonely.output.find("net.json"), std::string::npos) << lonely.output;
+  EXPECT_FALSE(fs::exists(out / "lonely.exr"));
 }
 
 }  // namespace

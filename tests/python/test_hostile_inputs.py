@@ -350,3 +350,45 @@ def test_measured_tables_are_freed_or_replaced(work, minimal):
     # An evicted table is read again when used.
     np.testing.assert_allclose(np.ravel(raylab.brdf.eval("measured", {"file": work / "copy0.binary"}, wi=z, wo=z)),
                                0.5 / np.pi, rtol=1e-3)
+
+
+NBRDF_ARCHIVE = Path(__file__).resolve().parents[3] / "shared" / "measured" / "nbrdf" / "merl_nbrdf.zip"
+
+
+def test_neural_brdf_files_are_refused_as_files_are(work):
+    z = np.array([[0.0, 0.0, 1.0]])
+    (work / "pipe.json").write_text("{}")
+    os.mkfifo(work / "pipe.h5")
+    with pytest.raises(ValueError, match="pipe.h5: is not a regular file"):
+        raylab.brdf.eval("nbrdf", {"file": work / "pipe.h5"}, wi=z, wo=z)
+    (work / "text.h5").write_text("not HDF5")
+    (work / "text.json").write_text("{}")
+    with pytest.raises(ValueError, match="text.h5"):
+        raylab.brdf.eval("nbrdf", {"file": work / "text.h5"}, wi=z, wo=z)
+    with pytest.raises(ValueError, match="this parameter takes a neural BRDF"):
+        raylab.brdf.eval("nbrdf", {"file": work / "table.binary"}, wi=z, wo=z)
+
+
+# The published networks (optional data): evaluated from threads at once, each gives what it gives alone.
+def test_neural_brdfs_evaluate_the_same_from_threads(work):
+    if not NBRDF_ARCHIVE.is_file():
+        pytest.skip(f"{NBRDF_ARCHIVE} is absent (optional data, docs/measured.md)")
+    import zipfile
+    from concurrent.futures import ThreadPoolExecutor
+    with zipfile.ZipFile(NBRDF_ARCHIVE) as archive:
+        names = sorted(n for n in archive.namelist() if n.endswith(".h5"))[:6]
+        for name in names:
+            for member in (name, name[:-3] + ".json"):
+                (work / Path(member).name).write_bytes(archive.read(member))
+    rng = np.random.default_rng(3)
+    wi = rng.normal(size=(4000, 3)) * [1, 1, 0] + [0, 0, 1.2]
+    wo = rng.normal(size=(4000, 3)) * [1, 1, 0] + [0, 0, 1.2]
+    wi /= np.linalg.norm(wi, axis=1, keepdims=True)
+    wo /= np.linalg.norm(wo, axis=1, keepdims=True)
+    files = [work / Path(n).name for n in names]
+    alone = [raylab.brdf.eval("nbrdf", {"file": f}, wi=wi, wo=wo) for f in files]
+    with ThreadPoolExecutor(6) as pool:
+        together = list(pool.map(lambda f: raylab.brdf.eval("nbrdf", {"file": f}, wi=wi, wo=wo), files * 3))
+    for i, values in enumerate(together):
+        np.testing.assert_array_equal(values, alone[i % len(files)])
+    assert all(np.all(np.isfinite(a)) and np.all(a >= 0) and a.max() > 0 for a in alone)
