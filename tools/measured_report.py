@@ -213,22 +213,41 @@ def slice_figure(raylab, records: list[dict], slices: dict[str, Path], key: str,
     plt.close(figure)
 
 
+def sphere_scene(raylab, work: Path):
+    """The contact sheets' scene, written into `work`: one sphere (material "sphere") under Blender's sunrise world."""
+    sys.path.insert(0, str(md.REPO / "tools" / "scenes"))
+    import make_scenes
+
+    g = make_scenes.Gltf("measured_sheet")
+    shutil.copy(md.REPO / "assets" / "scenes" / "environments" / "sunrise.exr", work / "sunrise.exr")
+    g.environment("sunrise.exr", 1.0)
+    g.sphere("sphere", [0.0, 0.0, 0.0], 1.0, g.material("sphere", {"model": "lambert"}))
+    g.camera("camera", [0.0, 0.4, 3.4], [0.0, 0.0, 0.0], 36.0)
+    return raylab.Scene.load(g.write(str(work)))
+
+
+def save_sheet(figure, path: Path, work: Path):
+    """A contact sheet as a JPEG: a hundred path-traced spheres are a photograph; a 256-colour PNG bands their
+    gradients, a full one is 2 MB."""
+    import matplotlib.pyplot as plt
+    from PIL import Image
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    staged = work / "sheet.png"
+    figure.savefig(staged, dpi=90)
+    plt.close(figure)
+    Image.open(staged).convert("RGB").save(path, quality=88, optimize=True)
+
+
 def contact_sheet(raylab, records: list[dict], key: str, path: Path, size: int = 80, spp: int = 128):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    sys.path.insert(0, str(md.REPO / "tools" / "scenes"))
-    import make_scenes
 
     materials = by_material(records)
     with tempfile.TemporaryDirectory() as directory:
         work = Path(directory)
-        g = make_scenes.Gltf("measured_sheet")
-        shutil.copy(md.REPO / "assets" / "scenes" / "environments" / "sunrise.exr", work / "sunrise.exr")
-        g.environment("sunrise.exr", 1.0)
-        g.sphere("sphere", [0.0, 0.0, 0.0], 1.0, g.material("sphere", {"model": "lambert"}))
-        g.camera("camera", [0.0, 0.4, 3.4], [0.0, 0.0, 0.0], 36.0)
-        scene = raylab.Scene.load(g.write(str(work)))
+        scene = sphere_scene(raylab, work)
         names = sorted(materials)
         columns = 10
         rows = (len(names) + columns - 1) // columns
@@ -249,14 +268,7 @@ def contact_sheet(raylab, records: list[dict], key: str, path: Path, size: int =
             ax.imshow(np.clip(image, 0, 1) ** (1 / 2.2))
             ax.set_title(f"{material}\n{best['model']}", fontsize=5)
         figure.tight_layout(pad=0.3, h_pad=0.6)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        # JPEG: a hundred path-traced spheres are a photograph; a 256-colour PNG bands their gradients, a full one
-        # is 2 MB.
-        staged = work / "sheet.png"
-        figure.savefig(staged, dpi=90)
-        plt.close(figure)
-        from PIL import Image
-        Image.open(staged).convert("RGB").save(path, quality=88, optimize=True)
+        save_sheet(figure, path, work)
 
 
 def write(records: list[dict], slices: dict[str, Path], metric: str, docs: Path):

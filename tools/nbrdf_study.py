@@ -83,12 +83,12 @@ def table_section(errs: dict[str, dict], best: dict[str, dict]) -> str:
     if with_fit:
         closer = sum(errs[m]["relative_log"] < best[m]["relative_log"] for m in with_fit)
         ratio = np.median([errs[m]["relative_log"] / best[m]["relative_log"] for m in with_fit])
-        lines.append(f"Against raylab's best analytic fit of the same slice (log metric, which the fits minimised), the "
-                     f"network is closer on {closer} of {len(with_fit)} materials; the median ratio of the network's "
-                     f"error to the fit's is {ratio:.2f}.")
+        lines.append(f"Against raylab's best analytic fit of the same slice (log metric, which the fits "
+                     f"minimised), the network is closer on {closer} of {len(with_fit)} materials; the median "
+                     f"ratio of the network's error to the fit's is {ratio:.2f}.")
     lines.append("")
-    header = "| material | network, cosine | network, log |" + (" best analytic fit (log) | fit's model |" if with_fit else "")
-    lines.append(header)
+    header = "| material | network, cosine | network, log |"
+    lines.append(header + (" best analytic fit (log) | fit's model |" if with_fit else ""))
     lines.append("|---|---|---|" + ("---|---|" if with_fit else ""))
     for m in sorted(errs, key=lambda m: errs[m]["relative_log"]):
         row = f"| {m} | {errs[m]['relative_cos']:.3f} | {errs[m]['relative_log']:.3f} |"
@@ -104,10 +104,7 @@ def contact_sheet(raylab, groups: dict[str, list[Path]], best: dict[str, dict], 
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from PIL import Image
-    sys.path.insert(0, str(md.REPO / "tools" / "scenes"))
-    import make_scenes
-    from measured_report import params_of
+    from measured_report import params_of, save_sheet, sphere_scene
 
     cells: list[tuple[str, str, dict]] = []  # title, model, parameters
     for group, files in groups.items():
@@ -120,12 +117,7 @@ def contact_sheet(raylab, groups: dict[str, list[Path]], best: dict[str, dict], 
                      for name, params in raylab.brdf.models().items()}
     with tempfile.TemporaryDirectory() as directory:
         work = Path(directory)
-        g = make_scenes.Gltf("nbrdf_sheet")
-        shutil.copy(md.REPO / "assets" / "scenes" / "environments" / "sunrise.exr", work / "sunrise.exr")
-        g.environment("sunrise.exr", 1.0)
-        g.sphere("sphere", [0.0, 0.0, 0.0], 1.0, g.material("sphere", {"model": "lambert"}))
-        g.camera("camera", [0.0, 0.4, 3.4], [0.0, 0.0, 0.0], 36.0)
-        scene = raylab.Scene.load(g.write(str(work)))
+        scene = sphere_scene(raylab, work)
         columns = 14
         rows = (len(cells) + columns - 1) // columns
         figure, axes = plt.subplots(rows, columns, figsize=(1.0 * columns, 1.25 * rows), squeeze=False)
@@ -140,11 +132,7 @@ def contact_sheet(raylab, groups: dict[str, list[Path]], best: dict[str, dict], 
             ax.set_title(title, fontsize=4.5)
             print(f"nbrdf study: sheet {i + 1}/{len(cells)}", file=sys.stderr, flush=True)
         figure.tight_layout(pad=0.3, h_pad=0.5)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        staged = work / "sheet.png"
-        figure.savefig(staged, dpi=90)
-        plt.close(figure)
-        Image.open(staged).convert("RGB").save(path, quality=88, optimize=True)
+        save_sheet(figure, path, work)
 
 
 def cost(raylab, networks: list[Path], spp: int = 32, repeats: int = 3) -> dict[str, float]:

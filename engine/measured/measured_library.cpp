@@ -232,7 +232,8 @@ void checkFileKind(const std::string& path, std::string_view role, const std::st
   const bool network = isNbrdfPath(path);
   if (network != (role == "network")) {
     throw Error(where + ": " + path + " is " + fileKindText(network ? "network" : "file") + "; this parameter takes " +
-                fileKindText(role) + (network ? " (a neural BRDF renders as model nbrdf)" : " (a MERL file renders as model measured)"));
+                fileKindText(role) +
+                (network ? " (a neural BRDF renders as model nbrdf)" : " (a MERL file renders as model measured)"));
   }
 }
 

@@ -1,6 +1,7 @@
 // The measured files this process has loaded, MERL tables and neural BRDFs (nbrdf.h) alike: a material of model
-// `measured` or `nbrdf` holds its file's id here in its file parameter (an integer in a float slot, exact below 2^24), so that the reference, the parameter table and
-// the device all find the same table however many materials use it. Thread-safe (the Python module is called from
+// `measured` or `nbrdf` holds its file's id here in its file parameter (an integer in a float slot, exact below
+// 2^24), so that the reference, the parameter table and the device all find the same table however many materials
+// use it. Thread-safe (the Python module is called from
 // threads).
 //
 // Memory stays bounded however many files a session names: a file (an inode: hard links are one file) is loaded

@@ -58,7 +58,9 @@ std::vector<std::string> stringAttribute(hid_t object, const char* name, const s
                 std::to_string(kMaxAttributeStringBytes));
   }
   std::string buffer(size * std::size_t(count), '\0');
-  if (H5Aread(attribute.id, type.id, buffer.data()) < 0) throw Error(where + ": its '" + name + "' attribute is unreadable");
+  if (H5Aread(attribute.id, type.id, buffer.data()) < 0) {
+    throw Error(where + ": its '" + name + "' attribute is unreadable");
+  }
   std::vector<std::string> strings;
   for (hssize_t i = 0; i < count; ++i) {
     std::string text = buffer.substr(std::size_t(i) * size, size);
@@ -124,18 +126,26 @@ std::vector<std::string> checkArchitecture(const std::string& text, const std::s
   std::vector<std::string> names;
   for (std::size_t i = 0; i < 4; ++i) {
     const nlohmann::json& layer = (*layers)[i];
-    if (!layer.is_object() || !layer.contains("config") || !layer["config"].is_object()) return refuse("layer " + std::to_string(i + 1) + " has no config");
+    const std::string number = std::to_string(i + 1);
+    if (!layer.is_object() || !layer.contains("config") || !layer["config"].is_object()) {
+      return refuse("layer " + number + " has no config");
+    }
     const nlohmann::json& config = layer["config"];
-    const std::string name = config.contains("name") && config["name"].is_string() ? config["name"].get<std::string>() : "";
-    const std::string kind = layer.contains("class_name") && layer["class_name"].is_string() ? layer["class_name"].get<std::string>() : "";
+    const auto text = [](const nlohmann::json& object, const char* key) {
+      return object.contains(key) && object[key].is_string() ? object[key].get<std::string>() : std::string();
+    };
+    const std::string name = text(config, "name"), kind = text(layer, "class_name");
     if (i == 3) {
-      if (kind != "Lambda") return refuse("layer 4 is " + (kind.empty() ? std::string("unnamed") : kind) + ", not the Lambda");
+      if (kind != "Lambda") return refuse("layer 4 is " + (kind.empty() ? "unnamed" : kind) + ", not the Lambda");
       names.push_back(name);
       break;
     }
     const bool ok = kind == "Dense" && config.value("units", -1) == dense[i].units &&
                     config.value("activation", "") == dense[i].activation && config.value("use_bias", false);
-    if (!ok) return refuse("layer " + std::to_string(i + 1) + " is not Dense " + std::to_string(dense[i].units) + " " + dense[i].activation + " with a bias");
+    if (!ok) {
+      return refuse("layer " + number + " is not Dense " + std::to_string(dense[i].units) + " " + dense[i].activation +
+                    " with a bias");
+    }
     if (i == 0) {
       const auto shape = config.find("batch_input_shape");
       if (shape == config.end() || !shape->is_array() || shape->size() != 2 || !(*shape)[1].is_number_integer() ||
@@ -152,9 +162,10 @@ std::vector<std::string> checkArchitecture(const std::string& text, const std::s
 
 bool isNbrdfPath(const std::string& path) { return std::filesystem::path(path).extension() == ".h5"; }
 
-NbrdfNetwork decodeNbrdf(const std::string& weightBytes, const std::string& architectureText, const std::string& where) {
+NbrdfNetwork decodeNbrdf(const std::string& weightBytes, const std::string& architectureText,
+                         const std::string& where) {
   const std::vector<std::string> layerNames = checkArchitecture(architectureText, where + " (its .json)");
-  if (weightBytes.size() < kHdf5Signature.size() || weightBytes.compare(0, kHdf5Signature.size(), kHdf5Signature) != 0) {
+  if (!std::string_view(weightBytes).starts_with(kHdf5Signature)) {
     throw Error(where + ": not an HDF5 file (no HDF5 signature at its start)");
   }
   const std::lock_guard lock(hdf5Mutex());

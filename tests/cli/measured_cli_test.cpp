@@ -334,7 +334,8 @@ TEST_F(MeasuredCliTest, ANeuralBrdfRendersFromTheCommandLineAndFromGltfAndTabula
   // The architecture beside it is part of the file: without it the scene is refused, naming both.
   fs::remove(folder / "net.json");
   const CommandResult lonely = runRaylab({"render", sceneWithFile(folder, "net.h5", "nbrdf").string(), "--out",
-                                          (out / "lonely.exr").string(), "--spp", "1", "--width", "8", "--height", "8"});
+                                          (out / "lonely.exr").string(), "--spp", "1", "--width", "8", "--height",
+                                          "8"});
   EXPECT_NE(lonely.exitCode, 0);
   EXPECT_NE(lonely.output.find("net.h5: its architecture"), std::string::npos) << lonely.output;
   EXPECT_NE(lonely.output.find("net.json"), std::string::npos) << lonely.output;

@@ -14,6 +14,7 @@
 #include "fit_test_support.h"
 #include "measured/merl.h"
 #include "reference/brdf_reference.h"
+#include "support/error_text.h"
 #include "util/error.h"
 
 namespace raylab::test {
@@ -114,15 +115,6 @@ TEST(BrdfFit, TheSameSeedGivesTheSameFits) {
     EXPECT_EQ(a[i].error, b[i].error);
     EXPECT_EQ(fitParamList(a[i]), fitParamList(b[i]));
   }
-}
-
-std::string errorOf(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "";
 }
 
 TEST(BrdfFit, BadTargetsAreRefusedNamingTheFileAndLine) {

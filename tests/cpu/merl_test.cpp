@@ -15,6 +15,7 @@
 #include "measured/merl.h"
 #include "reference/terms.h"
 #include "reference_materials.h"
+#include "support/error_text.h"
 #include "util/error.h"
 
 namespace raylab::test {
@@ -39,15 +40,6 @@ const reference::Material& glossy() {
   static const reference::Material material =
       makeMaterial("cooktorrance", {{"rho_d", 0.2}, {"rho_s", 0.8}, {"m", 0.3}, {"eta", 1.5}});
   return material;
-}
-
-std::string errorOf(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "";
 }
 
 TEST(Merl, WrittenAndReadBackBitForBit) {

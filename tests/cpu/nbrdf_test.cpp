@@ -16,6 +16,7 @@
 #include "measured/measured_library.h"
 #include "measured/merl.h"
 #include "measured/nbrdf.h"
+#include "support/error_text.h"
 #include "support/nbrdf_files.h"
 #include "util/error.h"
 
@@ -31,15 +32,6 @@ std::string scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("raylab_nbrdf_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return (dir / name).string();
-}
-
-std::string errorOf(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "";
 }
 
 dvec3 randomDirection(std::mt19937_64& engine) {

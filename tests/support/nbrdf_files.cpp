@@ -86,8 +86,8 @@ NbrdfNetwork testNetwork(int which) {
 std::vector<KerasLayer> kerasLayers(const NbrdfNetwork& network) {
   std::vector<KerasLayer> layers;
   for (int l = 0; l < 3; ++l) {
-    KerasLayer layer{"dense_" + std::to_string(l + 1), {(unsigned long long)kWidths[l], (unsigned long long)kWidths[l + 1]},
-                     {(unsigned long long)kWidths[l + 1]}, {}, {}};
+    const auto in = static_cast<unsigned long long>(kWidths[l]), out = static_cast<unsigned long long>(kWidths[l + 1]);
+    KerasLayer layer{"dense_" + std::to_string(l + 1), {in, out}, {out}, {}, {}};
     layer.kernel.assign(network.weights.begin() + std::ptrdiff_t(layerStart(l)),
                         network.weights.begin() + std::ptrdiff_t(biasIndex(l, 0)));
     layer.bias.assign(network.weights.begin() + std::ptrdiff_t(biasIndex(l, 0)),
@@ -105,7 +105,8 @@ std::string kerasArchitecture() {
   };
   return R"({"class_name": "Sequential", "config": {"name": "sequential_1", "layers": [)" + dense(1, 21, "relu", true) +
          ", " + dense(2, 21, "relu", false) + ", " + dense(3, 3, "linear", false) +
-         R"(, {"class_name": "Lambda", "config": {"name": "lambda_1"}}]}, "keras_version": "2.2.4", "backend": "tensorflow"})";
+         R"(, {"class_name": "Lambda", "config": {"name": "lambda_1"}}]}, )" +
+         R"("keras_version": "2.2.4", "backend": "tensorflow"})";
 }
 
 void writeKerasFiles(const std::string& path, const std::vector<KerasLayer>& layers, const std::string& architecture) {

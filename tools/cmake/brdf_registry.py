@@ -77,7 +77,8 @@ def parse_model(name, prefix, include, path):
                 if len(roles) > 1 or (roles and roles[0] not in ROLES):
                     raise RegistryError(f"{where}: kind is rgb, log and at most one role of {sorted(ROLES)}")
                 if ("file" in roles or "network" in roles) and (rgb or log):
-                    raise RegistryError(f"{where}: a file parameter is one scalar slot (the file's id), neither rgb nor log")
+                    raise RegistryError(f"{where}: a file parameter is one scalar slot (the file's id), "
+                                        "neither rgb nor log")
                 lo, hi, default = float(lo), float(hi), float(default)
                 if not lo <= default <= hi or (log and lo <= 0):
                     raise RegistryError(f"{where}: default {default} outside [{lo}, {hi}] (or a log range at 0)")
