@@ -231,19 +231,20 @@ void writeNbrdfDeviceLayout(const NbrdfNetwork& network, float* out) {
   const float* b2 = w2 + h * h;
   const float* w3 = b2 + h;
   const float* b3 = w3 + h * o;
+  static_assert(gpu::kNbrdfTailVec4s * 4 >= kNbrdfHidden + kNbrdfHidden * kNbrdfOutputs + kNbrdfOutputs);
   std::fill(out, out + 4 * gpu::kNbrdfNetwork4, 0.0f);
-  const auto vec4At = [out](std::uint32_t index) { return out + 4 * index; };
   for (int i = 0; i < h; ++i) {
-    float* first = vec4At(gpu::kNbrdfFirstLayer4 + 2 * i);
-    for (int k = 0; k < n; ++k) first[k] = w1[k * h + i];
-    first[n] = b1[i];  // the input's seventh component is 1
-    float* row = vec4At(gpu::kNbrdfSecondLayer4 + gpu::kNbrdfHidden4 * i);
-    for (int j = 0; j < h; ++j) row[j] = w2[i * h + j];
-    float* third = vec4At(gpu::kNbrdfThirdLayer4 + i);
-    for (int c = 0; c < o; ++c) third[c] = w3[i * o + c];
+    float* unit = out + 4 * (gpu::kNbrdfUnits4 + gpu::kNbrdfUnitVec4s * i);
+    for (int k = 0; k < 4; ++k) unit[k] = w1[k * h + i];
+    for (int j = 0; j < h; ++j) unit[4 + j] = w2[i * h + j];  // 21 weights: five vec4s and the seventh's x
+    unit[4 + h] = w1[4 * h + i];
+    unit[5 + h] = w1[5 * h + i];
+    unit[6 + h] = b1[i];
   }
-  std::copy(b2, b2 + h, vec4At(gpu::kNbrdfSecondBias4));
-  std::copy(b3, b3 + o, vec4At(gpu::kNbrdfThirdBias4));
+  float* tail = out + 4 * gpu::kNbrdfTail4;
+  std::copy(b2, b2 + h, tail);
+  std::copy(w3, w3 + h * o, tail + h);
+  std::copy(b3, b3 + o, tail + h + h * o);
 }
 
 std::array<double, kNbrdfInputs> nbrdfInput(const glm::dvec3& wi, const glm::dvec3& wo) {

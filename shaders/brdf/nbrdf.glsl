@@ -26,21 +26,27 @@ layout(set = 0, binding = kBindingBrdfTables, scalar) readonly buffer BrdfTables
 // The network of the block at `block` (a multiple of 4 floats) for input x. The first layer's units are visited in a
 // loop that is not unrolled, each adding its share to the second layer's sums (six vec4s): every array is then
 // indexed by constants only and lives in registers, and the kernel stays small. Unrolled whole, the network made
-// lavapipe compile a scene's kernel for 40 s.
+// lavapipe compile a scene's kernel for 40 s. A unit's seven vec4s hold its first-layer weights and its row of the
+// second layer's, packed so that no load is spent on padding; the tail holds the rest.
 vec3 nbrdfNetwork(uint block, float x[kNbrdfInputs]) {
   const uint at = block / 4u;
-  vec4 second[kNbrdfHidden4];
-  [[unroll]] for (uint q = 0u; q < kNbrdfHidden4; ++q) second[q] = brdfTables4[at + kNbrdfSecondBias4 + q];
-  const vec4 xa = vec4(x[0], x[1], x[2], x[3]), xb = vec4(x[4], x[5], 1.0, 0.0);  // 1: the bias's input
+  const vec4 xa = vec4(x[0], x[1], x[2], x[3]);
+  vec4 second[6] = vec4[6](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
   [[dont_unroll]] for (uint i = 0u; i < kNbrdfHidden; ++i) {
-    const uint unit = at + kNbrdfFirstLayer4 + 2u * i;
-    const float first = max(dot(xa, brdfTables4[unit]) + dot(xb, brdfTables4[unit + 1u]), 0.0);
-    const uint row = at + kNbrdfSecondLayer4 + kNbrdfHidden4 * i;
-    [[unroll]] for (uint q = 0u; q < kNbrdfHidden4; ++q) second[q] += first * brdfTables4[row + q];
+    const uint unit = at + kNbrdfUnits4 + kNbrdfUnitVec4s * i;
+    const vec4 last = brdfTables4[unit + 6u];  // (W2[i][20], W1[4][i], W1[5][i], b1[i])
+    const float first = max(dot(xa, brdfTables4[unit]) + x[4] * last.y + x[5] * last.z + last.w, 0.0);
+    [[unroll]] for (uint q = 0u; q < 5u; ++q) second[q] += first * brdfTables4[unit + 1u + q];
+    second[5].x += first * last.x;
   }
-  vec3 y = brdfTables4[at + kNbrdfThirdBias4].xyz;
+  vec4 tail[kNbrdfTailVec4s];
+  [[unroll]] for (uint k = 0u; k < kNbrdfTailVec4s; ++k) tail[k] = brdfTables4[at + kNbrdfTail4 + k];
+  const uint w3 = kNbrdfHidden, b3 = kNbrdfHidden + kNbrdfHidden * kNbrdfOutputs;  // floats into the tail
+  vec3 y = vec3(tail[b3 / 4u][b3 % 4u], tail[(b3 + 1u) / 4u][(b3 + 1u) % 4u], tail[(b3 + 2u) / 4u][(b3 + 2u) % 4u]);
   [[unroll]] for (uint j = 0u; j < kNbrdfHidden; ++j) {
-    y += max(second[j / 4u][j % 4u], 0.0) * brdfTables4[at + kNbrdfThirdLayer4 + j].xyz;
+    const float a = max(second[j / 4u][j % 4u] + tail[j / 4u][j % 4u], 0.0);  // + b2[j]
+    const uint w = w3 + kNbrdfOutputs * j;
+    y += a * vec3(tail[w / 4u][w % 4u], tail[(w + 1u) / 4u][(w + 1u) % 4u], tail[(w + 2u) / 4u][(w + 2u) % 4u]);
   }
   // exp(y) - 1 reaches down to -1; a BRDF is not negative (the authors' renderer clamps too).
   return max(vec3(expm1Accurate(y.x), expm1Accurate(y.y), expm1Accurate(y.z)), vec3(0.0));
@@ -56,7 +62,7 @@ vec3 nbrdfEval(float file, vec3 wi, vec3 wo) {
 #ifdef GL_COMPUTE_SHADER
   // The lanes of one network take turns: each turn's block is the same for every lane in it, so the driver loads
   // each weight once for them all, where a lane's own address costs one load per lane (eight networks against
-  // eight Cook-Torrance materials: 2.53x without the turns, 2.23x with them; docs/performance.md). Subgroup
+  // eight Cook-Torrance materials: 2.53x without the turns, 2.43x with them; docs/performance.md). Subgroup
   // operations exist in compute kernels only (lavapipe's ray-tracing stages have none).
   for (;;) {
     const uint turn = subgroupBroadcastFirst(block);

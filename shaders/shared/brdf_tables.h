@@ -17,11 +17,9 @@
 //     [kMeasuredSampler, +kSamplerFloats)     its half-vector sampler
 //   a neural BRDF (engine/measured/nbrdf.h), kNbrdfBlockFloats, its network in vec4s (offsets in vec4s from the
 //   block's start, which is a multiple of 4 floats) so that a kernel loads four weights at a time:
-//     [kNbrdfFirstLayer4, +2 kNbrdfHidden)     per first-layer unit i: (W1[0..3][i]), (W1[4][i], W1[5][i], b1[i], 0)
-//     [kNbrdfSecondLayer4, +6 kNbrdfHidden)    per first-layer unit i: W2[i][0..20] and three zeros
-//     [kNbrdfSecondBias4, +6)                 b2[0..20] and three zeros
-//     [kNbrdfThirdLayer4, +kNbrdfHidden)      per second-layer unit j: (W3[j][0..2], 0)
-//     [kNbrdfThirdBias4]                      (b3[0..2], 0)
+//     [kNbrdfUnits4, +kNbrdfUnitVec4s kNbrdfHidden)  per first-layer unit i, seven vec4s: (W1[0..3][i]), then
+//                                             W2[i][0..19] in five, then (W2[i][20], W1[4][i], W1[5][i], b1[i])
+//     [kNbrdfTail4, +kNbrdfTailVec4s)         b2[0..20], W3[j][c] at 21 + 3 j + c, b3[0..2] at 84, one zero
 //     [kNbrdfSampler, +kSamplerFloats)        its half-vector sampler (in floats)
 //   a half-vector sampler (engine/measured/measured_sampling.h):
 //     [kSamplerPmf, +kMerlThetaH)             the theta_h bins' probabilities
@@ -61,13 +59,11 @@ RL_CONST uint kMeasuredBlockFloats = kMeasuredSampler + kSamplerFloats;
 RL_CONST uint kNbrdfInputs = 6;
 RL_CONST uint kNbrdfHidden = 21;
 RL_CONST uint kNbrdfOutputs = 3;
-RL_CONST uint kNbrdfHidden4 = (kNbrdfHidden + 3) / 4;  // vec4s of one layer's 21 values
-RL_CONST uint kNbrdfFirstLayer4 = 0;
-RL_CONST uint kNbrdfSecondLayer4 = kNbrdfFirstLayer4 + 2 * kNbrdfHidden;
-RL_CONST uint kNbrdfSecondBias4 = kNbrdfSecondLayer4 + kNbrdfHidden4 * kNbrdfHidden;
-RL_CONST uint kNbrdfThirdLayer4 = kNbrdfSecondBias4 + kNbrdfHidden4;
-RL_CONST uint kNbrdfThirdBias4 = kNbrdfThirdLayer4 + kNbrdfHidden;
-RL_CONST uint kNbrdfNetwork4 = kNbrdfThirdBias4 + 1;
+RL_CONST uint kNbrdfUnitVec4s = 7;
+RL_CONST uint kNbrdfUnits4 = 0;
+RL_CONST uint kNbrdfTail4 = kNbrdfUnits4 + kNbrdfUnitVec4s * kNbrdfHidden;
+RL_CONST uint kNbrdfTailVec4s = 22;  // 21 + 63 + 3 floats, and one zero
+RL_CONST uint kNbrdfNetwork4 = kNbrdfTail4 + kNbrdfTailVec4s;
 RL_CONST uint kNbrdfSampler = 4 * kNbrdfNetwork4;
 RL_CONST uint kNbrdfBlockFloats = kNbrdfSampler + kSamplerFloats;
 
