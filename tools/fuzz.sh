@@ -19,5 +19,5 @@ if [[ ${#missing[@]} -gt 0 ]]; then
 fi
 cmake --preset fuzz -DRAYLAB_FUZZ_SECONDS="$seconds" >/dev/null
 cmake --build --preset fuzz --target gltf_fuzzer environment_fuzzer image_exr_fuzzer brdf_csv_fuzzer fit_target_fuzzer \
-  view_script_fuzzer raylab
+  nbrdf_fuzzer view_script_fuzzer raylab
 ctest --preset fuzz -R '_fuzz$'
