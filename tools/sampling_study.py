@@ -26,6 +26,7 @@ import os
 import shutil
 import sys
 import time
+import zipfile
 from pathlib import Path
 
 from raylab_tools import (REPO, ToolError, add_raylab_option, check_raylab, look_material, model_notes, reads_file,
@@ -48,6 +49,9 @@ EPSILON = 0.01
 TARGET = 1e-3
 STRATEGIES = [("mis", "o-"), ("bsdf", "s--"), ("light", "^-.")]
 MEASURED_FILE = "measured_cooktorrance.binary"
+# A model reading a neural BRDF renders a published network (optional data, ../shared/measured/nbrdf).
+NETWORK_ARCHIVE = REPO.parent / "shared" / "measured" / "nbrdf" / "merl_nbrdf.zip"
+NETWORK_FILE = "blue-acrylic.h5"
 # name -> extras.raylab material: each model's `look:` line (raylab_tools.look_material), from parse_args.
 MODELS_IN_USE: dict[str, dict] = {}
 
@@ -91,10 +95,12 @@ def parse_args() -> argparse.Namespace:
         args.models, args.width, args.height, args.max_spp, args.reference_spp = "lambert,cooktorrance", 48, 27, 8, 128
     registry = {m["name"]: m for m in registered_models(check_raylab(args.raylab)) if not m["delta_only"]}
     MODELS_IN_USE.update({name: look_material(model) for name, model in registry.items()})
-    # A model reading a file (measured) renders the Cook-Torrance look tabulated as a MERL file beside the scene.
+    # A model reading a MERL file (measured) renders the Cook-Torrance look tabulated as a MERL file beside the scene;
+    # one reading a network (nbrdf), the published blue acrylic.
     for name, model in registry.items():
         if reads_file(model):
-            MODELS_IN_USE[name] = {"model": name, "file": MEASURED_FILE}
+            network = any(param["role"] == "network" for param in model["params"])
+            MODELS_IN_USE[name] = {"model": name, "file": NETWORK_FILE if network else MEASURED_FILE}
     args.models = args.models or ",".join(registry)
     unknown = [m for m in args.models.split(",") if m not in registry]
     if unknown:
@@ -113,7 +119,14 @@ def main() -> None:
     (args.out / "environments").mkdir(parents=True, exist_ok=True)
     shutil.copy2(ENVIRONMENT, args.out / "environments" / ENVIRONMENT.name)
     began, load_before = time.monotonic(), os.getloadavg()
-    if any("file" in MODELS_IN_USE[m] for m in args.models.split(",")):
+    if any(MODELS_IN_USE[m].get("file") == NETWORK_FILE for m in args.models.split(",")):
+        if not NETWORK_ARCHIVE.is_file():
+            raise ToolError(f"{NETWORK_ARCHIVE} is absent: the networks are optional data (docs/measured.md)")
+        with zipfile.ZipFile(NETWORK_ARCHIVE) as archive:
+            for suffix in (".h5", ".json"):
+                member = "merl_nbrdf/" + NETWORK_FILE.replace(".h5", suffix)
+                (args.out / Path(member).name).write_bytes(archive.read(member))
+    if any(MODELS_IN_USE[m].get("file") == MEASURED_FILE for m in args.models.split(",")):
         cooktorrance = next(m for m in registered_models(raylab) if m["name"] == "cooktorrance")
         params = model_notes(cooktorrance)["look"].replace(" ", "")
         run_raylab(raylab, ["brdf", "tabulate", f"cooktorrance:{params}", "--out", str(args.out / MEASURED_FILE)],

@@ -103,6 +103,23 @@ std::vector<float> floatDataset(hid_t file, const std::string& name, const std::
   return values;
 }
 
+// Members of the architecture's JSON read by their type: a member of another type reads as absent, so that JSON of the
+// wrong shape is refused with a message (nlohmann's value() throws its own exception there; fuzzing found it).
+std::string textOf(const nlohmann::json& object, const char* key) {
+  const auto at = object.find(key);
+  return at != object.end() && at->is_string() ? at->get<std::string>() : std::string();
+}
+
+std::int64_t integerOf(const nlohmann::json& object, const char* key) {
+  const auto at = object.find(key);
+  return at != object.end() && at->is_number_integer() ? at->get<std::int64_t>() : -1;
+}
+
+bool isTrue(const nlohmann::json& object, const char* key) {
+  const auto at = object.find(key);
+  return at != object.end() && at->is_boolean() && at->get<bool>();
+}
+
 // The architecture: a Keras Sequential of Dense 6 -> 21 relu, Dense 21 relu, Dense 3 linear, then the Lambda
 // (the published exp(x) - 1, stored as Python bytecode, which is not read). Returns the layers' names.
 std::vector<std::string> checkArchitecture(const std::string& text, const std::string& where) {
@@ -112,7 +129,7 @@ std::vector<std::string> checkArchitecture(const std::string& text, const std::s
                 "Dense 21 relu, Dense 3 linear, Lambda)");
   };
   if (json.is_discarded()) return refuse("not JSON");
-  if (!json.is_object() || json.value("class_name", "") != "Sequential") return refuse("not a Keras Sequential model");
+  if (!json.is_object() || textOf(json, "class_name") != "Sequential") return refuse("not a Keras Sequential model");
   const nlohmann::json* layers = nullptr;
   if (const auto config = json.find("config"); config != json.end()) {
     if (config->is_array()) layers = &*config;
@@ -131,17 +148,14 @@ std::vector<std::string> checkArchitecture(const std::string& text, const std::s
       return refuse("layer " + number + " has no config");
     }
     const nlohmann::json& config = layer["config"];
-    const auto text = [](const nlohmann::json& object, const char* key) {
-      return object.contains(key) && object[key].is_string() ? object[key].get<std::string>() : std::string();
-    };
-    const std::string name = text(config, "name"), kind = text(layer, "class_name");
+    const std::string name = textOf(config, "name"), kind = textOf(layer, "class_name");
     if (i == 3) {
       if (kind != "Lambda") return refuse("layer 4 is " + (kind.empty() ? "unnamed" : kind) + ", not the Lambda");
       names.push_back(name);
       break;
     }
-    const bool ok = kind == "Dense" && config.value("units", -1) == dense[i].units &&
-                    config.value("activation", "") == dense[i].activation && config.value("use_bias", false);
+    const bool ok = kind == "Dense" && integerOf(config, "units") == dense[i].units &&
+                    textOf(config, "activation") == dense[i].activation && isTrue(config, "use_bias");
     if (!ok) {
       return refuse("layer " + number + " is not Dense " + std::to_string(dense[i].units) + " " + dense[i].activation +
                     " with a bias");
@@ -149,7 +163,7 @@ std::vector<std::string> checkArchitecture(const std::string& text, const std::s
     if (i == 0) {
       const auto shape = config.find("batch_input_shape");
       if (shape == config.end() || !shape->is_array() || shape->size() != 2 || !(*shape)[1].is_number_integer() ||
-          (*shape)[1].get<int>() != kNbrdfInputs) {
+          (*shape)[1].get<std::int64_t>() != kNbrdfInputs) {
         return refuse("the input is not 6 wide");
       }
     }
