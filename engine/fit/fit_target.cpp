@@ -248,7 +248,10 @@ FitTarget loadFitTarget(const std::string& text, const std::string& fileBase) {
   gpu::MaterialRecord record = defaultRecord(model->id);
   if (colon != std::string::npos) applyParamList(record, std::string_view(text).substr(colon + 1), text, fileBase);
   checkFileParams(record, text);
-  return materialFitTarget(record, text);
+  FitTarget target = materialFitTarget(record, text);
+  // A measured material (a MERL table, a neural BRDF fed phi_h = 0) is isotropic by construction, as its file is.
+  target.isotropic = findFileParam(*model) != nullptr;
+  return target;
 }
 
 TargetSummary summarizeTarget(const FitTarget& target) {

@@ -22,8 +22,9 @@ struct FitPair {
 struct FitTarget {
   std::string name;              // as the user gave it
   std::vector<FitPair> pairs;    // weights summing to 1
-  // A MERL file or slice: anisotropy cannot be observed, so by default anisotropic models are fitted with alpha_x =
-  // alpha_y (and the like); FitOptions::isotropic overrides it for any target.
+  // A MERL file or slice, or a material of a model that reads one (measured, nbrdf): anisotropy cannot be observed,
+  // so by default anisotropic models are fitted with alpha_x = alpha_y (and the like); FitOptions::isotropic
+  // overrides it for any target.
   bool isotropic = false;
 };
 

@@ -3,7 +3,16 @@
 #include <hdf5.h>
 #include <nlohmann/json.hpp>
 
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstring>
 #include <cmath>
 #include <filesystem>
 #include <mutex>
@@ -172,17 +181,9 @@ std::vector<std::string> checkArchitecture(const std::string& text, const std::s
   return names;
 }
 
-}  // namespace
-
-bool isNbrdfPath(const std::string& path) { return std::filesystem::path(path).extension() == ".h5"; }
-
-NbrdfNetwork decodeNbrdf(const std::string& weightBytes, const std::string& architectureText,
+// The weights from the HDF5 file's bytes, in this process (readWeightsIsolated runs it in a child).
+NbrdfNetwork readWeights(const std::string& weightBytes, const std::vector<std::string>& layerNames,
                          const std::string& where) {
-  const std::vector<std::string> layerNames = checkArchitecture(architectureText, where + " (its .json)");
-  if (!std::string_view(weightBytes).starts_with(kHdf5Signature)) {
-    throw Error(where + ": not an HDF5 file (no HDF5 signature at its start)");
-  }
-  const std::lock_guard lock(hdf5Mutex());
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become this function's messages, not prints on stderr
   // The file is opened from the bytes already read (and bounded), never from its path.
   const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
@@ -219,6 +220,94 @@ NbrdfNetwork decodeNbrdf(const std::string& weightBytes, const std::string& arch
     }
   }
   return network;
+}
+
+// libhdf5 1.10 is not safe on damaged files: fuzzing found a heap over-read inside H5Aexists on a corrupted
+// attribute message, and HDF5's bug tracker lists crashes and hangs of the same kind. So the file is read in a child
+// process, which hands back the weights or the message through a pipe: a file that crashes or hangs HDF5 costs the
+// child, never raylab, and is refused as damaged. The HDF5 lock is held across fork(), so that no other thread of
+// this process is inside HDF5 when the child starts.
+NbrdfNetwork readWeightsIsolated(const std::string& weightBytes, const std::vector<std::string>& layerNames,
+                                 const std::string& where) {
+  constexpr int kChildSeconds = 10;
+  constexpr std::size_t kMaxMessage = 4096;
+  const std::lock_guard lock(hdf5Mutex());
+  int pipeEnds[2];
+  if (::pipe2(pipeEnds, O_CLOEXEC) != 0) throw Error(where + ": cannot create a pipe to read it");
+  const pid_t child = ::fork();
+  if (child < 0) {
+    ::close(pipeEnds[0]);
+    ::close(pipeEnds[1]);
+    throw Error(where + ": cannot start the process that reads it");
+  }
+  if (child == 0) {
+    ::close(pipeEnds[0]);
+    std::string reply;
+    try {
+      const NbrdfNetwork network = readWeights(weightBytes, layerNames, where);
+      reply = "W" + std::string(reinterpret_cast<const char*>(network.weights.data()), sizeof(network.weights));
+    } catch (const std::exception& error) {
+      reply = "E" + std::string(error.what()).substr(0, kMaxMessage);
+    }
+    for (std::size_t done = 0; done < reply.size();) {
+      const ssize_t n = ::write(pipeEnds[1], reply.data() + done, reply.size() - done);
+      if (n <= 0) ::_exit(1);
+      done += std::size_t(n);
+    }
+    ::_exit(0);
+  }
+  ::close(pipeEnds[1]);
+  std::string reply;
+  char buffer[4096];
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kChildSeconds);
+  bool timedOut = false;
+  for (;;) {
+    using std::chrono::milliseconds;
+    const auto left = std::chrono::duration_cast<milliseconds>(deadline - std::chrono::steady_clock::now());
+    pollfd readable{pipeEnds[0], POLLIN, 0};
+    const int ready = left.count() > 0 ? ::poll(&readable, 1, int(left.count())) : 0;
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) {
+      timedOut = true;
+      break;
+    }
+    const ssize_t n = ::read(pipeEnds[0], buffer, sizeof(buffer));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    reply.append(buffer, std::size_t(n));
+    if (reply.size() > 1 + kMaxMessage + sizeof(NbrdfNetwork::weights)) break;
+  }
+  ::close(pipeEnds[0]);
+  if (timedOut) ::kill(child, SIGKILL);
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (timedOut) {
+    throw Error(where + ": HDF5 did not finish reading it in " + std::to_string(kChildSeconds) + " s (a damaged file)");
+  }
+  if (WIFSIGNALED(status)) {
+    throw Error(where + ": HDF5 failed on it (signal " + std::to_string(WTERMSIG(status)) + "): a damaged file");
+  }
+  if (!reply.empty() && reply[0] == 'E') throw Error(reply.substr(1));
+  NbrdfNetwork network;
+  if (reply.size() != 1 + sizeof(network.weights) || reply[0] != 'W') {
+    throw Error(where + ": its reader gave no answer");
+  }
+  std::memcpy(network.weights.data(), reply.data() + 1, sizeof(network.weights));
+  return network;
+}
+
+}  // namespace
+
+bool isNbrdfPath(const std::string& path) { return std::filesystem::path(path).extension() == ".h5"; }
+
+NbrdfNetwork decodeNbrdf(const std::string& weightBytes, const std::string& architectureText,
+                         const std::string& where) {
+  const std::vector<std::string> layerNames = checkArchitecture(architectureText, where + " (its .json)");
+  if (!std::string_view(weightBytes).starts_with(kHdf5Signature)) {
+    throw Error(where + ": not an HDF5 file (no HDF5 signature at its start)");
+  }
+  return readWeightsIsolated(weightBytes, layerNames, where);
 }
 
 NbrdfNetwork readNbrdf(const std::string& path) {
