@@ -74,14 +74,15 @@ std::shared_ptr<const MeasuredFile> readFile(const std::string& path) {
   return file;
 }
 
-// Keeps at most kResidentMeasuredFiles tables in memory (lock held): the least recently used that nothing outside
-// the store holds are dropped, to be read again from their files when next used.
+// Keeps at most kResidentMeasuredFiles MERL tables in memory (lock held): the least recently used that nothing
+// outside the store holds are dropped, to be read again from their files when next used. Networks (19 KB each, 64 at
+// most per scene) stay: reading one again costs a process.
 void evictExcess(Store& s) {
   for (;;) {
     std::size_t resident = 0;
     Entry* oldest = nullptr;
     for (Entry& entry : s.entries) {
-      if (entry.file == nullptr) continue;
+      if (entry.file == nullptr || entry.file->network) continue;
       ++resident;
       if (entry.file.use_count() == 1 && (oldest == nullptr || entry.lastUse < oldest->lastUse)) oldest = &entry;
     }

@@ -34,7 +34,7 @@ inline constexpr std::size_t kMaxMeasuredFilesPerScene =
     ((std::size_t(1) << 27) / sizeof(float) - gpu::kFileBlocksOffset) / gpu::kMeasuredBlockFloats;
 // Files of either kind in one scene: the directory's entries (a network's block is 4 KB).
 inline constexpr std::size_t kMaxFilesPerScene = gpu::kMaxFileBlocks;
-// Tables kept in memory when nothing holds them (33 MiB each, in doubles).
+// MERL tables kept in memory when nothing holds them (33 MiB each, in doubles); networks are always kept.
 inline constexpr std::size_t kResidentMeasuredFiles = 8;
 
 struct MeasuredFile {
