@@ -9,6 +9,8 @@ finds its basin").
 
 Prints, per model, on how many materials the default fit is within 1% (relative error) of the reference, and the
 worst cases; --out keeps every figure as JSON. A job is one material x model on one process (one thread each).
+With --out, each finished job is also appended to OUT.partial.jsonl, and a run that finds that file takes its jobs
+as done: a check of all 100 materials (hours of CPU) survives being stopped and resumes where it was.
 """
 from __future__ import annotations
 
@@ -76,12 +78,20 @@ def main(argv=None) -> int:
     except StudyError as error:
         print(f"fit_basins: {error}", file=sys.stderr)
         return 2
+    references = list(REFERENCES) if args.reference == "both" else ["search64"]
+    partial = args.out.with_name(args.out.name + ".partial.jsonl") if args.out else None
     results = []
+    if partial is not None and partial.is_file():
+        for line in partial.read_text().splitlines():
+            record = json.loads(line)
+            if record["material"] in slices and record["model"] in models and all(r in record for r in references):
+                results.append(record)
+        print(f"fit_basins: resuming: {len(results)} jobs done in {partial}", file=sys.stderr)
+    done = {(r["material"], r["model"]) for r in results}
     started = time.monotonic()
     with ProcessPoolExecutor(args.processes) as pool:
-        references = list(REFERENCES) if args.reference == "both" else ["search64"]
         futures = {pool.submit(job, str(path), model, args.metric, references): material
-                   for material, path in slices.items() for model in models}
+                   for material, path in slices.items() for model in models if (material, model) not in done}
         for n, future in enumerate(as_completed(futures), 1):
             record = future.result()
             record["material"] = futures[future]
@@ -89,6 +99,10 @@ def main(argv=None) -> int:
             record["reference"] = reference
             record["within"] = record["default"]["relative"] <= reference * (1 + TOLERANCE) + 1e-12
             results.append(record)
+            if partial is not None:
+                partial.parent.mkdir(parents=True, exist_ok=True)
+                with partial.open("a") as f:
+                    f.write(json.dumps(record) + "\n")
             print(f"fit_basins: {n}/{len(futures)} {record['material']} {record['model']}: default "
                   f"{record['default']['relative']:.4f}, reference {reference:.4f}"
                   f"{'' if record['within'] else '  OUTSIDE 1%'}  ({time.monotonic() - started:.0f} s)",
@@ -102,7 +116,10 @@ def main(argv=None) -> int:
     if args.out:
         md_out = sorted(results, key=lambda r: (r["material"], r["model"]))
         args.out.parent.mkdir(parents=True, exist_ok=True)
-        args.out.write_text(json.dumps(md_out, indent=1) + "\n")
+        temporary = args.out.with_name(args.out.name + ".tmp")
+        temporary.write_text(json.dumps(md_out, indent=1) + "\n")
+        temporary.replace(args.out)
+        partial.unlink(missing_ok=True)
     return 0
 
 

@@ -120,6 +120,37 @@ const ModelInfo& modelInfo(std::uint32_t id) {
 
 const ParamInfo& deltaParam() { return kDelta; }
 
+namespace {
+
+std::string_view firstWord(std::string_view name) {
+  const std::size_t underscore = name.find('_');
+  return underscore == std::string_view::npos ? std::string_view() : name.substr(0, underscore);
+}
+
+// Three layers at least: Ward's rho_d, rho_s, alpha_x, alpha_y are pairs, not layers.
+bool isLayered(const ModelInfo& model) {
+  std::vector<std::string_view> layers;
+  for (const ParamInfo& param : model.params) {
+    const std::string_view layer = firstWord(param.name);
+    if (std::find(layers.begin(), layers.end(), layer) == layers.end()) layers.push_back(layer);
+  }
+  if (layers.size() < 3) return false;
+  for (const ParamInfo& param : model.params) {
+    const std::string_view layer = firstWord(param.name);
+    if (layer.empty()) return false;
+    int members = 0;
+    for (const ParamInfo& other : model.params) members += firstWord(other.name) == layer ? 1 : 0;
+    if (members < 2) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string_view paramLayer(const ModelInfo& model, const ParamInfo& param) {
+  return isLayered(model) ? firstWord(param.name) : std::string_view();
+}
+
 const ParamInfo* findParam(const ModelInfo& model, std::string_view name) {
   if (name == kDelta.name) return &kDelta;
   for (const ParamInfo& param : model.params) {

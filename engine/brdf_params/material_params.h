@@ -55,6 +55,12 @@ struct ModelInfo {
   std::string_view glslFile;      // relative to the source tree
   std::string_view referenceFile;
   std::vector<Preset> presets;    // in the file's order
+  // Why f(wi, wo) differs from f(wo, wi) (`// reciprocal: no, ...`), or empty: the model is reciprocal, and
+  // brdf_reciprocity_test holds it to that.
+  std::string_view nonReciprocal;
+  // Why `raylab brdf fit` fits the model only when it is named (`// fit: by name, ...`), or empty: it is among the
+  // models a fit tries by default.
+  std::string_view fitByName;
 };
 
 // The registry's table (generated: brdf_model_table.cpp), in id order.
@@ -81,6 +87,9 @@ const ModelInfo& modelInfo(std::uint32_t id);
 const ParamInfo& deltaParam();
 // The ParamInfo of `name` for `model` (delta included), or null.
 const ParamInfo* findParam(const ModelInfo& model, std::string_view name);
+// The layer of a parameter of a layered model, one whose parameters are all named LAYER_rest in layers of two or
+// more (OpenPBR's naming: "coat" for coat_roughness); empty for every other model. The viewer groups by it.
+std::string_view paramLayer(const ModelInfo& model, const ParamInfo& param);
 
 // Sets one parameter of `record` (whose model is already set). Throws Error naming `where`, the parameter and
 // the accepted range when the name is unknown for this model, the value is not finite or out of range.

@@ -15,6 +15,8 @@ namespace raylab {
 
 static_assert(std::size(reference::kGgxAlbedoLoss) == gpu::kGgxAlbedoSize * gpu::kGgxAlbedoSize);
 static_assert(std::size(reference::kGgxAverageLoss) == gpu::kGgxAlbedoSize);
+static_assert(std::size(reference::kDielectricAlbedoLoss) == gpu::kDielectricAlbedoFloats);
+static_assert(std::size(reference::kMirrorAverageLoss) == gpu::kGgxAlbedoSize);
 
 std::vector<float> brdfTableValues() {
   std::vector<float> values(gpu::kBrdfTableFloats);
@@ -23,6 +25,12 @@ std::vector<float> brdfTableValues() {
   }
   for (std::size_t i = 0; i < std::size(reference::kGgxAverageLoss); ++i) {
     values[gpu::kGgxAlbedoAverageOffset + i] = static_cast<float>(reference::kGgxAverageLoss[i]);
+  }
+  for (std::size_t i = 0; i < std::size(reference::kDielectricAlbedoLoss); ++i) {
+    values[gpu::kDielectricAlbedoOffset + i] = static_cast<float>(reference::kDielectricAlbedoLoss[i]);
+  }
+  for (std::size_t i = 0; i < std::size(reference::kMirrorAverageLoss); ++i) {
+    values[gpu::kMirrorAverageLossOffset + i] = static_cast<float>(reference::kMirrorAverageLoss[i]);
   }
   return values;
 }

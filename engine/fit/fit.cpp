@@ -173,7 +173,10 @@ std::vector<std::string> fittableModels() {
     bool file = false;
     for (const ParamInfo& p : model.params) file |= isFileParam(p);
     // The library's models: a model of the test tree (registered by test builds) is fitted only when named.
-    if (!isDeltaOnly(model) && !file && !model.glslFile.starts_with("tests/")) names.emplace_back(model.name);
+    // A model whose registry line says `fit: by name` likewise.
+    if (!isDeltaOnly(model) && !file && !model.glslFile.starts_with("tests/") && model.fitByName.empty()) {
+      names.emplace_back(model.name);
+    }
   }
   return names;
 }

@@ -18,7 +18,8 @@ constexpr std::uint32_t kGlbJsonChunk = 0x4E4F534A;  // "JSON"
 constexpr std::size_t kGlbHeaderSize = 12;
 constexpr std::size_t kGlbChunkHeaderSize = 8;
 // The extensions raylab reads; a file that requires any other cannot be shown faithfully.
-const char* const kSupportedExtensions[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_ior",
+const char* const kSupportedExtensions[] = {"KHR_lights_punctual", "KHR_materials_clearcoat",
+                                            "KHR_materials_emissive_strength", "KHR_materials_ior",
                                             "KHR_materials_specular", "KHR_materials_transmission",
                                             "KHR_texture_transform"};
 constexpr std::size_t kMaxFileBytes = std::size_t(1) << 31;  // tinygltf takes sizes as unsigned int

@@ -289,6 +289,31 @@ gpu::TextureRef convertTextureUse(const json& info, const std::string& where, Do
 // A base-colour texture multiplies the model's diffuse colour (MaterialRecord::diffuseParam).
 bool hasDiffuseColour(std::uint32_t model) { return findRole(modelInfo(model), "diffuse") != nullptr; }
 
+// KHR_materials_clearcoat onto openpbr: the core factors as its base and the coat as its coat. The extension's coat
+// is a dielectric of index 1.5 whose Fresnel term scales the base below it, with no internal reflections:
+// openpbr's coat with coat_darkening 0 (albedo scaling alone). KHR_materials_specular's factors go to
+// specular_weight and specular_color, which mean nearly what they mean in glTF (docs/gltf.md, "Material extensions").
+gpu::MaterialRecord mapClearcoat(const MetallicRoughness& input, const std::string& where) {
+  gpu::MaterialRecord record = defaultRecord(modelId("openpbr"));
+  const std::string mapped = where + " (metallic-roughness under KHR_materials_clearcoat)";
+  setParam(record, "base_color", input.baseColor, mapped);
+  setParam(record, "base_metalness", glm::vec3(input.metallic), mapped);
+  setParam(record, "specular_roughness", glm::vec3(input.roughness), mapped);
+  const float iorMax = findParam(modelInfo(record.model), "specular_ior")->max;
+  if (input.ior > iorMax) {
+    warn(where + ": KHR_materials_ior.ior = " + formatNumber(input.ior) + " is above openpbr's " +
+         formatNumber(iorMax) + "; using " + formatNumber(iorMax));
+  }
+  setParam(record, "specular_ior", glm::vec3(std::min(input.ior, iorMax)), where + " (KHR_materials_ior)");
+  setParam(record, "specular_weight", glm::vec3(input.specular), where + " (KHR_materials_specular)");
+  setParam(record, "specular_color", glm::min(input.specularColor, glm::vec3(1.0f)), where + " (KHR_materials_specular)");
+  setParam(record, "coat_weight", glm::vec3(input.clearcoat), where + " (KHR_materials_clearcoat)");
+  setParam(record, "coat_roughness", glm::vec3(input.clearcoatRoughness), where + " (KHR_materials_clearcoat)");
+  setParam(record, "coat_ior", glm::vec3(1.5f), where + " (KHR_materials_clearcoat)");
+  setParam(record, "coat_darkening", glm::vec3(0.0f), where + " (KHR_materials_clearcoat)");
+  return record;
+}
+
 }  // namespace
 
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where) {
@@ -308,6 +333,7 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
     setParam(record, "tint", input.baseColor, where + " (base colour as glass tint)");
     return record;
   }
+  if (input.clearcoat > 0.0f) return mapClearcoat(input, where);
   // glTF's own BRDF (Appendix B): the factors as they are, nothing approximated.
   gpu::MaterialRecord record = defaultRecord(modelId("gltf_pbr"));
   const std::string mapped = where + " (metallic-roughness)";
@@ -425,6 +451,20 @@ void convertMaterials(Document& document, Scene& scene) {
         input.specularColor[c] = checkedFactor((*colour)[std::size_t(c)].get<double>(), 0.0,
                                                std::numeric_limits<float>::max(), where,
                                                "KHR_materials_specular.specularColorFactor[" + std::to_string(c) + "]");
+      }
+    }
+
+    if (const json* coat = findPath(materialJson, {"extensions", "KHR_materials_clearcoat"})) {
+      // The schema (gltf_schema.cpp) has checked the types.
+      const std::string name = "KHR_materials_clearcoat";
+      if (const json* factor = findPath(*coat, {"clearcoatFactor"})) {
+        input.clearcoat = checkedFactor(factor->get<double>(), 0.0, 1.0, where, name + ".clearcoatFactor");
+      }
+      if (const json* factor = findPath(*coat, {"clearcoatRoughnessFactor"})) {
+        input.clearcoatRoughness = checkedFactor(factor->get<double>(), 0.0, 1.0, where, name + ".clearcoatRoughnessFactor");
+      }
+      for (const char* texture : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}) {
+        if (coat->contains(texture)) document.ignore(std::string(name) + "." + texture + " (its factor applies alone)");
       }
     }
 

@@ -24,10 +24,13 @@ struct MetallicRoughness {
   float transmission = 0.0f;
   float specular = 1.0f;                // KHR_materials_specular.specularFactor
   glm::vec3 specularColor{1.0f};        // KHR_materials_specular.specularColorFactor
+  float clearcoat = 0.0f;               // KHR_materials_clearcoat.clearcoatFactor
+  float clearcoatRoughness = 0.0f;      // KHR_materials_clearcoat.clearcoatRoughnessFactor
 };
 
-// glass (eta = ior, tint = base colour) when transmission is 1, else gltf_pbr, glTF's own BRDF, with the factors
-// as they are (an ior above gltf_pbr's 3 is used as 3, with a warning). `where` starts error messages.
+// glass (eta = ior, tint = base colour) when transmission is 1; openpbr when a clear coat covers any of it
+// (docs/gltf.md, "Material extensions"); else gltf_pbr, glTF's own BRDF, with the factors as they are (an ior above
+// gltf_pbr's 3 is used as 3, with a warning). `where` starts error messages.
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where);
 
 // Applies an extras.raylab material object to `record`: "model" (optional) restarts from that model's

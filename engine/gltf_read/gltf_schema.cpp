@@ -67,12 +67,16 @@ const Shape kEmissiveStrength{{number("emissiveStrength")}};
 const Shape kTransmission{{number("transmissionFactor"), object("transmissionTexture", kTextureInfo)}};
 const Shape kSpecular{{number("specularFactor"), object("specularTexture", kTextureInfo), numbers("specularColorFactor", 3),
                        object("specularColorTexture", kTextureInfo)}};
+const Shape kClearcoat{{number("clearcoatFactor"), object("clearcoatTexture", kTextureInfo), number("clearcoatRoughnessFactor"),
+                        object("clearcoatRoughnessTexture", kTextureInfo),
+                        object("clearcoatNormalTexture", kNormalTextureInfo)}};
 const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                        object("normalTexture", kNormalTextureInfo), object("occlusionTexture", kOcclusionTextureInfo),
                        object("emissiveTexture", kTextureInfo), numbers("emissiveFactor", 3), string("alphaMode"),
                        number("alphaCutoff"), boolean("doubleSided")},
                       {object("KHR_materials_ior", kIor), object("KHR_materials_emissive_strength", kEmissiveStrength),
-                       object("KHR_materials_transmission", kTransmission), object("KHR_materials_specular", kSpecular)}};
+                       object("KHR_materials_transmission", kTransmission), object("KHR_materials_specular", kSpecular),
+                       object("KHR_materials_clearcoat", kClearcoat)}};
 const Shape kPrimitive{{required(indexMap("attributes")), index("indices"), index("material"), index("mode"),
                         indexMaps("targets")}};
 const Shape kMesh{{string("name"), required(objects("primitives", kPrimitive)), numbers("weights")}};

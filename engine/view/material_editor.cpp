@@ -139,7 +139,16 @@ bool drawMaterialEditor(gpu::MaterialRecord& record) {
     }
     ImGui::EndCombo();
   }
+  // A layered model's parameters (openpbr's base_, specular_, coat_) under one collapsible header per layer.
+  std::string_view layer;
+  bool open = true;
   for (const ParamInfo& param : modelInfo(record.model).params) {
+    const std::string_view paramsLayer = paramLayer(modelInfo(record.model), param);
+    if (!paramsLayer.empty() && paramsLayer != layer) {
+      layer = paramsLayer;
+      open = ImGui::CollapsingHeader(std::string(layer).c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+    }
+    if (!open) continue;
     changed |= isFileParam(param) ? drawFileParam(record, param) : drawParam(record, param);
   }
   changed |= drawParam(record, deltaParam());

@@ -24,3 +24,4 @@ raylab_brdf_model(abc_microfacet PREFIX abcMicrofacet GLSL brdf/abc_microfacet.g
 raylab_brdf_model(sgd PREFIX sgd GLSL brdf/sgd.glsl REFERENCE ${reference}/sgd.cpp)
 raylab_brdf_model(abc_smooth PREFIX abcSmooth GLSL brdf/abc_smooth.glsl REFERENCE ${reference}/abc_smooth.cpp)
 raylab_brdf_model(nbrdf PREFIX nbrdf GLSL brdf/nbrdf.glsl REFERENCE ${reference}/nbrdf.cpp)
+raylab_brdf_model(openpbr PREFIX openpbr GLSL brdf/openpbr.glsl REFERENCE ${reference}/openpbr.cpp)

@@ -7,6 +7,13 @@
 //   [kGgxAlbedoAverageOffset, +kGgxAlbedoSize) 1 - E_avg(alpha_i), E_avg = 2 integral E(mu) mu dmu
 // Stored as the energy lost, not E: float keeps 1 - E to full relative precision where E is nearly 1, and the
 // compensation divides by 1 - E_avg.
+//   [kDielectricAlbedoOffset, +kDielectricAlbedoFloats)  1 - E_r(mu, alpha, eps), E_r the directional albedo of the
+//                                             reflection of a GGX dielectric interface with the exact Fresnel term
+//                                             of index (1 + eps)/(1 - eps) (openpbr's layering), at
+//                                             [(k size + i) size + j]: mu_j = max(1e-4, (j / (size - 1))^2),
+//                                             alpha_i = max(1e-3, (i / (size - 1))^2), eps_k = k / (eps size - 1);
+//                                             its last slice (eps = 1) is GGX with F = 1 on these finer axes
+//   [kMirrorAverageLossOffset, +kGgxAlbedoSize) 1 - E_avg(alpha_i) of that slice, the mean of the interpolant
 // The values are computed at build time (engine/reference/ggx_albedo_table.cpp) into generated/ggx_albedo.h.
 //   [kFileDirectoryOffset, +kMaxFileBlocks)   where block b begins, as the bits of a uint: the files the scene uses,
 //                                             in the order the upload numbers them (engine/brdf_tables), from
@@ -36,7 +43,11 @@ RL_NAMESPACE_BEGIN
 RL_CONST uint kGgxAlbedoSize = 32;
 RL_CONST uint kGgxAlbedoOffset = 0;
 RL_CONST uint kGgxAlbedoAverageOffset = kGgxAlbedoSize * kGgxAlbedoSize;
-RL_CONST uint kBrdfTableFloats = kGgxAlbedoAverageOffset + kGgxAlbedoSize;
+RL_CONST uint kDielectricAlbedoEpsSize = 33;
+RL_CONST uint kDielectricAlbedoOffset = kGgxAlbedoAverageOffset + kGgxAlbedoSize;
+RL_CONST uint kDielectricAlbedoFloats = kDielectricAlbedoEpsSize * kGgxAlbedoSize * kGgxAlbedoSize;
+RL_CONST uint kMirrorAverageLossOffset = kDielectricAlbedoOffset + kDielectricAlbedoFloats;
+RL_CONST uint kBrdfTableFloats = kMirrorAverageLossOffset + kGgxAlbedoSize;
 
 RL_CONST uint kMerlThetaHBins = 90;
 RL_CONST uint kMerlThetaDBins = 90;

@@ -64,6 +64,11 @@ std::vector<SamplingCase> samplingCases() {
       {"abc_microfacet", {{"rho_d", 0.2}, {"a", 5}, {"b", 200}, {"c", 1}, {"ior", 1.5}}},
       {"abc_smooth", {{"rho_d", 0.4}, {"a", 2}, {"b", 50}, {"c", 1}, {"ior", 1.5}}},
       {"abc_smooth", {{"rho_d", 0}, {"a", 1}, {"b", 300}, {"c", 0.5}, {"ior", 5}}},
+      // A coated anisotropic dielectric, and a half-coated metal under an anisotropic coat: both GGX lobes sampled.
+      {"openpbr", {{"base_color", 0.6}, {"specular_roughness", 0.5}, {"specular_roughness_anisotropy", 0.5},
+                   {"coat_weight", 1}, {"coat_roughness", 0.2}}},
+      {"openpbr", {{"base_color", 0.9}, {"base_metalness", 1}, {"specular_roughness", 0.4}, {"coat_weight", 0.5},
+                   {"coat_roughness", 0.3}, {"coat_roughness_anisotropy", 0.6}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;

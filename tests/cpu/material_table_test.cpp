@@ -193,5 +193,20 @@ TEST(MaterialTable, NamedMetalsSetEtaAndKAndTheOtherEntriesRefineThem) {
   EXPECT_THROW(applyParamList(lambert, "metal=Au", "test"), Error) << "lambert has no metals";
 }
 
+// The viewer groups a layered model's sliders by layer: openpbr's parameters are all LAYER_rest; gltf_pbr's are not
+// (metallic, roughness), so it gets none.
+TEST(MaterialTable, OnlyALayeredModelsParametersHaveLayers) {
+  const ModelInfo& openpbr = *findModel("openpbr");
+  EXPECT_EQ(paramLayer(openpbr, *findParam(openpbr, "coat_ior")), "coat");
+  EXPECT_EQ(paramLayer(openpbr, *findParam(openpbr, "specular_roughness_anisotropy")), "specular");
+  EXPECT_EQ(paramLayer(openpbr, *findParam(openpbr, "base_color")), "base");
+  const ModelInfo& gltf = *findModel("gltf_pbr");
+  EXPECT_EQ(paramLayer(gltf, *findParam(gltf, "base_color")), "");
+  const ModelInfo& conductor = *findModel("ggx_conductor");
+  EXPECT_EQ(paramLayer(conductor, *findParam(conductor, "alpha_x")), "") << "alpha_x and alpha_y alone are no layers";
+  const ModelInfo& ward = *findModel("ward");
+  EXPECT_EQ(paramLayer(ward, *findParam(ward, "rho_d")), "") << "Ward's pairs rho_ and alpha_ are no layers";
+}
+
 }  // namespace
 }  // namespace raylab::test

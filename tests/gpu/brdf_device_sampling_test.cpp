@@ -71,6 +71,11 @@ std::vector<SamplingCase> samplingCases() {
       {"ggx_dielectric", {{"alpha_x", 0.1f}, {"alpha_y", 0.4f}, {"eta", 1.33f}, {"tint", 0.5f}}},
       {"abc_microfacet", {{"rho_d", 0.4f}, {"a", 2.0f}, {"b", 100.0f}, {"c", 1.5f}, {"ior", 1.5f}}},
       {"abc_microfacet", {{"rho_d", 0.0f}, {"a", 1.0f}, {"b", 30.0f}, {"c", 0.5f}, {"ior", 10.0f}}},
+      // A coated anisotropic dielectric, and a half-coated metal under an anisotropic coat: both GGX lobes sampled.
+      {"openpbr", {{"base_color", 0.6f}, {"specular_roughness", 0.5f}, {"specular_roughness_anisotropy", 0.5f},
+                   {"coat_weight", 1.0f}, {"coat_roughness", 0.2f}}},
+      {"openpbr", {{"base_color", 0.9f}, {"base_metalness", 1.0f}, {"specular_roughness", 0.4f},
+                   {"coat_weight", 0.5f}, {"coat_roughness", 0.3f}, {"coat_roughness_anisotropy", 0.6f}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;
@@ -96,7 +101,7 @@ gpu::MaterialRecord makeRecord(const SamplingCase& c) {
 std::string label(const SamplingCase& c) {
   std::string text = c.model;
   for (const Param& p : c.params) {
-    char value[32];
+    char value[96];  // openpbr's names reach 30 characters
     std::snprintf(value, sizeof value, " %s=%g", p.name, p.value);
     text += value;
   }

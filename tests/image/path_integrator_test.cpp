@@ -63,6 +63,12 @@ std::vector<FurnaceCase> furnaceCases() {
       {"eon r=1", material("eon", {{"rho_d", 1.0f}, {"r", 1.0f}})},
       {"ggx_conductor 0.5 multiscatter", material("ggx_conductor", {{"alpha_x", 0.5f}, {"alpha_y", 0.5f}, {"eta", 0.01f},
                                                                    {"k", 20.0f}, {"multiscatter", 1.0f}})},
+      // OpenPBR's white-furnace list (the CPU test sweeps it at the BSDF level): a white diffuse base under a white
+      // coat, and a white metal under half a coat.
+      {"openpbr diffuse + coat", material("openpbr", {{"base_color", 1.0f}, {"coat_weight", 1.0f}, {"coat_roughness", 0.2f}})},
+      {"openpbr metal + half coat", material("openpbr", {{"base_color", 1.0f}, {"base_metalness", 1.0f},
+                                                         {"specular_roughness", 0.5f}, {"coat_weight", 0.5f},
+                                                         {"coat_roughness", 0.3f}})},
   };
 }
 

@@ -352,6 +352,47 @@ TEST(GltfMaterial, KhrMaterialsSpecularSetsTheDielectricsStrengthAndColour) {
   }
 }
 
+// KHR_materials_clearcoat maps the material onto openpbr: the core factors as its base, the extension's coat (index
+// 1.5, no darkening) as its coat (docs/gltf.md, "Material extensions"). A factor of 0 leaves glTF's own BRDF.
+TEST(GltfMaterial, KhrMaterialsClearcoatIsOpenPbrsCoat) {
+  WarningCapture warnings;
+  const Scene scene = loadMaterial({{"name", "lacquer"},
+                                    {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.02, 0.01, 1.0}},
+                                                              {"metallicFactor", 0.0}, {"roughnessFactor", 0.44}}},
+                                    {"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.8},
+                                                                                 {"clearcoatRoughnessFactor", 0.03}}},
+                                                    {"KHR_materials_ior", {{"ior", 1.45}}}}}});
+  const gpu::MaterialRecord& r = scene.materials[0].record;
+  EXPECT_EQ(r.model, modelId("openpbr"));
+  expectNear(getParam(r, "base_color"), {0.5f, 0.02f, 0.01f}, "base_color");
+  EXPECT_FLOAT_EQ(getParam(r, "base_metalness").x, 0.0f);
+  EXPECT_FLOAT_EQ(getParam(r, "specular_roughness").x, 0.44f);
+  EXPECT_FLOAT_EQ(getParam(r, "specular_ior").x, 1.45f);
+  EXPECT_FLOAT_EQ(getParam(r, "coat_weight").x, 0.8f);
+  EXPECT_FLOAT_EQ(getParam(r, "coat_roughness").x, 0.03f);
+  EXPECT_FLOAT_EQ(getParam(r, "coat_ior").x, 1.5f);
+  EXPECT_FLOAT_EQ(getParam(r, "coat_darkening").x, 0.0f);
+  EXPECT_EQ(warnings.count("KHR_materials_clearcoat"), 0) << "read, not ignored";
+
+  const Scene uncoated = loadMaterial({{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.0}}}}}});
+  EXPECT_EQ(uncoated.materials[0].record.model, modelId("gltf_pbr"));
+
+  GltfBuilder textured = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+  textured.doc()["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0},
+                                                                              {"clearcoatTexture", {{"index", 0}}}};
+  WarningCapture textureWarnings;
+  textured.load();
+  EXPECT_EQ(textureWarnings.count("KHR_materials_clearcoat.clearcoatTexture"), 1) << "said, not silently dropped";
+
+  for (const json& bad : {json{{"clearcoatFactor", 1.5}}, json{{"clearcoatRoughnessFactor", -0.1}},
+                          json{{"clearcoatFactor", "1"}}}) {
+    // A value out of range names the material; a wrong type, caught by the schema, names its path.
+    const std::string error = materialError({{"name", "bad coat"}, {"extensions", {{"KHR_materials_clearcoat", bad}}}});
+    EXPECT_NE(error.find("KHR_materials_clearcoat.clearcoat"), std::string::npos) << error;
+    EXPECT_TRUE(error.find("bad coat") != std::string::npos || error.find("materials[0]") != std::string::npos) << error;
+  }
+}
+
 // glTF 3.9.3: the emissive texture is multiplied by emissiveFactor, whose default is zero.
 TEST(GltfMaterial, AnEmissiveTextureMultipliesTheFactorAndIsSkippedUnderAZeroOne) {
   GltfBuilder lit = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));

@@ -36,7 +36,7 @@ def parse_model(name, prefix, include, path):
     """The lobes, parameter table, sweep line, presets and tool lines (look, figures, sweep scenes) of the comment
     a model's GLSL file opens with."""
     lobes, params, sweep, slot, preset_lines = None, [], "", 0, []
-    look, figure_lines, sweep_scene_lines = None, [], []
+    look, figure_lines, sweep_scene_lines, non_reciprocal, fit_by_name = None, [], [], "", ""
     with open(path, encoding="utf-8") as f:
         for number, line in enumerate(f, 1):
             if not line.startswith("//"):
@@ -49,6 +49,17 @@ def parse_model(name, prefix, include, path):
                 if unknown or not words:
                     raise RegistryError(f"{where}: lobes are {', '.join(LOBES)}; got '{body}'")
                 lobes = sum(LOBES[w] for w in words)
+            elif body.startswith("reciprocal:"):
+                answer, _, why = body[len("reciprocal:"):].partition(",")
+                if answer.strip() != "no" or not why.strip():
+                    raise RegistryError(f"{where}: 'reciprocal: no, WHY' marks a model that is not reciprocal "
+                                        "(reciprocal models say nothing)")
+                non_reciprocal = why.strip()
+            elif body.startswith("fit:"):
+                answer, _, why = body[len("fit:"):].partition(",")
+                if answer.strip() != "by name" or not why.strip():
+                    raise RegistryError(f"{where}: 'fit: by name, WHY' keeps a model out of the default fits")
+                fit_by_name = why.strip()
             elif body.startswith("sweep:"):
                 sweep = body[len("sweep:"):].strip()
             elif body.startswith("preset:"):
@@ -108,7 +119,8 @@ def parse_model(name, prefix, include, path):
                             options=("--" + options).split() if options else []))
     sweep_scenes = [parse_sweep_scene(where, text, why, params, keys) for where, text, why in sweep_scene_lines]
     return dict(name=name, prefix=prefix, include=include, path=path, lobes=lobes, params=params, sweep=sweep,
-                presets=presets, look=look[1] if look else None, figures=figures, sweep_scenes=sweep_scenes)
+                presets=presets, look=look[1] if look else None, figures=figures, sweep_scenes=sweep_scenes,
+                non_reciprocal=non_reciprocal, fit_by_name=fit_by_name)
 
 
 def check_param_list(where, text, keys):
@@ -246,7 +258,8 @@ def cpp_table(models, source_dir):
                 for param, channels in p["values"]) + "}}"
             for p in m["presets"])
         out.append(f"      {{{cpp_string(m['name'])}, {i}u, {m['lobes']}u, {{{params}}}, {cpp_string(m['sweep'])}, "
-                   f"{cpp_string(glsl)}, {cpp_string(m['reference'])}, {{{presets}}}}},")
+                   f"{cpp_string(glsl)}, {cpp_string(m['reference'])}, {{{presets}}}, "
+                   f"{cpp_string(m['non_reciprocal'])}, {cpp_string(m['fit_by_name'])}}},")
     out += ["  };", "  return table;", "}", "", "}  // namespace raylab", ""]
     return "\n".join(out)
 

@@ -5,9 +5,8 @@
 #include <algorithm>
 #include <complex>
 
-#include "generated/ggx_albedo.h"
 #include "generated/reference_params.h"
-#include "shared/brdf_tables.h"
+#include "reference/albedo_tables.h"
 #include "reference/ggx.h"
 #include "reference/sampling.h"
 #include "reference/terms.h"
@@ -23,26 +22,6 @@ double fresnelConductor(double c, double eta, double k) {
   const std::complex<double> rs = (c - n * cosT) / (c + n * cosT);
   const std::complex<double> rp = (n * c - cosT) / (n * c + cosT);
   return 0.5 * (std::norm(rs) + std::norm(rp));
-}
-
-constexpr int kGgxAlbedoSize = static_cast<int>(gpu::kGgxAlbedoSize);
-
-// 1 - E(mu, alpha), bilinear in the build-time table (ggx_albedo_table.cpp), as its axes define it.
-double tableLoss(double mu, double alpha) {
-  const double last = kGgxAlbedoSize - 1;
-  const double x = std::clamp(mu, 0.0, 1.0) * last, y = std::clamp(alpha, 0.0, 1.0) * last;
-  const int x0 = std::min(int(x), kGgxAlbedoSize - 2), y0 = std::min(int(y), kGgxAlbedoSize - 2);
-  const double tx = x - x0, ty = y - y0;
-  const auto at = [](int row, int column) { return kGgxAlbedoLoss[row * kGgxAlbedoSize + column]; };
-  return (1.0 - ty) * ((1.0 - tx) * at(y0, x0) + tx * at(y0, x0 + 1)) +
-         ty * ((1.0 - tx) * at(y0 + 1, x0) + tx * at(y0 + 1, x0 + 1));
-}
-
-// 1 - E_avg(alpha).
-double tableAverageLoss(double alpha) {
-  const double y = std::clamp(alpha, 0.0, 1.0) * (kGgxAlbedoSize - 1);
-  const int y0 = std::min(int(y), kGgxAlbedoSize - 2);
-  return (1.0 - (y - y0)) * kGgxAverageLoss[y0] + (y - y0) * kGgxAverageLoss[y0 + 1];
 }
 
 // F_avg = 2 integral F(mu) mu dmu by the 8-point Gauss-Legendre rule on [0, 1]: the definition the GLSL uses too
@@ -63,10 +42,10 @@ double averageFresnel(double eta, double k) {
 dvec3 multipleScattering(const GgxConductorParams& p, const dvec3& wi, const dvec3& wo) {
   if (!(p.multiscatter > 0.0)) return dvec3(0.0);
   const double alpha = std::sqrt(p.alpha_x * p.alpha_y);
-  const double averageLoss = tableAverageLoss(alpha);
+  const double averageLoss = ggxAverageLoss(alpha);
   if (!(averageLoss > 1e-6)) return dvec3(0.0);
   const double eAvg = 1.0 - averageLoss;
-  const double lost = tableLoss(wo.z, alpha) * tableLoss(wi.z, alpha) / (kPi * averageLoss);
+  const double lost = ggxAlbedoLoss(wo.z, alpha) * ggxAlbedoLoss(wi.z, alpha) / (kPi * averageLoss);
   dvec3 result;
   for (int c = 0; c < 3; ++c) {
     const double fAvg = averageFresnel(p.eta[c], p.k[c]);

@@ -1,0 +1,187 @@
+// OpenPBR Surface 1.1.1 (Academy Software Foundation), its "Reduction to a mixture of lobes" with non-reciprocal
+// albedo scaling, as the specification's sections write each piece (docs/brdfs.md, "openpbr"): the F82-tint
+// metal with Kulla & Conty's multiple scattering, the glossy-diffuse dielectric (GGX reflection over EON scaled by
+// 1 - E_spec(wo)), the metalness mix, and the coat (its reflection, view-dependent absorption, roughening and
+// darkening). The directional albedos E come from the build-time table (reference/albedo_tables.h); the rest is
+// written here in double from the formulas, not from the GLSL.
+#include <algorithm>
+#include <cmath>
+
+#include "generated/reference_params.h"
+#include "reference/albedo_tables.h"
+#include "reference/ggx.h"
+#include "reference/sampling.h"
+#include "reference/terms.h"
+
+namespace raylab::reference {
+namespace {
+
+struct Alphas {
+  double t, b;
+};
+
+// alpha_t = r^2 sqrt(2 / (1 + (1 - a)^2)), alpha_b = (1 - a) alpha_t; the library's floor of 0.001 on each.
+Alphas alphasOf(double roughness, double anisotropy) {
+  const double alphaT = roughness * roughness * std::sqrt(2.0 / (1.0 + (1.0 - anisotropy) * (1.0 - anisotropy)));
+  return {std::max(alphaT, 1e-3), std::max((1.0 - anisotropy) * alphaT, 1e-3)};
+}
+
+double baseRoughness(const OpenpbrParams& p) {
+  const double r = p.specular_roughness, c = p.coat_roughness;
+  return (1.0 - p.coat_weight) * r + p.coat_weight * std::pow(std::min(1.0, std::pow(r, 4) + 2.0 * std::pow(c, 4)), 0.25);
+}
+Alphas baseAlphas(const OpenpbrParams& p) { return alphasOf(baseRoughness(p), p.specular_roughness_anisotropy); }
+Alphas coatAlphas(const OpenpbrParams& p) { return alphasOf(p.coat_roughness, p.coat_roughness_anisotropy); }
+
+// sqrt(F0) of the base dielectric: the index relative to the coat's mix of media (its inverse below 1), its F0
+// scaled by specular_weight and clamped to 1 (OpenPBR, "Dielectric base").
+double specularEps(const OpenpbrParams& p) {
+  double eta = (1.0 - p.coat_weight) * p.specular_ior + p.coat_weight * p.specular_ior / p.coat_ior;
+  if (eta < 1.0) eta = 1.0 / eta;
+  return std::sqrt(std::clamp(p.specular_weight * F0FromEta(eta), 0.0, 1.0));
+}
+double coatEps(const OpenpbrParams& p) { return (p.coat_ior - 1.0) / (p.coat_ior + 1.0); }
+
+double fresnel(double cosI, double eps) {
+  if (eps >= 0.9999) return 1.0;  // an index beyond float's reach in the kernels: a perfect mirror
+  return F_DielectricFromOutside((1.0 + eps) / (1.0 - eps), cosI);
+}
+
+// The width along w's azimuth, sqrt(alpha_t^2 cos^2 phi + alpha_b^2 sin^2 phi) (Smith's masking of w sees it); the
+// tables of isotropic albedos are read at it. At the normal sqrt(alpha_t alpha_b).
+double projectedAlpha(const Alphas& a, const dvec3& w) {
+  const double s2 = w.x * w.x + w.y * w.y;
+  if (!(s2 > 0.0)) return std::sqrt(a.t * a.b);
+  return std::sqrt((a.t * a.t * w.x * w.x + a.b * a.b * w.y * w.y) / s2);
+}
+
+double cosineToHalfVector(const dvec3& wo, const dvec3& h) { return std::clamp(glm::dot(wo, h) / glm::length(h), 0.0, 1.0); }
+
+// D G1(wi) G1(wo) / (4 cos_i cos_o) of a GGX lobe.
+double microfacet(const dvec3& wi, const dvec3& wo, const Alphas& a) {
+  return D_GGX(wi + wo, a.t, a.b) * G1_GGX(wi, a.t, a.b) * G1_GGX(wo, a.t, a.b) / (4.0 * wi.z * wo.z);
+}
+
+// The F82-tint metal (Kutz et al. 2021): Schlick's curve less b mu (1 - mu)^6, which meets specular_color times
+// Schlick's curve at mu = 1/7.
+constexpr double kMuBar = 1.0 / 7.0;
+dvec3 f82Coefficient(const dvec3& F0, const dvec3& tint) {
+  return F_Schlick(F0, kMuBar) * (dvec3(1.0) - tint) / (kMuBar * std::pow(1.0 - kMuBar, 6));
+}
+dvec3 f82(const dvec3& F0, const dvec3& b, double mu) {
+  return glm::clamp(F_Schlick(F0, mu) - b * (mu * std::pow(1.0 - mu, 6)), 0.0, 1.0);
+}
+
+// Kulla & Conty's compensation with the F82 curve's mean 2 integral F mu dmu = F0 + (1 - F0)/21 - b/126
+// (the Beta integrals of mu (1 - mu)^5 and mu^2 (1 - mu)^6), over the F = 1 slice of the layering table (its finer
+// axes keep a white metal's furnace within the table's accuracy at grazing angles).
+dvec3 metalMultipleScattering(const dvec3& F0, const dvec3& b, double weight, const Alphas& a, const dvec3& wi,
+                              const dvec3& wo) {
+  const double alpha = std::sqrt(a.t * a.b);
+  const double averageLoss = mirrorAverageLoss(alpha);
+  if (!(averageLoss > 1e-6)) return dvec3(0.0);
+  const double eAvg = 1.0 - averageLoss;
+  const dvec3 fAvg = glm::clamp(weight * (F0 + (dvec3(1.0) - F0) / 21.0 - b / 126.0), 0.0, 1.0);
+  const dvec3 fMs = fAvg * fAvg * eAvg / (dvec3(1.0) - fAvg * averageLoss);
+  const double lossO = dielectricReflectionLoss(wo.z, projectedAlpha(a, wo), 1.0);
+  const double lossI = dielectricReflectionLoss(wi.z, projectedAlpha(a, wi), 1.0);
+  return fMs * std::max(lossO * lossI / (kPi * averageLoss), 0.0);
+}
+
+// 2 integral F(mu) mu dmu of the coat's Fresnel term, by 8-point Gauss-Legendre (the rule the kernels use).
+double averageFresnel(double eps) {
+  constexpr double t[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+  constexpr double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  double sum = 0.0;
+  for (int n = 0; n < 4; ++n) {
+    const double lo = 0.5 * (1.0 - t[n]), hi = 0.5 * (1.0 + t[n]);
+    sum += w[n] * (lo * fresnel(lo, eps) + hi * fresnel(hi, eps));
+  }
+  return sum;
+}
+
+// The fixed mixture: {specular lobes against the cosine lobe, the coat within the specular lobes}.
+dvec2 lobeProbabilities(const OpenpbrParams& p) {
+  const double eps = specularEps(p);
+  const double diffuse = (1.0 - p.base_metalness) * p.base_weight * (p.base_color.x + p.base_color.y + p.base_color.z) / 3.0;
+  const double base = p.base_metalness + (1.0 - p.base_metalness) * std::min(1.0, 4.0 * eps * eps);
+  const double coat = 0.25 * p.coat_weight;
+  const double specular = base + coat;
+  return {diffuse + specular > 0.0 ? specular / (diffuse + specular) : 0.5, specular > 0.0 ? coat / specular : 0.0};
+}
+
+}  // namespace
+
+Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
+  if (!aboveHorizon(wi, wo)) return {};
+  const double C = p.coat_weight, M = p.base_metalness;
+  const dvec3 h = wi + wo;
+  const double cosH = cosineToHalfVector(wo, h);
+  const Alphas alpha = baseAlphas(p);
+  const double alphaTable = std::sqrt(alpha.t * alpha.b);
+  const double eps = specularEps(p);
+  const dvec3 rho = p.base_weight * p.base_color;
+
+  // Glossy-diffuse dielectric: f_spec + (1 - E_spec(wo)) f_EON.
+  const double passed = dielectricReflectionLoss(wo.z, projectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
+  const dvec3 specular = p.specular_color * (fresnel(cosH, eps) * microfacet(wi, wo, alpha));
+  const dvec3 diffuse = passed * eonEval(EonParams{rho, p.base_diffuse_roughness}, wi, wo).sum();
+  // Metal.
+  const dvec3 b = f82Coefficient(rho, p.specular_color);
+  const dvec3 metal = glm::min(p.specular_weight * f82(rho, b, cosH), dvec3(1.0)) * microfacet(wi, wo, alpha) +
+                      metalMultipleScattering(rho, b, p.specular_weight, alpha, wi, wo);
+
+  Lobes substrate{(1.0 - M) * diffuse, (1.0 - M) * specular + M * metal};
+  if (!(C > 0.0)) return substrate;
+
+  // The coat: its reflection, and what it passes to the base.
+  const Alphas alphaCoat = coatAlphas(p);
+  const double epsCoat = coatEps(p);
+  const double coat = fresnel(cosH, epsCoat) * microfacet(wi, wo, alphaCoat);
+  const double coatPassed = dielectricReflectionLoss(wo.z, projectedAlpha(alphaCoat, wo), epsCoat);  // 1 - E_coat(wo)
+  const auto refractedCosine = [&p](double c) { return std::sqrt(1.0 - (1.0 - c * c) / (p.coat_ior * p.coat_ior)); };
+  const double pathLength = 0.5 * (1.0 / refractedCosine(wi.z) + 1.0 / refractedCosine(wo.z));
+  const dvec3 T(std::pow(p.coat_color.x, pathLength), std::pow(p.coat_color.y, pathLength),
+                std::pow(p.coat_color.z, pathLength));
+  dvec3 darkening(1.0);
+  if (p.coat_darkening > 0.0) {
+    // E_b, the base's albedo at normal incidence; K, the share of the light leaving the base that the coat
+    // reflects back (OpenPBR, "Darkening").
+    const double eSpecNormal = 1.0 - dielectricReflectionLoss(1.0, alphaTable, eps);
+    const dvec3 eBase = (1.0 - M) * (p.specular_color * eSpecNormal + (1.0 - eSpecNormal) * rho) + M * glm::min(p.specular_weight * rho, dvec3(1.0));
+    const double kRough = 1.0 - (1.0 - averageFresnel(epsCoat)) / (p.coat_ior * p.coat_ior);
+    const double kSmooth = fresnel(wo.z, epsCoat);
+    const double roughnessEstimate = (1.0 - M) * ((1.0 - eps * eps) + eps * eps * p.specular_roughness) + M * p.specular_roughness;
+    const double K = (1.0 - roughnessEstimate) * kSmooth + roughnessEstimate * kRough;
+    for (int c = 0; c < 3; ++c) {
+      // E_b, K <= 1 keep Delta <= 1; a white base under a coat that returns everything (0/0) is not darkened.
+      const double denominator = 1.0 - eBase[c] * K;
+      const double delta = denominator > 0.0 ? (1.0 - K) / denominator : 1.0;
+      darkening[c] = 1.0 + C * p.coat_darkening * (delta - 1.0);
+    }
+  }
+  const dvec3 below = ((1.0 - C) + C * T * coatPassed) * darkening;
+  return {below * substrate.diffuse, C * coat + below * substrate.specular};
+}
+
+// The specular lobes: the coat's GGX with probability q (u.x stretched back to [0, 1)), else the base's.
+dvec3 openpbrSampleSpecular(const OpenpbrParams& p, const dvec3& wo, const dvec2& u) {
+  const double q = lobeProbabilities(p).y;
+  const bool coat = u.x < q;
+  const Alphas a = coat ? coatAlphas(p) : baseAlphas(p);
+  const double v = coat ? u.x / q : (u.x - q) / (1.0 - q);
+  return reflectAbout(wo, sampleGgxVisibleNormal(wo, a.t, a.b, dvec2(std::min(v, 1.0 - 1e-12), u.y)));
+}
+
+double openpbrPdfSpecular(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
+  const double q = lobeProbabilities(p).y;
+  const Alphas base = baseAlphas(p), coat = coatAlphas(p);
+  return (1.0 - q) * ggxReflectionPdf(wi + wo, wo, base.t, base.b) + q * ggxReflectionPdf(wi + wo, wo, coat.t, coat.b);
+}
+
+SpecularLobe openpbrSpecularLobe(const OpenpbrParams& p) {
+  const Alphas a = baseAlphas(p);
+  return {lobeProbabilities(p).x, dvec2(a.t, a.b), false};
+}
+
+}  // namespace raylab::reference

@@ -1,0 +1,272 @@
+// OpenPBR Surface 1.1.1: a metal and a glossy-diffuse dielectric mixed by metalness, under a coat.
+// lobes: reflection diffuse glossy
+// fit: by name, its layers give one look many ways: which of them a fit frees is not yet designed (issue 38)
+// reciprocal: no, albedo scaling by 1 - E(wo) conserves energy but weighs wo and wi differently (OpenPBR)
+// look: base_color=0.8/0.25/0.1, specular_roughness=0.35, coat_weight=1, coat_roughness=0.05
+// figure: base_color=0.8/0.25/0.1, specular_roughness=0.4, coat_weight=1, coat_roughness=0.1
+// figure metal: base_color=0.95/0.64/0.54, base_metalness=1, specular_color=0.95/0.8/0.75, specular_roughness=0.3
+// | parameter                     | range    | default | kind              | meaning                                  |
+// |-------------------------------|----------|---------|-------------------|------------------------------------------|
+// | base_weight                   | [0, 1]   | 1       |                   | scales the base's diffuse albedo and metal F0 |
+// | base_color                    | [0, 1]   | 0.8     | rgb diffuse       | diffuse albedo, or the metal's F0         |
+// | base_metalness                | [0, 1]   | 0       | metallic          | 0 dielectric, 1 metal, a mix between      |
+// | base_diffuse_roughness        | [0, 1]   | 0       |                   | EON's roughness of the diffuse lobe       |
+// | specular_weight               | [0, 5]   | 1       | specular_weight   | scales the dielectric's F0 (by its index), and the metal's F |
+// | specular_color                | [0, 1]   | 1       | rgb specular_tint | tints the dielectric's reflection; the metal's F82 edge tint |
+// | specular_roughness            | [0, 1]   | 0.3     | roughness         | roughness r of the base; alpha = r^2      |
+// | specular_roughness_anisotropy | [0, 1]   | 0       |                   | stretches the base's GGX along the tangent |
+// | specular_ior                  | [1, 5]   | 1.5     | eta               | index of refraction of the dielectric     |
+// | coat_weight                   | [0, 1]   | 0       |                   | coverage of the coat                      |
+// | coat_color                    | [0, 1]   | 1       | rgb               | the coat's transmittance squared at normal incidence |
+// | coat_roughness                | [0, 1]   | 0       |                   | roughness of the coat's GGX               |
+// | coat_roughness_anisotropy     | [0, 1]   | 0       |                   | stretches the coat's GGX along the tangent |
+// | coat_ior                      | [1, 3]   | 1.6     |                   | index of refraction of the coat           |
+// | coat_darkening                | [0, 1]   | 1       |                   | 1: the coat darkens the base as physics does; 0: compensated |
+// Portsmouth, Hoffman, Pharr, Kutz, Leidl et al., "OpenPBR Surface", Academy Software Foundation, v1.1.1, 2026,
+// section "Reduction to a mixture of lobes", with non-reciprocal albedo scaling (docs/brdfs.md, "openpbr"):
+//   f = C f_coat + lerp(1, T (1 - E_coat(wo)), C) lerp(1, Delta, C delta) lerp(f_dielectric, f_metal, M),
+//   f_dielectric = specular_color f_spec + (1 - E_spec(wo)) f_EON(base_weight base_color, base_diffuse_roughness),
+//   f_metal = F_82(wo.H) D G / (4 cos_i cos_o) + Kulla & Conty's multiple scattering,
+// C = coat_weight, M = base_metalness, delta = coat_darkening. f_spec and f_coat are GGX dielectric reflections
+// (separable Smith G, exact Fresnel F(wo.H)); E_spec and E_coat their directional albedos, read from a build-time
+// table (shared/brdf_tables.h) at the width the lobe has along wo's azimuth. The specular index is eta_s = lerp(specular_ior, specular_ior / coat_ior, C),
+// taken as 1 / eta_s below 1 (no total internal reflection under the coat: a ray inside the coat never reaches
+// the base beyond the critical angle); specular_weight scales its F0: eps = sqrt(min(1, specular_weight F0)),
+// eta' = (1 + eps) / (1 - eps). Metal (F82-tint, Kutz et al. 2021): F0 = base_weight base_color, F_s = Schlick,
+// b = F_s(1/7) (1 - specular_color) / ((1/7)(6/7)^6), F_82 = min(1, specular_weight clamp(F_s(mu) - b mu (1 - mu)^6, 0, 1)).
+// Anisotropy: alpha_t = r^2 sqrt(2 / (1 + (1 - a)^2)), alpha_b = (1 - a) alpha_t, each at least 0.001. Coat:
+// view-dependent absorption T = coat_color^((1/mu_i^t + 1/mu_o^t) / 2) with the cosines refracted into the coat,
+// roughening of the base r' = lerp(r, min(1, r^4 + 2 r_c^4)^(1/4), C), and darkening
+// Delta = (1 - K) / (1 - E_b K), K = lerp(F_coat(cos_o), 1 - (1 - E_F) / coat_ior^2, r_b).
+// Sampled as a mixture fixed per material: the cosine lobe, or GGX visible normals of the coat or of the base.
+#ifndef RAYLAB_BRDF_OPENPBR_GLSL
+#define RAYLAB_BRDF_OPENPBR_GLSL
+
+#include "brdf/brdf_tables.glsl"
+#include "brdf/eon.glsl"
+#include "brdf/fresnel.glsl"
+#include "brdf/ggx.glsl"
+#include "brdf/sampling.glsl"
+
+// The GGX widths (alpha_t, alpha_b) of a roughness and an anisotropy (OpenPBR, "Microfacet model").
+vec2 openpbrAlphas(float roughness, float anisotropy) {
+  const float alphaT = roughness * roughness * sqrt(2.0 / (1.0 + (1.0 - anisotropy) * (1.0 - anisotropy)));
+  return max(vec2(alphaT, (1.0 - anisotropy) * alphaT), vec2(1e-3));
+}
+
+// The base's roughness roughened by the coat (OpenPBR, "Roughening").
+float openpbrBaseRoughness(float specularRoughness, float coatWeight, float coatRoughness) {
+  const float r2 = specularRoughness * specularRoughness, c2 = coatRoughness * coatRoughness;
+  return mix(specularRoughness, sqrt(sqrt(min(1.0, r2 * r2 + 2.0 * c2 * c2))), coatWeight);
+}
+
+// eps = (eta' - 1) / (eta' + 1) = sqrt(F0) of the base dielectric seen from the coat's mix of media, specular_weight
+// applied (OpenPBR, "Dielectric base"); an index below 1 is taken as its inverse, which has the same F0.
+float openpbrSpecularEps(float specularWeight, float specularIor, float coatWeight, float coatIor) {
+  float eta = mix(specularIor, specularIor / coatIor, coatWeight);
+  eta = eta < 1.0 ? 1.0 / eta : eta;
+  const float F0 = (eta - 1.0) * (eta - 1.0) / ((eta + 1.0) * (eta + 1.0));
+  return sqrt(clamp(specularWeight * F0, 0.0, 1.0));
+}
+
+// The exact Fresnel reflectance from outside at cosine c of the index (1 + eps)/(1 - eps); eps near 1 is a
+// perfect mirror (an index beyond float's reach), eps = 0 no interface.
+float openpbrFresnel(float c, float eps) {
+  if (eps >= 0.9999) return 1.0;
+  return F_DielectricExact(c, 1.0, (1.0 + eps) / (1.0 - eps));
+}
+
+// 1 - E_r(mu, alpha, eps), trilinear in (sqrt(mu), sqrt(alpha), eps) in the build-time table (shared/brdf_tables.h).
+float openpbrDielectricLoss(float mu, float alpha, float eps) {
+  const float last = float(kGgxAlbedoSize - 1u);
+  const float x = sqrt(clamp(mu, 0.0, 1.0)) * last, y = sqrt(clamp(alpha, 0.0, 1.0)) * last;
+  const float z = clamp(eps, 0.0, 1.0) * float(kDielectricAlbedoEpsSize - 1u);
+  const uint x0 = min(uint(x), kGgxAlbedoSize - 2u), y0 = min(uint(y), kGgxAlbedoSize - 2u);
+  const uint z0 = min(uint(z), kDielectricAlbedoEpsSize - 2u);
+  const float tx = x - float(x0), ty = y - float(y0), tz = z - float(z0);
+  float result = 0.0;
+  for (uint dz = 0u; dz < 2u; ++dz) {
+    const uint base = kDielectricAlbedoOffset + ((z0 + dz) * kGgxAlbedoSize + y0) * kGgxAlbedoSize + x0;
+    const float top = mix(brdfTables[base], brdfTables[base + 1u], tx);
+    const float bottom = mix(brdfTables[base + kGgxAlbedoSize], brdfTables[base + kGgxAlbedoSize + 1u], tx);
+    result += (dz == 0u ? 1.0 - tz : tz) * mix(top, bottom, ty);
+  }
+  return result;
+}
+
+// The GGX width seen along w's azimuth, sqrt(alpha_t^2 cos^2 phi + alpha_b^2 sin^2 phi): the width Smith's masking
+// of w sees, at which the isotropic albedo tables stand in for an anisotropic lobe's (at the normal, where phi is
+// undefined, sqrt(alpha_t alpha_b)).
+float openpbrProjectedAlpha(vec2 alpha, vec3 w) {
+  const float s2 = w.x * w.x + w.y * w.y;
+  if (!(s2 > 0.0)) return sqrt(alpha.x * alpha.y);
+  return sqrt((alpha.x * alpha.x * w.x * w.x + alpha.y * alpha.y * w.y * w.y) / s2);
+}
+
+// A GGX dielectric reflection without its colour: F(wo.H) D G1(wi) G1(wo) / (4 cos_i cos_o).
+float openpbrGgxReflection(vec3 wi, vec3 wo, vec3 h, vec2 alpha, float eps) {
+  const float c = clamp(dot(wo, h) * inversesqrt(dot(h, h)), 0.0, 1.0);
+  return openpbrFresnel(c, eps) * D_GGX(h, alpha.x, alpha.y) * G1_GGX(wi, alpha.x, alpha.y) *
+         G1_GGX(wo, alpha.x, alpha.y) / (4.0 * wi.z * wo.z);
+}
+
+// F-82 tint (Kutz, Hasan & Edmondson, "Novel aspects of the Adobe Standard Material", 2021) at cosine mu.
+const float kOpenpbrMuBar = 1.0 / 7.0;
+vec3 openpbrF82B(vec3 F0, vec3 specularColor) {
+  const vec3 atBar = F_Schlick(F0, 1.0 - kOpenpbrMuBar);
+  return atBar * (1.0 - specularColor) / (kOpenpbrMuBar * pow(1.0 - kOpenpbrMuBar, 6.0));
+}
+vec3 openpbrF82(vec3 F0, vec3 b, float mu) {
+  const float m = 1.0 - mu;
+  return clamp(F_Schlick(F0, m) - b * (mu * m * m * m * m * m * m), 0.0, 1.0);
+}
+
+// The metal's multiple scattering (Kulla & Conty 2017, as ggx_conductor), with F_avg of the F82 curve in closed
+// form: 2 integral mu F mu dmu = F0 + (1 - F0)/21 - b/126; E and E_avg from the F = 1 slice of the layering table,
+// whose finer axes keep a white metal's furnace within the table's accuracy at grazing angles.
+vec3 openpbrMetalMultipleScattering(vec3 F0, vec3 b, float weight, vec2 alpha, vec3 wi, vec3 wo) {
+  const float a = sqrt(alpha.x * alpha.y);
+  const float y = sqrt(clamp(a, 0.0, 1.0)) * float(kGgxAlbedoSize - 1u);
+  const uint y0 = min(uint(y), kGgxAlbedoSize - 2u);
+  const float averageLoss = mix(brdfTables[kMirrorAverageLossOffset + y0], brdfTables[kMirrorAverageLossOffset + y0 + 1u],
+                                y - float(y0));
+  if (!(averageLoss > 1e-6)) return vec3(0.0);
+  const float eAvg = 1.0 - averageLoss;
+  const vec3 fAvg = clamp(weight * (F0 + (1.0 - F0) / 21.0 - b / 126.0), 0.0, 1.0);
+  const vec3 fMs = fAvg * fAvg * eAvg / (vec3(1.0) - fAvg * averageLoss);
+  const float lossO = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alpha, wo), 1.0);
+  const float lossI = openpbrDielectricLoss(wi.z, openpbrProjectedAlpha(alpha, wi), 1.0);
+  return fMs * max(lossO * lossI / (kPi * averageLoss), 0.0);
+}
+
+// The hemispherical average 2 integral F(mu) mu dmu of a dielectric's Fresnel term from outside, by the 8-point
+// Gauss-Legendre rule (as conductorAverageFresnel).
+float openpbrAverageFresnelPair(float t, float w, float eps) {
+  const float lo = 0.5 * (1.0 - t), hi = 0.5 * (1.0 + t);
+  return w * (lo * openpbrFresnel(lo, eps) + hi * openpbrFresnel(hi, eps));
+}
+float openpbrAverageFresnel(float eps) {
+  return openpbrAverageFresnelPair(0.1834346424956498, 0.3626837833783620, eps) +
+         openpbrAverageFresnelPair(0.5255324099163290, 0.3137066458778873, eps) +
+         openpbrAverageFresnelPair(0.7966664774136267, 0.2223810344533745, eps) +
+         openpbrAverageFresnelPair(0.9602898564975363, 0.1012285362903763, eps);
+}
+
+// The probabilities of the mixture: (the specular lobes against the cosine lobe, the coat within the specular
+// lobes). Fixed per material: a glossy share for the metal, four times the dielectric's F0 (its reflectance
+// rises towards grazing), a quarter for the coat, against the diffuse albedo.
+vec2 openpbrLobeProbabilities(float baseWeight, vec3 baseColor, float metalness, float specularWeight,
+                              float specularIor, float coatWeight, float coatIor) {
+  const float eps = openpbrSpecularEps(specularWeight, specularIor, coatWeight, coatIor);
+  const float diffuse = (1.0 - metalness) * baseWeight * sum3(baseColor) / 3.0;
+  const float base = metalness + (1.0 - metalness) * min(1.0, 4.0 * eps * eps);
+  const float coat = 0.25 * coatWeight;
+  const float specular = base + coat;
+  return vec2(diffuse + specular > 0.0 ? specular / (diffuse + specular) : 0.5,
+              specular > 0.0 ? coat / specular : 0.0);
+}
+
+vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
+                 vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
+                 float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
+                 float coatDarkening, vec3 wi, vec3 wo) {
+  if (!(wi.z > 0.0 && wo.z > 0.0)) return vec3(0.0);  // one-sided; also false for NaN directions
+  wi = liftOffHorizon(wi);
+  wo = liftOffHorizon(wo);
+  precise const vec3 h = wi + wo;
+  const float C = coatWeight, M = metalness;
+
+  // The base substrate: the glossy-diffuse dielectric and the metal.
+  const float r = openpbrBaseRoughness(specularRoughness, C, coatRoughness);
+  const vec2 alpha = openpbrAlphas(r, specularAnisotropy);
+  const float alphaTable = sqrt(alpha.x * alpha.y);
+  const float eps = openpbrSpecularEps(specularWeight, specularIor, C, coatIor);
+  const vec3 rho = baseWeight * baseColor;
+  const float passed = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
+  const vec3 dielectric = specularColor * openpbrGgxReflection(wi, wo, h, alpha, eps) +
+                          passed * eonEval(rho, diffuseRoughness, wi, wo);
+  const vec3 b = openpbrF82B(rho, specularColor);
+  const float c = clamp(dot(wo, h) * inversesqrt(dot(h, h)), 0.0, 1.0);
+  const vec3 metal = min(specularWeight * openpbrF82(rho, b, c), vec3(1.0)) * (D_GGX(h, alpha.x, alpha.y) *
+                     G1_GGX(wi, alpha.x, alpha.y) * G1_GGX(wo, alpha.x, alpha.y) / (4.0 * wi.z * wo.z)) +
+                     openpbrMetalMultipleScattering(rho, b, specularWeight, alpha, wi, wo);
+  const vec3 substrate = mix(dielectric, metal, M);
+  if (!(C > 0.0)) return substrate;
+
+  // The coat over it.
+  const vec2 alphaCoat = openpbrAlphas(coatRoughness, coatAnisotropy);
+  const float epsCoat = (coatIor - 1.0) / (coatIor + 1.0);
+  const vec3 coat = vec3(openpbrGgxReflection(wi, wo, h, alphaCoat, epsCoat));
+  const float coatPassed = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alphaCoat, wo), epsCoat);  // 1 - E_coat
+  // Absorption along the two paths through the coat, refracted: cos_t^2 = 1 - (1 - cos^2) / coat_ior^2.
+  const float inv2 = 1.0 / (coatIor * coatIor);
+  const float pathLength = 0.5 * (inversesqrt(1.0 - (1.0 - wi.z * wi.z) * inv2) +
+                                  inversesqrt(1.0 - (1.0 - wo.z * wo.z) * inv2));
+  const vec3 T = pow(max(coatColor, vec3(0.0)), vec3(pathLength));
+  // Darkening by the light the coat reflects back onto the base (OpenPBR, "Darkening").
+  vec3 darkening = vec3(1.0);
+  if (coatDarkening > 0.0) {
+    const float eSpecNormal = 1.0 - openpbrDielectricLoss(1.0, alphaTable, eps);
+    const vec3 eBase = mix(specularColor * eSpecNormal + (1.0 - eSpecNormal) * rho, min(specularWeight * rho, vec3(1.0)), M);
+    const float kRough = 1.0 - (1.0 - openpbrAverageFresnel(epsCoat)) * inv2;
+    const float kSmooth = openpbrFresnel(wo.z, epsCoat);
+    const float rDielectric = mix(1.0, specularRoughness, eps * eps);
+    const float K = mix(kSmooth, kRough, mix(rDielectric, specularRoughness, M));
+    // E_b, K <= 1: Delta <= 1, and 0/0 (a white base under a coat that returns everything) is no darkening.
+    const vec3 denominator = vec3(1.0) - eBase * K;
+    const vec3 delta = mix(vec3(1.0), (1.0 - K) / max(denominator, vec3(1e-30)), greaterThan(denominator, vec3(0.0)));
+    darkening = mix(vec3(1.0), delta, C * coatDarkening);
+  }
+  return C * coat + mix(vec3(1.0), T * coatPassed, C) * darkening * substrate;
+}
+
+float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
+                 vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
+                 float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
+                 float coatDarkening, vec3 wi, vec3 wo) {
+  if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
+  wi = liftOffHorizon(wi);
+  wo = liftOffHorizon(wo);
+  const vec2 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
+                                          coatIor);
+  precise const vec3 h = wi + wo;
+  const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, coatWeight, coatRoughness),
+                                   specularAnisotropy);
+  float specular = (1.0 - p.y) * ggxReflectionPdf(h, wo, alpha.x, alpha.y);
+  if (p.y > 0.0) {
+    const vec2 alphaCoat = openpbrAlphas(coatRoughness, coatAnisotropy);
+    specular += p.y * ggxReflectionPdf(h, wo, alphaCoat.x, alphaCoat.y);
+  }
+  return (1.0 - p.x) * cosineHemispherePdf(wi) + p.x * specular;
+}
+
+BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness,
+                         float specularWeight, vec3 specularColor, float specularRoughness, float specularAnisotropy,
+                         float specularIor, float coatWeight, vec3 coatColor, float coatRoughness,
+                         float coatAnisotropy, float coatIor, float coatDarkening, vec3 wo, vec3 u) {
+  if (!(wo.z > 0.0)) return noSample();
+  const vec2 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
+                                          coatIor);
+  vec3 wi;
+  if (u.x < p.x) {
+    // u.y picks the coat or the base and is stretched back to [0, 1) for the visible-normal sampler.
+    const bool coat = u.y < p.y;
+    const vec2 alpha = coat ? openpbrAlphas(coatRoughness, coatAnisotropy)
+                            : openpbrAlphas(openpbrBaseRoughness(specularRoughness, coatWeight, coatRoughness),
+                                            specularAnisotropy);
+    const float v = coat ? u.y / p.y : (u.y - p.y) / (1.0 - p.y);
+    wi = reflectAbout(wo, sampleGgxVisibleNormal(liftOffHorizon(wo), alpha.x, alpha.y, vec2(min(v, 0.99999994), u.z)));
+  } else {
+    wi = sampleCosineHemisphere(u.yz);
+  }
+  if (!(wi.z > 0.0)) return noSample();
+  return acceptSample(wi,
+                      openpbrEval(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
+                                  specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
+                                  coatRoughness, coatAnisotropy, coatIor, coatDarkening, wi, wo),
+                      openpbrPdf(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
+                                 specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
+                                 coatRoughness, coatAnisotropy, coatIor, coatDarkening, wi, wo));
+}
+
+#endif
