@@ -17,6 +17,7 @@ static_assert(std::size(reference::kGgxAlbedoLoss) == gpu::kGgxAlbedoSize * gpu:
 static_assert(std::size(reference::kGgxAverageLoss) == gpu::kGgxAlbedoSize);
 static_assert(std::size(reference::kDielectricAlbedoLoss) == gpu::kDielectricAlbedoFloats);
 static_assert(std::size(reference::kMirrorAverageLoss) == gpu::kGgxAlbedoSize);
+static_assert(std::size(reference::kAverageFresnel) == gpu::kDielectricAlbedoEpsSize);
 
 std::vector<float> brdfTableValues() {
   std::vector<float> values(gpu::kBrdfTableFloats);
@@ -31,6 +32,9 @@ std::vector<float> brdfTableValues() {
   }
   for (std::size_t i = 0; i < std::size(reference::kMirrorAverageLoss); ++i) {
     values[gpu::kMirrorAverageLossOffset + i] = static_cast<float>(reference::kMirrorAverageLoss[i]);
+  }
+  for (std::size_t i = 0; i < std::size(reference::kAverageFresnel); ++i) {
+    values[gpu::kAverageFresnelOffset + i] = static_cast<float>(reference::kAverageFresnel[i]);
   }
   return values;
 }

@@ -59,4 +59,9 @@ double mirrorAverageLoss(double alpha) {
   return (1.0 - y.t) * kMirrorAverageLoss[y.index] + y.t * kMirrorAverageLoss[y.index + 1];
 }
 
+double averageFresnel(double eps) {
+  const Cell z = cellOf(eps, kEpsSize);
+  return (1.0 - z.t) * kAverageFresnel[z.index] + z.t * kAverageFresnel[z.index + 1];
+}
+
 }  // namespace raylab::reference

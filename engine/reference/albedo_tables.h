@@ -13,5 +13,7 @@ double ggxAverageLoss(double alpha);
 double dielectricReflectionLoss(double mu, double alpha, double eps);
 // 1 - E_avg(alpha) of the eps = 1 slice, linear in sqrt(alpha).
 double mirrorAverageLoss(double alpha);
+// 2 integral F(mu) mu dmu of the Fresnel term of index (1 + eps) / (1 - eps), linear in eps.
+double averageFresnel(double eps);
 
 }  // namespace raylab::reference

@@ -129,11 +129,24 @@ int main(int argc, char** argv) {
       }
     }
   }
+  // 2 integral F(mu) mu dmu of each eps's Fresnel term (4096 midpoints): openpbr's coat darkening reads it.
+  std::vector<double> averageFresnel(kEpsSize);
+  for (int k = 0; k < kEpsSize; ++k) {
+    const double eps = epsAt(k), eta = (1.0 + eps) / (1.0 - eps);
+    double sum = 0.0;
+    for (int n = 0; n < 4096; ++n) {
+      const double mu = (n + 0.5) / 4096.0;
+      sum += (eps >= 1.0 ? 1.0 : eps <= 0.0 ? 0.0 : raylab::reference::F_DielectricFromOutside(eta, mu)) * mu;
+    }
+    averageFresnel[k] = 2.0 * sum / 4096.0;
+  }
   std::vector<double> mirrorAverageLoss(kSize);
   for (int i = 0; i < kSize; ++i) {
     mirrorAverageLoss[i] = interpolatedAverageLoss(&dielectric[(std::size_t(kEpsSize - 1) * kSize + i) * kSize]);
   }
-  std::ostringstream values, averages, dielectricValues, mirrorAverages;
+  std::ostringstream values, averages, dielectricValues, mirrorAverages, fresnelAverages;
+  fresnelAverages.precision(9);
+  for (int k = 0; k < kEpsSize; ++k) fresnelAverages << (k ? ", " : "") << averageFresnel[k];
   values.precision(9);
   averages.precision(9);
   dielectricValues.precision(9);
@@ -154,7 +167,9 @@ int main(int argc, char** argv) {
            << "inline constexpr double kDielectricAlbedoLoss[" << dielectric.size() << "] = {" << dielectricValues.str()
            << "};\n"
            << "// 1 - E_avg(alpha) of its eps = 1 slice (F = 1), as the kernels interpolate that slice.\n"
-           << "inline constexpr double kMirrorAverageLoss[" << kSize << "] = {" << mirrorAverages.str() << "};\n\n"
+           << "inline constexpr double kMirrorAverageLoss[" << kSize << "] = {" << mirrorAverages.str() << "};\n"
+           << "// 2 integral F(mu) mu dmu of the Fresnel term of each eps.\n"
+           << "inline constexpr double kAverageFresnel[" << kEpsSize << "] = {" << fresnelAverages.str() << "};\n\n"
            << "}  // namespace raylab::reference\n";
     if (!header) return 1;
   }

@@ -76,22 +76,38 @@ float openpbrFresnel(float c, float eps) {
   return F_DielectricExact(c, 1.0, (1.0 + eps) / (1.0 - eps));
 }
 
-// 1 - E_r(mu, alpha, eps), trilinear in (sqrt(mu), sqrt(alpha), eps) in the build-time table (shared/brdf_tables.h).
+// 1 - E_r in slice z of the build-time table (shared/brdf_tables.h), bilinear at (x, y) in entries. Written out
+// rather than looped: lavapipe compiles every copy of this (five per evaluation), and the straight-line form
+// compiles in a fraction of the time.
+float openpbrLossInSlice(uint z, float x, float y) {
+  const uint x0 = min(uint(x), kGgxAlbedoSize - 2u), y0 = min(uint(y), kGgxAlbedoSize - 2u);
+  const uint i = kDielectricAlbedoOffset + (z * kGgxAlbedoSize + y0) * kGgxAlbedoSize + x0;
+  const float tx = x - float(x0);
+  return mix(mix(brdfTables[i], brdfTables[i + 1u], tx),
+             mix(brdfTables[i + kGgxAlbedoSize], brdfTables[i + kGgxAlbedoSize + 1u], tx), y - float(y0));
+}
+
+// 1 - E_r(mu, alpha, eps), trilinear in (sqrt(mu), sqrt(alpha), eps).
 float openpbrDielectricLoss(float mu, float alpha, float eps) {
   const float last = float(kGgxAlbedoSize - 1u);
   const float x = sqrt(clamp(mu, 0.0, 1.0)) * last, y = sqrt(clamp(alpha, 0.0, 1.0)) * last;
   const float z = clamp(eps, 0.0, 1.0) * float(kDielectricAlbedoEpsSize - 1u);
-  const uint x0 = min(uint(x), kGgxAlbedoSize - 2u), y0 = min(uint(y), kGgxAlbedoSize - 2u);
   const uint z0 = min(uint(z), kDielectricAlbedoEpsSize - 2u);
-  const float tx = x - float(x0), ty = y - float(y0), tz = z - float(z0);
-  float result = 0.0;
-  for (uint dz = 0u; dz < 2u; ++dz) {
-    const uint base = kDielectricAlbedoOffset + ((z0 + dz) * kGgxAlbedoSize + y0) * kGgxAlbedoSize + x0;
-    const float top = mix(brdfTables[base], brdfTables[base + 1u], tx);
-    const float bottom = mix(brdfTables[base + kGgxAlbedoSize], brdfTables[base + kGgxAlbedoSize + 1u], tx);
-    result += (dz == 0u ? 1.0 - tz : tz) * mix(top, bottom, ty);
-  }
-  return result;
+  return mix(openpbrLossInSlice(z0, x, y), openpbrLossInSlice(z0 + 1u, x, y), z - float(z0));
+}
+
+// 1 - E of GGX with F = 1: the table's last slice, bilinear.
+float openpbrMirrorLoss(float mu, float alpha) {
+  const float last = float(kGgxAlbedoSize - 1u);
+  return openpbrLossInSlice(kDielectricAlbedoEpsSize - 1u, sqrt(clamp(mu, 0.0, 1.0)) * last,
+                            sqrt(clamp(alpha, 0.0, 1.0)) * last);
+}
+
+// 2 integral F(mu) mu dmu of the Fresnel term at eps, linear in the table.
+float openpbrAverageFresnel(float eps) {
+  const float z = clamp(eps, 0.0, 1.0) * float(kDielectricAlbedoEpsSize - 1u);
+  const uint z0 = min(uint(z), kDielectricAlbedoEpsSize - 2u);
+  return mix(brdfTables[kAverageFresnelOffset + z0], brdfTables[kAverageFresnelOffset + z0 + 1u], z - float(z0));
 }
 
 // The GGX width seen along w's azimuth, sqrt(alpha_t^2 cos^2 phi + alpha_b^2 sin^2 phi): the width Smith's masking
@@ -134,22 +150,9 @@ vec3 openpbrMetalMultipleScattering(vec3 F0, vec3 b, float weight, vec2 alpha, v
   const float eAvg = 1.0 - averageLoss;
   const vec3 fAvg = clamp(weight * (F0 + (1.0 - F0) / 21.0 - b / 126.0), 0.0, 1.0);
   const vec3 fMs = fAvg * fAvg * eAvg / (vec3(1.0) - fAvg * averageLoss);
-  const float lossO = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alpha, wo), 1.0);
-  const float lossI = openpbrDielectricLoss(wi.z, openpbrProjectedAlpha(alpha, wi), 1.0);
+  const float lossO = openpbrMirrorLoss(wo.z, openpbrProjectedAlpha(alpha, wo));
+  const float lossI = openpbrMirrorLoss(wi.z, openpbrProjectedAlpha(alpha, wi));
   return fMs * max(lossO * lossI / (kPi * averageLoss), 0.0);
-}
-
-// The hemispherical average 2 integral F(mu) mu dmu of a dielectric's Fresnel term from outside, by the 8-point
-// Gauss-Legendre rule (as conductorAverageFresnel).
-float openpbrAverageFresnelPair(float t, float w, float eps) {
-  const float lo = 0.5 * (1.0 - t), hi = 0.5 * (1.0 + t);
-  return w * (lo * openpbrFresnel(lo, eps) + hi * openpbrFresnel(hi, eps));
-}
-float openpbrAverageFresnel(float eps) {
-  return openpbrAverageFresnelPair(0.1834346424956498, 0.3626837833783620, eps) +
-         openpbrAverageFresnelPair(0.5255324099163290, 0.3137066458778873, eps) +
-         openpbrAverageFresnelPair(0.7966664774136267, 0.2223810344533745, eps) +
-         openpbrAverageFresnelPair(0.9602898564975363, 0.1012285362903763, eps);
 }
 
 // The probabilities of the mixture: (the specular lobes against the cosine lobe, the coat within the specular

@@ -14,6 +14,7 @@
 //                                             alpha_i = max(1e-3, (i / (size - 1))^2), eps_k = k / (eps size - 1);
 //                                             its last slice (eps = 1) is GGX with F = 1 on these finer axes
 //   [kMirrorAverageLossOffset, +kGgxAlbedoSize) 1 - E_avg(alpha_i) of that slice, the mean of the interpolant
+//   [kAverageFresnelOffset, +kDielectricAlbedoEpsSize) 2 integral F(mu) mu dmu of the Fresnel term at eps_k
 // The values are computed at build time (engine/reference/ggx_albedo_table.cpp) into generated/ggx_albedo.h.
 //   [kFileDirectoryOffset, +kMaxFileBlocks)   where block b begins, as the bits of a uint: the files the scene uses,
 //                                             in the order the upload numbers them (engine/brdf_tables), from
@@ -47,7 +48,8 @@ RL_CONST uint kDielectricAlbedoEpsSize = 33;
 RL_CONST uint kDielectricAlbedoOffset = kGgxAlbedoAverageOffset + kGgxAlbedoSize;
 RL_CONST uint kDielectricAlbedoFloats = kDielectricAlbedoEpsSize * kGgxAlbedoSize * kGgxAlbedoSize;
 RL_CONST uint kMirrorAverageLossOffset = kDielectricAlbedoOffset + kDielectricAlbedoFloats;
-RL_CONST uint kBrdfTableFloats = kMirrorAverageLossOffset + kGgxAlbedoSize;
+RL_CONST uint kAverageFresnelOffset = kMirrorAverageLossOffset + kGgxAlbedoSize;
+RL_CONST uint kBrdfTableFloats = kAverageFresnelOffset + kDielectricAlbedoEpsSize;
 
 RL_CONST uint kMerlThetaHBins = 90;
 RL_CONST uint kMerlThetaDBins = 90;

@@ -71,6 +71,22 @@ TEST(OpenPbr, TheLayeringTableIsTheAlbedoOfTheReflectionItStandsFor) {
     }
   }
   std::printf("layering table against cubature, off its grid: worst |E_table - E| = %.1e\n", worst);
+  // The coat darkening's hemispherical Fresnel mean, against Gauss-Legendre on 16 points per tenth of [0, 1].
+  double worstMean = 0.0;
+  for (double ior : {1.05, 1.33, 1.6, 2.2, 2.9}) {
+    const double eps = (ior - 1.0) / (ior + 1.0);
+    double mean = 0.0;
+    for (int interval = 0; interval < 10; ++interval) {
+      for (int n = 0; n < 16; ++n) {
+        const double t = std::cos(kPi * (n + 0.5) / 16.0);  // Chebyshev-spaced midpoints, weights from the cosine map
+        const double mu = (interval + 0.5 + 0.5 * t) / 10.0;
+        mean += 2.0 * reference::F_DielectricFromOutside(ior, mu) * mu * (kPi / 16.0) * std::sqrt(1.0 - t * t) * 0.05;
+      }
+    }
+    worstMean = std::max(worstMean, std::abs(reference::averageFresnel(eps) - mean));
+    EXPECT_NEAR(reference::averageFresnel(eps), mean, 2e-4) << "ior " << ior;
+  }
+  std::printf("Fresnel mean table against quadrature: worst %.1e\n", worstMean);
 }
 
 struct FurnaceCase {

@@ -88,18 +88,6 @@ dvec3 metalMultipleScattering(const dvec3& F0, const dvec3& b, double weight, co
   return fMs * std::max(lossO * lossI / (kPi * averageLoss), 0.0);
 }
 
-// 2 integral F(mu) mu dmu of the coat's Fresnel term, by 8-point Gauss-Legendre (the rule the kernels use).
-double averageFresnel(double eps) {
-  constexpr double t[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-  constexpr double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-  double sum = 0.0;
-  for (int n = 0; n < 4; ++n) {
-    const double lo = 0.5 * (1.0 - t[n]), hi = 0.5 * (1.0 + t[n]);
-    sum += w[n] * (lo * fresnel(lo, eps) + hi * fresnel(hi, eps));
-  }
-  return sum;
-}
-
 // The fixed mixture: {specular lobes against the cosine lobe, the coat within the specular lobes}.
 dvec2 lobeProbabilities(const OpenpbrParams& p) {
   const double eps = specularEps(p);
@@ -149,7 +137,7 @@ Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
     // reflects back (OpenPBR, "Darkening").
     const double eSpecNormal = 1.0 - dielectricReflectionLoss(1.0, alphaTable, eps);
     const dvec3 eBase = (1.0 - M) * (p.specular_color * eSpecNormal + (1.0 - eSpecNormal) * rho) + M * glm::min(p.specular_weight * rho, dvec3(1.0));
-    const double kRough = 1.0 - (1.0 - averageFresnel(epsCoat)) / (p.coat_ior * p.coat_ior);
+    const double kRough = 1.0 - (1.0 - averageFresnel(epsCoat)) / (p.coat_ior * p.coat_ior);  // the table's E_F
     const double kSmooth = fresnel(wo.z, epsCoat);
     const double roughnessEstimate = (1.0 - M) * ((1.0 - eps * eps) + eps * eps * p.specular_roughness) + M * p.specular_roughness;
     const double K = (1.0 - roughnessEstimate) * kSmooth + roughnessEstimate * kRough;
