@@ -71,7 +71,8 @@ TEST(OpenPbr, TheLayeringTableIsTheAlbedoOfTheReflectionItStandsFor) {
     }
   }
   std::printf("layering table against cubature, off its grid: worst |E_table - E| = %.1e\n", worst);
-  // The coat darkening's hemispherical Fresnel mean, against Gauss-Legendre on 16 points per tenth of [0, 1].
+  // The coat darkening's hemispherical Fresnel mean, against Gauss-Chebyshev on 16 points per tenth of [0, 1]. The
+  // table is linear between its 33 values of eps, and the mean is about eps^2: (1/32)^2 / 8 x 2 ~ 2.4e-4 between them.
   double worstMean = 0.0;
   for (double ior : {1.05, 1.33, 1.6, 2.2, 2.9}) {
     const double eps = (ior - 1.0) / (ior + 1.0);
@@ -84,7 +85,7 @@ TEST(OpenPbr, TheLayeringTableIsTheAlbedoOfTheReflectionItStandsFor) {
       }
     }
     worstMean = std::max(worstMean, std::abs(reference::averageFresnel(eps) - mean));
-    EXPECT_NEAR(reference::averageFresnel(eps), mean, 2e-4) << "ior " << ior;
+    EXPECT_NEAR(reference::averageFresnel(eps), mean, 5e-4) << "ior " << ior;
   }
   std::printf("Fresnel mean table against quadrature: worst %.1e\n", worstMean);
 }
