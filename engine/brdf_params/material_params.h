@@ -46,6 +46,14 @@ struct Preset {
   std::vector<PresetValue> values;
 };
 
+// A part of a model a scene compiles only when one of its materials uses it (`// feature: coat coat_weight`):
+// when `param` > 0. `bit` is its kSpecFeatures bit (shared/features.h), from 1 << 16 up.
+struct ModelFeature {
+  std::string_view name;   // "coat"
+  std::string_view param;  // "coat_weight"
+  std::uint32_t bit;
+};
+
 struct ModelInfo {
   std::string_view name;  // "cooktorrance"
   std::uint32_t id;       // the registry's order
@@ -61,6 +69,7 @@ struct ModelInfo {
   // Why `raylab brdf fit` fits the model only when it is named (`// fit: by name, ...`), or empty: it is among the
   // models a fit tries by default.
   std::string_view fitByName;
+  std::vector<ModelFeature> features;  // its `feature:` lines
 };
 
 // The registry's table (generated: brdf_model_table.cpp), in id order.

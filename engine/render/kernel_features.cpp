@@ -16,6 +16,9 @@ KernelFeatures featuresOf(const Scene& scene) {
     if (material.record.delta > 0.0f) f.features |= gpu::kFeatureMirror;
     if (material.record.textures >= 0) f.features |= gpu::kFeatureTextures;
     if (hasAlpha(scene, material.record)) f.features |= gpu::kFeatureAlpha;
+    for (const ModelFeature& feature : modelInfo(material.record.model).features) {
+      if (getParam(material.record, feature.param).x > 0.0f) f.features |= feature.bit;
+    }
   }
   if (scene.environment.hasImage()) f.features |= gpu::kFeatureEnvironment;
   f.lightKinds = lightKindsOf(scene);
@@ -58,6 +61,15 @@ std::string describe(const KernelFeatures& features) {
   std::string list;
   for (const Named& named : kNames) {
     if (features.features & named.bit) list += (list.empty() ? "" : ", ") + std::string(named.name);
+  }
+  if (features.features != gpu::kAllFeatures) {
+    for (const ModelInfo& model : allModels()) {
+      for (const ModelFeature& feature : model.features) {
+        if (features.features & feature.bit) {
+          list += (list.empty() ? "" : ", ") + std::string(model.name) + " " + std::string(feature.name);
+        }
+      }
+    }
   }
   for (std::uint32_t kind = 0; kind < gpu::kLightKindCount; ++kind) {
     if (features.lightKinds & (1u << kind)) list += (list.empty() ? "" : ", ") + std::string(gpu::kLightKindNames[kind]) + " lights";

@@ -1,5 +1,6 @@
 // OpenPBR Surface 1.1.1: a metal and a glossy-diffuse dielectric mixed by metalness, under a coat.
 // lobes: reflection diffuse glossy
+// feature: coat coat_weight
 // fit: by name, its layers give one look many ways: which of them a fit frees is not yet designed (issue 38)
 // reciprocal: no, albedo scaling by 1 - E(wo) conserves energy but weighs wo and wi differently (OpenPBR)
 // look: base_color=0.8/0.25/0.1, specular_roughness=0.35, coat_weight=1, coat_roughness=0.05
@@ -29,11 +30,13 @@
 //   f_metal = F_82(wo.H) D G / (4 cos_i cos_o) + Kulla & Conty's multiple scattering,
 // C = coat_weight, M = base_metalness, delta = coat_darkening. f_spec and f_coat are GGX dielectric reflections
 // (separable Smith G, exact Fresnel F(wo.H)); E_spec and E_coat their directional albedos, read from a build-time
-// table (shared/brdf_tables.h) at the width the lobe has along wo's azimuth. The specular index is eta_s = lerp(specular_ior, specular_ior / coat_ior, C),
-// taken as 1 / eta_s below 1 (no total internal reflection under the coat: a ray inside the coat never reaches
-// the base beyond the critical angle); specular_weight scales its F0: eps = sqrt(min(1, specular_weight F0)),
+// table (shared/brdf_tables.h) at the width the lobe has along wo's azimuth. The specular index is
+// eta_s = lerp(specular_ior, specular_ior / coat_ior, C), taken as 1 / eta_s below 1 (no total internal reflection
+// under the coat: a ray inside the coat never reaches the base beyond the critical angle); specular_weight scales
+// its F0: eps = sqrt(min(1, specular_weight F0)),
 // eta' = (1 + eps) / (1 - eps). Metal (F82-tint, Kutz et al. 2021): F0 = base_weight base_color, F_s = Schlick,
-// b = F_s(1/7) (1 - specular_color) / ((1/7)(6/7)^6), F_82 = min(1, specular_weight clamp(F_s(mu) - b mu (1 - mu)^6, 0, 1)).
+// b = F_s(1/7) (1 - specular_color) / ((1/7)(6/7)^6),
+// F_82 = min(1, specular_weight clamp(F_s(mu) - b mu (1 - mu)^6, 0, 1)).
 // Anisotropy: alpha_t = r^2 sqrt(2 / (1 + (1 - a)^2)), alpha_b = (1 - a) alpha_t, each at least 0.001. Coat:
 // view-dependent absorption T = coat_color^((1/mu_i^t + 1/mu_o^t) / 2) with the cosines refracted into the coat,
 // roughening of the base r' = lerp(r, min(1, r^4 + 2 r_c^4)^(1/4), C), and darkening
@@ -177,7 +180,8 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
   precise const vec3 h = wi + wo;
-  const float C = coatWeight, M = metalness;
+  // A scene without a coat compiles none: C is then the constant 0, and the coat's code folds away.
+  const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0, M = metalness;
 
   // The base substrate: the glossy-diffuse dielectric and the metal.
   const float r = openpbrBaseRoughness(specularRoughness, C, coatRoughness);
@@ -230,6 +234,7 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
   if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
+  coatWeight = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;  // as in openpbrEval
   const vec2 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
                                           coatIor);
   precise const vec3 h = wi + wo;
@@ -248,6 +253,7 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                          float specularIor, float coatWeight, vec3 coatColor, float coatRoughness,
                          float coatAnisotropy, float coatIor, float coatDarkening, vec3 wo, vec3 u) {
   if (!(wo.z > 0.0)) return noSample();
+  coatWeight = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;  // as in openpbrEval
   const vec2 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
                                           coatIor);
   vec3 wi;

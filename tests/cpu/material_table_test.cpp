@@ -12,6 +12,7 @@
 #include <regex>
 #include <sstream>
 
+#include "shared/features.h"
 #include "brdf_params/material_params.h"
 #include "util/error.h"
 
@@ -206,6 +207,25 @@ TEST(MaterialTable, OnlyALayeredModelsParametersHaveLayers) {
   EXPECT_EQ(paramLayer(conductor, *findParam(conductor, "alpha_x")), "") << "alpha_x and alpha_y alone are no layers";
   const ModelInfo& ward = *findModel("ward");
   EXPECT_EQ(paramLayer(ward, *findParam(ward, "rho_d")), "") << "Ward's pairs rho_ and alpha_ are no layers";
+}
+
+// A model's `feature:` lines take kSpecFeatures bits above the integrators' fixed ones, each its own.
+TEST(MaterialTable, ModelFeaturesHaveTheirOwnBitsAboveTheFixedFeatures) {
+  std::uint32_t seen = 0;
+  for (const ModelInfo& model : allModels()) {
+    for (const ModelFeature& feature : model.features) {
+      EXPECT_GE(feature.bit, 1u << gpu::kFirstModelFeatureBit) << model.name << " " << feature.name;
+      EXPECT_EQ(seen & feature.bit, 0u) << model.name << " " << feature.name << " shares a bit";
+      seen |= feature.bit;
+      const ParamInfo* param = findParam(model, feature.param);
+      ASSERT_NE(param, nullptr) << model.name << " " << feature.name;
+      EXPECT_FALSE(param->rgb);
+    }
+  }
+  const ModelInfo& openpbr = *findModel("openpbr");
+  ASSERT_EQ(openpbr.features.size(), 1u);
+  EXPECT_EQ(openpbr.features[0].name, "coat");
+  EXPECT_EQ(openpbr.features[0].param, "coat_weight");
 }
 
 }  // namespace
