@@ -289,6 +289,18 @@ gpu::TextureRef convertTextureUse(const json& info, const std::string& where, Do
 // A base-colour texture multiplies the model's diffuse colour (MaterialRecord::diffuseParam).
 bool hasDiffuseColour(std::uint32_t model) { return findRole(modelInfo(model), "diffuse") != nullptr; }
 
+// A KHR_materials_ior index for `param` of `model`: as it is, or its table's largest (with a warning saying so).
+// The model's formula holds for any index; its table stops where common dielectrics end.
+float indexWithin(float ior, const gpu::MaterialRecord& record, std::string_view param, const std::string& where) {
+  const ModelInfo& model = modelInfo(record.model);
+  const float iorMax = findParam(model, param)->max;
+  if (ior > iorMax) {
+    warn(where + ": KHR_materials_ior.ior = " + formatNumber(ior) + " is above " + std::string(model.name) + "'s " +
+         formatNumber(iorMax) + "; using " + formatNumber(iorMax));
+  }
+  return std::min(ior, iorMax);
+}
+
 // KHR_materials_clearcoat onto openpbr: the core factors as its base and the coat as its coat. The extension's coat
 // is a dielectric of index 1.5 whose Fresnel term scales the base below it, with no internal reflections:
 // openpbr's coat with coat_darkening 0 (albedo scaling alone). KHR_materials_specular's factors go to
@@ -299,12 +311,8 @@ gpu::MaterialRecord mapClearcoat(const MetallicRoughness& input, const std::stri
   setParam(record, "base_color", input.baseColor, mapped);
   setParam(record, "base_metalness", glm::vec3(input.metallic), mapped);
   setParam(record, "specular_roughness", glm::vec3(input.roughness), mapped);
-  const float iorMax = findParam(modelInfo(record.model), "specular_ior")->max;
-  if (input.ior > iorMax) {
-    warn(where + ": KHR_materials_ior.ior = " + formatNumber(input.ior) + " is above openpbr's " +
-         formatNumber(iorMax) + "; using " + formatNumber(iorMax));
-  }
-  setParam(record, "specular_ior", glm::vec3(std::min(input.ior, iorMax)), where + " (KHR_materials_ior)");
+  setParam(record, "specular_ior", glm::vec3(indexWithin(input.ior, record, "specular_ior", where)),
+           where + " (KHR_materials_ior)");
   setParam(record, "specular_weight", glm::vec3(input.specular), where + " (KHR_materials_specular)");
   setParam(record, "specular_color", glm::min(input.specularColor, glm::vec3(1.0f)), where + " (KHR_materials_specular)");
   setParam(record, "coat_weight", glm::vec3(input.clearcoat), where + " (KHR_materials_clearcoat)");
@@ -340,13 +348,8 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
   setParam(record, "base_color", input.baseColor, mapped);
   setParam(record, "metallic", glm::vec3(input.metallic), mapped);
   setParam(record, "roughness", glm::vec3(input.roughness), mapped);
-  // The model's f0 formula holds for any ior; its table stops at 3 (f0 = 0.25), beyond any common dielectric.
-  const float iorMax = findParam(modelInfo(record.model), "ior")->max;
-  if (input.ior > iorMax) {
-    warn(where + ": KHR_materials_ior.ior = " + formatNumber(input.ior) + " is above gltf_pbr's " +
-         formatNumber(iorMax) + "; using " + formatNumber(iorMax));
-  }
-  setParam(record, "ior", glm::vec3(std::min(input.ior, iorMax)), where + " (KHR_materials_ior)");
+  // gltf_pbr's table stops at 3 (f0 = 0.25), beyond any common dielectric.
+  setParam(record, "ior", glm::vec3(indexWithin(input.ior, record, "ior", where)), where + " (KHR_materials_ior)");
   setParam(record, "specular", glm::vec3(input.specular), where + " (KHR_materials_specular)");
   // The colour reaches F0 only through min(f0 colour, 1); the model's largest colour, 25, already lifts the default
   // ior's f0 of 0.04 to 1. Larger colours (valid glTF) are used as the largest, with a warning.

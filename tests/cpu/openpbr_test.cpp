@@ -35,8 +35,8 @@ using reference::Material;
 
 constexpr double kDegree = kPi / 180.0;
 
-// The table is bilinear in (sqrt(mu), alpha) and linear in eps between entries; its entries come from 48 x 48
-// stratified samples. Measured below: the worst off-grid error over the cases is printed, and this bound is what
+// The table is bilinear in (sqrt(mu), sqrt(alpha)) and linear in eps between entries; its entries come from 64 x 64
+// visible-normal samples, densest at the disk's rim. Measured below: the worst off-grid error over the cases is printed, and this bound is what
 // a furnace can be off by through the table.
 constexpr double kTableTolerance = 4e-3;
 // An anisotropic lobe's albedo is read from the isotropic tables at the width along wo's azimuth (Smith's masking
