@@ -324,7 +324,12 @@ NbrdfNetwork readWeightsIsolated(const std::string& weightBytes, const std::vect
 
 }  // namespace
 
-bool isNbrdfPath(const std::string& path) { return std::filesystem::path(path).extension() == ".h5"; }
+// Whatever the case of the extension (NAME.H5 too): a network named as a MERL file would be read as one.
+bool isNbrdfPath(const std::string& path) {
+  const std::string extension = std::filesystem::path(path).extension().string();
+  return extension.size() == 3 && extension[0] == '.' && (extension[1] == 'h' || extension[1] == 'H') &&
+         extension[2] == '5';
+}
 
 NbrdfNetwork decodeNbrdf(const std::string& weightBytes, const std::string& architectureText,
                          const std::string& where) {

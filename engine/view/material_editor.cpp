@@ -10,6 +10,7 @@
 
 #include "brdf_params/material_params.h"
 #include "measured/measured_library.h"
+#include "measured/nbrdf.h"
 #include "util/error.h"
 #include "view_logic/scene_edits.h"
 
@@ -59,7 +60,8 @@ std::vector<std::string> measuredCandidates(std::string_view role) {
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
       if (files.size() >= kMaxListed) break;
-      if (entry.path().extension() == extension && entry.is_regular_file(error)) {
+      const bool kind = role == "network" ? isNbrdfPath(entry.path().string()) : entry.path().extension() == extension;
+      if (kind && entry.is_regular_file(error)) {
         files.insert(std::filesystem::absolute(entry.path()).lexically_normal().string());
       }
     }

@@ -46,6 +46,13 @@ TEST(Nbrdf, ReadsTheWeightsHdf5WroteInTheKerasLayout) {
   const NbrdfNetwork written = testNetwork(1);
   writeKerasFiles(path, kerasLayers(written), kerasArchitecture());
   EXPECT_EQ(readNbrdf(path).weights, written.weights);
+  // The extension's case does not matter: NAME.H5 is a network too, never read as a MERL file.
+  const std::string upper = scratch("RANDOM.H5");
+  writeKerasFiles(upper, kerasLayers(written), kerasArchitecture());
+  EXPECT_TRUE(isNbrdfPath(upper));
+  EXPECT_EQ(readNbrdf(upper).weights, written.weights);
+  EXPECT_FALSE(isNbrdfPath(scratch("a.binary")));
+  EXPECT_FALSE(isNbrdfPath(scratch("a.h55")));
 }
 
 // The input is the MERL reader's (merl.cpp rotates by Rodrigues' formula; nbrdf.cpp by the turned components).
