@@ -123,10 +123,16 @@ float openpbrProjectedAlpha(vec2 alpha, vec3 w) {
 }
 
 // A GGX dielectric reflection without its colour: F(wo.H) D G1(wi) G1(wo) / (4 cos_i cos_o).
+// wo.H, clamped to [0, 1]: the cosine every Fresnel term of the model takes.
+float openpbrCosineToHalfVector(vec3 wo, vec3 h) { return clamp(dot(wo, h) * inversesqrt(dot(h, h)), 0.0, 1.0); }
+
+// D G1(wi) G1(wo) / (4 cos_i cos_o) of a GGX lobe: the dielectric reflections' and the metal's.
+float openpbrMicrofacet(vec3 wi, vec3 wo, vec3 h, vec2 alpha) {
+  return D_GGX(h, alpha.x, alpha.y) * G1_GGX(wi, alpha.x, alpha.y) * G1_GGX(wo, alpha.x, alpha.y) / (4.0 * wi.z * wo.z);
+}
+
 float openpbrGgxReflection(vec3 wi, vec3 wo, vec3 h, vec2 alpha, float eps) {
-  const float c = clamp(dot(wo, h) * inversesqrt(dot(h, h)), 0.0, 1.0);
-  return openpbrFresnel(c, eps) * D_GGX(h, alpha.x, alpha.y) * G1_GGX(wi, alpha.x, alpha.y) *
-         G1_GGX(wo, alpha.x, alpha.y) / (4.0 * wi.z * wo.z);
+  return openpbrFresnel(openpbrCosineToHalfVector(wo, h), eps) * openpbrMicrofacet(wi, wo, h, alpha);
 }
 
 // F-82 tint (Kutz, Hasan & Edmondson, "Novel aspects of the Adobe Standard Material", 2021) at cosine mu.
@@ -193,9 +199,8 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
   const vec3 dielectric = specularColor * openpbrGgxReflection(wi, wo, h, alpha, eps) +
                           passed * eonEval(rho, diffuseRoughness, wi, wo);
   const vec3 b = openpbrF82B(rho, specularColor);
-  const float c = clamp(dot(wo, h) * inversesqrt(dot(h, h)), 0.0, 1.0);
-  const vec3 metal = min(specularWeight * openpbrF82(rho, b, c), vec3(1.0)) * (D_GGX(h, alpha.x, alpha.y) *
-                     G1_GGX(wi, alpha.x, alpha.y) * G1_GGX(wo, alpha.x, alpha.y) / (4.0 * wi.z * wo.z)) +
+  const vec3 metal = min(specularWeight * openpbrF82(rho, b, openpbrCosineToHalfVector(wo, h)), vec3(1.0)) *
+                         openpbrMicrofacet(wi, wo, h, alpha) +
                      openpbrMetalMultipleScattering(rho, b, specularWeight, alpha, wi, wo);
   const vec3 substrate = mix(dielectric, metal, M);
   if (!(C > 0.0)) return substrate;
