@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 
 namespace raylab::fitting {
@@ -10,7 +11,7 @@ void applyVariables(const std::vector<Variable>& variables, const double* x, ref
   for (std::size_t i = 0; i < variables.size(); ++i) {
     const Variable& v = variables[i];
     const double clamped = std::clamp(x[i], v.lo, v.hi);  // finite differences may step past a bound
-    const double value = v.log ? std::exp(clamped) : clamped;
+    const double value = v.log ? std::exp(clamped) : v.wideScale > 0.0 ? v.wideScale * std::expm1(clamped) : clamped;
     for (std::uint32_t slot : v.slots) material.params[slot] = value;
   }
 }
@@ -118,6 +119,84 @@ bool jointlyLinear(const ModelPlan& plan, const std::vector<std::array<int, 3>>&
   return true;
 }
 
+// The nonlinear variables that f depends on only through linear group `group`: with the group's amounts at 0,
+// changing one of them changes f on no pair tried, and with only this group's amounts non-zero it changes f on some
+// (the second test keeps another lobe's variables out where the draws left that lobe dark: Lafortune's first lobe is
+// 0 for every Cz < 0).
+std::vector<int> privateVariables(const ModelPlan& plan, int group) {
+  std::mt19937_64 random(54321);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const auto direction = [&] {
+    const double z = 0.15 + 0.85 * uniform(random), phi = 6.283185307179586 * uniform(random);
+    const double r = std::sqrt(1.0 - z * z);
+    return glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
+  };
+  // Whether changing variable j moves f somewhere, with the linear groups' amounts drawn where `active` says and 0
+  // elsewhere.
+  const auto moves = [&](int j, const std::function<bool(int)>& active) {
+    for (int trial = 0; trial < 16; ++trial) {
+      std::vector<double> x;
+      for (const Variable& v : plan.variables) x.push_back(v.lo + (v.hi - v.lo) * uniform(random));
+      for (std::size_t g = 0; g < plan.linear.size(); ++g) {
+        if (active(int(g))) continue;
+        for (int c = 0; c < 3; ++c) x[std::size_t(plan.linear[g].variables[std::size_t(c)])] = 0.0;
+      }
+      std::vector<double> moved = x;
+      const Variable& v = plan.variables[std::size_t(j)];
+      moved[std::size_t(j)] = v.lo + (v.hi - v.lo) * uniform(random);
+      reference::Material a = plan.base, b = plan.base;
+      applyVariables(plan.variables, x.data(), a);
+      applyVariables(plan.variables, moved.data(), b);
+      for (int p = 0; p < 16; ++p) {
+        const glm::dvec3 wi = direction(), wo = direction();
+        const glm::dvec3 fa = reference::eval(a, wi, wo), fb = reference::eval(b, wi, wo);
+        for (int c = 0; c < 3; ++c) {
+          if (!(fa[c] == fb[c])) return true;
+        }
+      }
+    }
+    return false;
+  };
+  std::vector<int> found;
+  for (int j : plan.nonlinear) {
+    if (!moves(j, [&](int g) { return g != group; }) && moves(j, [&](int g) { return g == group; })) {
+      found.push_back(j);
+    }
+  }
+  return found;
+}
+
+// The one channel of f variable j moves, or -1 (several, or none seen): stepped at random points of the box, f
+// changes only in that channel on every pair tried.
+int channelOf(const ModelPlan& plan, int j) {
+  std::mt19937_64 random(777u + std::uint64_t(j));
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const auto direction = [&] {
+    const double z = 0.15 + 0.85 * uniform(random), phi = 6.283185307179586 * uniform(random);
+    const double r = std::sqrt(1.0 - z * z);
+    return glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
+  };
+  int mask = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    std::vector<double> x;
+    for (const Variable& v : plan.variables) x.push_back(v.lo + (v.hi - v.lo) * (0.05 + 0.9 * uniform(random)));
+    std::vector<double> moved = x;
+    const Variable& v = plan.variables[std::size_t(j)];
+    moved[std::size_t(j)] += (v.hi - v.lo) * (uniform(random) < 0.5 ? -0.03 : 0.03);
+    reference::Material a = plan.base, b = plan.base;
+    applyVariables(plan.variables, x.data(), a);
+    applyVariables(plan.variables, moved.data(), b);
+    for (int p = 0; p < 16; ++p) {
+      const glm::dvec3 wi = direction(), wo = direction();
+      const glm::dvec3 fa = reference::eval(a, wi, wo), fb = reference::eval(b, wi, wo);
+      for (int c = 0; c < 3; ++c) {
+        if (!(fa[c] == fb[c])) mask |= 1 << c;  // NaN counts as a change
+      }
+    }
+  }
+  return mask == 1 ? 0 : mask == 2 ? 1 : mask == 4 ? 2 : -1;
+}
+
 }  // namespace
 
 ModelPlan planOf(const ModelInfo& model, bool isotropic) {
@@ -167,6 +246,37 @@ ModelPlan planOf(const ModelInfo& model, bool isotropic) {
         plan.nonlinearColours.push_back({int(i), int(i + 1), int(i + 2)});
       }
     }
+  }
+  // A nonlinear parameter from 0 over at least kWideRange: fitted in t = log(1 + value / kWideScale) (Variable).
+  // Drawn uniformly in its own scale, SGD's shadowing c in [0, 1e38] was above 1e30 in 99 of 100 search points.
+  constexpr double kWideRange = 1e6, kWideScale = 1e-9;
+  for (int j : plan.nonlinear) {
+    Variable& v = plan.variables[std::size_t(j)];
+    if (v.log || v.lo != 0.0 || !(v.hi >= kWideRange)) continue;
+    v.wideScale = kWideScale;
+    v.hi = std::log1p(v.hi / kWideScale);
+    v.start = std::log1p(v.start / kWideScale);
+  }
+  // Difference groups: a variable that moves one channel joins the first group with no variable of that channel.
+  for (std::size_t j = 0; j < plan.variables.size(); ++j) {
+    plan.variables[j].channel = channelOf(plan, int(j));
+    const int channel = plan.variables[j].channel;
+    bool placed = false;
+    for (std::vector<int>& group : plan.diffGroups) {
+      if (channel < 0) break;
+      bool free = true;
+      for (int k : group) free &= plan.variables[std::size_t(k)].channel >= 0 && plan.variables[std::size_t(k)].channel != channel;
+      if (free) {
+        group.push_back(int(j));
+        placed = true;
+        break;
+      }
+    }
+    if (!placed) plan.diffGroups.push_back({int(j)});
+  }
+  for (std::size_t g = 0; g < plan.linear.size(); ++g) {
+    std::vector<int> own = privateVariables(plan, int(g));
+    if (!own.empty()) plan.lobes.push_back({int(g), std::move(own)});
   }
   for (const std::string_view role : {"roughness", "slope", "slope_x", "exponent", "exponent_x", "mirror_exponent"}) {
     const ParamInfo* param = findRole(model, role);

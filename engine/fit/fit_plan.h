@@ -18,9 +18,13 @@ namespace raylab::fitting {
 struct Variable {
   std::vector<std::uint32_t> slots;
   bool log = false;
+  // > 0: a parameter from 0 over many decades (SGD's shadowing lambda in [0, 1e8] and c in [0, 1e38]), fitted as
+  // t = log(1 + value / wideScale): log-like above wideScale, and 0 (no shadowing) still in range.
+  double wideScale = 0.0;
   double lo = 0.0, hi = 1.0;  // in the variable's space
   double start = 0.0;         // the default
   int linearGroup = -1;       // >= 0: a channel of a parameter that enters f linearly (LinearGroup)
+  int channel = -1;           // >= 0: the one channel of f the variable moves (an RGB parameter's channel)
 };
 
 // An RGB parameter whose channel c enters channel c of f linearly, f = h + a g, jointly with the model's other
@@ -44,6 +48,18 @@ struct ModelPlan {
   // The variable of the lobe's width (roughness, slope, exponent), if the model has one: the search spreads its
   // starts over its range (fit_search.cpp), so that a narrow highlight gets a start even when wide lobes score best.
   int width = -1;
+  // The lobes: a linear group (a lobe's weight) and the nonlinear variables f depends on only through it (its axis,
+  // width, Fresnel: nothing changes when the weight is 0), found by evaluating. A fit can end with a lobe unused,
+  // its weight 0 and its shape wherever it was drawn, which Levenberg-Marquardt cannot regrow (no gradient); the
+  // lobe search (fit_search.cpp) draws its shape again with the rest held.
+  struct Lobe {
+    int group = -1;              // into linear
+    std::vector<int> variables;  // its own nonlinear variables
+  };
+  std::vector<Lobe> lobes;
+  // The variables in groups for the Jacobian's differences: each group's variables move different single channels
+  // of f, so one evaluation with all of them stepped gives each one's column (fit.cpp, BlockCost).
+  std::vector<std::vector<int>> diffGroups;
   bool narrowIsLow = true;  // roughness and slopes: narrow lobes have low values; exponents: high
   reference::Material base;
 };

@@ -210,6 +210,62 @@ std::vector<double> channelSearch(const FitTarget& coarse, const ModelPlan& plan
   return repaired;
 }
 
+std::vector<double> lobeSearch(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric,
+                               const std::vector<double>& x, int points, std::mt19937_64& random) {
+  // Below this share of the model's reflected light (sum of w cos |f| over the pairs and channels) a lobe is unused.
+  constexpr double kUnusedShare = 1e-3;
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<const FitPair*> pairs;
+  for (const FitPair& pair : coarse.pairs) pairs.push_back(&pair);
+  const int cycles = plan.blocks.size() > 1 ? 3 : 1;
+  std::vector<double> current = x;
+  bool regrown = false;
+  for (const ModelPlan::Lobe& lobe : plan.lobes) {
+    reference::Material with = plan.base, without = plan.base;
+    applyVariables(plan.variables, current.data(), with);
+    std::vector<double> zeroed = current;
+    for (int c = 0; c < 3; ++c) zeroed[std::size_t(plan.linear[std::size_t(lobe.group)].variables[std::size_t(c)])] = 0.0;
+    applyVariables(plan.variables, zeroed.data(), without);
+    double share = 0.0, total = 0.0;
+    for (const FitPair* pair : pairs) {
+      const glm::dvec3 f = reference::eval(with, pair->wi, pair->wo);
+      const glm::dvec3 g = reference::eval(without, pair->wi, pair->wo);
+      for (int c = 0; c < 3; ++c) {
+        if (!std::isfinite(f[c]) || !std::isfinite(g[c])) continue;
+        share += pair->weight * pair->wi.z * std::abs(f[c] - g[c]);
+        total += pair->weight * pair->wi.z * std::abs(f[c]);
+      }
+    }
+    if (!(share < kUnusedShare * total)) continue;
+    // A Latin hypercube of the lobe's own variables, as the search's (searchBasins).
+    const std::size_t n = lobe.variables.size();
+    std::vector<std::vector<int>> strata(n);
+    for (auto& s : strata) {
+      for (int p = 0; p < points; ++p) s.push_back(p);
+      std::shuffle(s.begin(), s.end(), random);
+    }
+    double bestCost = INFINITY;
+    std::vector<double> best;
+    for (int p = 0; p < points; ++p) {
+      std::vector<double> trial = current;
+      for (std::size_t j = 0; j < n; ++j) {
+        const Variable& v = plan.variables[std::size_t(lobe.variables[j])];
+        trial[std::size_t(lobe.variables[j])] = v.lo + (v.hi - v.lo) * (strata[j][std::size_t(p)] + uniform(random)) / points;
+      }
+      const double cost = solvedCost(pairs, plan, metric, cycles, trial);
+      if (cost < bestCost) {
+        bestCost = cost;
+        best = std::move(trial);
+      }
+    }
+    if (!best.empty()) {
+      current = std::move(best);
+      regrown = true;
+    }
+  }
+  return regrown ? current : std::vector<double>{};
+}
+
 // The pairs the search and the first LM solves use: every k-th of the target's, about kSearchPairs.
 FitTarget coarseTarget(const FitTarget& target) {
   FitTarget coarse;
@@ -287,18 +343,25 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
   };
   // The best distinct points come from the box's hypercube alone; the grey one is added below: the grey draws crowd
   // the low indices that score well on a coarse slice of a metal, and a gold's own, non-grey basin was lost.
+  // A model whose every nonlinear variable is a colour's channel (SGD's shape, Fresnel and shadowing per channel: 24
+  // dimensions) gets one start from the box and the rest grey: in its box no start lands near any basin.
+  std::size_t colourChannels = 0;
+  for (const std::array<int, 3>& colour : plan.nonlinearColours) colourChannels += colour.size();
+  const bool allColour = !plan.nonlinear.empty() && colourChannels == plan.nonlinear.size();
+  const int boxStarts = allColour ? 1 : starts;
+  const int greyStarts = plan.nonlinearColours.empty() ? 0 : allColour ? std::max(1, starts - 1) : 1;
   for (const Scored& candidate : scored) {
-    if (int(chosen.size()) == starts) break;
+    if (int(chosen.size()) == boxStarts) break;
     if (!candidate.grey && distinct(candidate)) chosen.push_back(candidate);
   }
   // And the best grey point: its channels start in one basin together, which Levenberg-Marquardt, moving them one
   // at a time, does not reach from a wrong one (a plastic's blue channel fitted as a perfect mirror, eta 0.01, k 20).
-  if (!plan.nonlinearColours.empty()) {
-    for (const Scored& candidate : scored) {
-      if (candidate.grey && distinct(candidate)) {
-        chosen.push_back(candidate);
-        break;
-      }
+  int grey = 0;
+  for (const Scored& candidate : scored) {
+    if (grey == greyStarts) break;
+    if (candidate.grey && distinct(candidate)) {
+      chosen.push_back(candidate);
+      ++grey;
     }
   }
   // Then, unless one of the hypercube's starts has it already, the best point in the narrowest quarter of

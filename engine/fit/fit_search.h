@@ -37,6 +37,12 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
 std::vector<double> channelSearch(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric,
                                                  const std::vector<double>& x);
 
+// A start with each unused lobe of `x` drawn again (plan.lobes: a lobe whose share of f on the coarse pairs is under
+// 1e-3): `points` points of a Latin hypercube over the lobe's own variables with the rest held, the linear blocks
+// solved at each; the best point. Empty when every lobe is in use.
+std::vector<double> lobeSearch(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric,
+                               const std::vector<double>& x, int points, std::mt19937_64& random);
+
 // min over lo <= a <= hi of a'Aa - 2 b'a for A (n x n, row-major) positive semi-definite and small n.
 std::vector<double> boxLeastSquares(const std::vector<double>& A, const std::vector<double>& b,
                                     const std::vector<double>& lo, const std::vector<double>& hi);

@@ -10,7 +10,7 @@
 // | a         | [0, 100000]   | 100     | rgb specular | A: the distribution's peak (unnormalised, as Löw fitted it) |
 // | b         | [1, 100000000] | 10000  | log exponent | B: the inverse width in 1 - cos(theta_h)                   |
 // | c         | [0.01, 4]     | 1       |              | C: the tail's exponent (small: long tails)                 |
-// | ior       | [1, 100]      | 1.5     | eta          | index of refraction of the exact Fresnel term              |
+// | ior       | [1, 100]      | 1.5     | log eta      | index of refraction of the exact Fresnel term              |
 // Löw, Kronander, Ynnerman & Unger, "BRDF Models for Accurate and Efficient Rendering of Glossy Surfaces", ACM TOG
 // 31(1), 2012, section 5, in the form its published MERL fits use (their supplemental tables, Dupuy's dj_brdf and
 // Peers's bbm agree; the paper's eq. 15 has no 1/pi, the fits do):

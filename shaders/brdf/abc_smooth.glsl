@@ -10,7 +10,7 @@
 // | a         | [0, 100000]    | 20      | rgb specular | A: the lobe's peak over its Fresnel factor (as fitted)    |
 // | b         | [1, 100000000] | 2000    | log exponent | B: the inverse width in the projected distance            |
 // | c         | [0.01, 4]      | 1       |              | C: the tail's exponent (small: long tails)                |
-// | ior       | [1, 100]       | 1.5     | eta          | index of refraction of the Fresnel factor                 |
+// | ior       | [1, 100]       | 1.5     | log eta      | index of refraction of the Fresnel factor                 |
 // Löw, Kronander, Ynnerman & Unger, "BRDF Models for Accurate and Efficient Rendering of Glossy Surfaces", ACM TOG
 // 31(1), 2012, section 4 (eqs. 10-14), in the form its published MERL fits use (Peers's bbm evaluates them so):
 //   f = rho_d / pi + A (1 + B |wi_xy + wo_xy|^2)^-C Q,

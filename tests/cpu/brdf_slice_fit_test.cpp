@@ -13,6 +13,7 @@
 
 #include "brdf_params/material_params.h"
 #include "fit/fit.h"
+#include "fit/fit_plan.h"
 #include "fit_test_support.h"
 #include "fit/merl_slice.h"
 #include "measured/merl.h"
@@ -223,6 +224,64 @@ TEST(SliceFit, ParametersTheDataCannotSeeAreReportedAndTiesPreferTheSimplerModel
     EXPECT_NE(all.find("m is not constrained"), std::string::npos) << all;
     EXPECT_NE(all.find("eta is not constrained"), std::string::npos) << all;
   }
+}
+
+// The names of a plan's variables (an RGB parameter's channel as name[c]).
+std::vector<std::string> namesOf(const fitting::ModelPlan& plan, const std::vector<int>& variables) {
+  std::vector<std::string> names;
+  for (int j : variables) {
+    for (const ParamInfo& p : plan.model->params) {
+      const std::uint32_t slot = plan.variables[std::size_t(j)].slots.front();
+      if (slot < p.slot || slot >= p.slot + (p.rgb ? 3u : 1u)) continue;
+      names.push_back(std::string(p.name) + (p.rgb ? "[" + std::to_string(slot - p.slot) + "]" : ""));
+    }
+  }
+  return names;
+}
+
+TEST(SliceFit, ThePlanFindsEachLobesOwnParametersAndTheChannelsEachVariableMoves) {
+  // Lafortune: each lobe's axis and exponent matter only through its weight (the x and y of the axis tied).
+  const fitting::ModelPlan lafortune = fitting::planOf(*findModel("lafortune"), true);
+  ASSERT_EQ(lafortune.lobes.size(), 2u);
+  EXPECT_EQ(namesOf(lafortune, lafortune.lobes[0].variables), (std::vector<std::string>{"cx", "cz", "n"}));
+  EXPECT_EQ(namesOf(lafortune, lafortune.lobes[1].variables), (std::vector<std::string>{"cxy2", "cz2", "n2"}));
+  // The conductor: the roughness moves every channel; each channel of eta, k and rho_s only its own, so the
+  // Jacobian's 9 colour columns take 3 evaluations.
+  const fitting::ModelPlan conductor = fitting::planOf(*findModel("ggx_conductor"), true);
+  EXPECT_EQ(conductor.diffGroups.size(), 4u);
+  for (const std::vector<int>& group : conductor.diffGroups) {
+    const std::vector<std::string> names = namesOf(conductor, group);
+    if (names.size() == 1) {
+      EXPECT_EQ(names[0], "alpha_x");
+      continue;
+    }
+    ASSERT_EQ(names.size(), 3u);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(conductor.variables[std::size_t(group[std::size_t(c)])].channel, c);
+  }
+  // SGD's shadowing reaches over decades from 0: it is searched as log(1 + value / scale), 0 still in range.
+  const fitting::ModelPlan sgd = fitting::planOf(*findModel("sgd"), true);
+  int wide = 0;
+  for (const fitting::Variable& v : sgd.variables) {
+    if (v.wideScale <= 0.0) continue;
+    ++wide;
+    reference::Material m = sgd.base;
+    const double low = v.lo;
+    fitting::applyVariables({v}, &low, m);
+    EXPECT_EQ(m.params[v.slots[0]], 0.0);
+  }
+  EXPECT_EQ(wide, 6) << "lambda and c, each channel";
+}
+
+TEST(SliceFit, AnUnusedLobeIsGrownAgain) {
+  // Two forward lobes, a sharp one and a broad one, over a diffuse floor: the default fit must find both.
+  const gpu::MaterialRecord truth =
+      material("lafortune", "rho_d=0.3/0.28/0.25,rho_s=0.07/0.05/0.04,cx=-0.6,cy=-0.6,cz=0.6,n=5000,"
+                            "rho_s2=0.02/0.015/0.012,cxy2=-0.6,cz2=0.6,n2=300");
+  const std::string path = write("lafortune.slice", encodeMerlSlice(sliceOf(truth)));
+  FitOptions o = options({"lafortune"});
+  o.metric = FitMetric::kLog;
+  const std::vector<FitResult> fits = fitModels(sliceFitTarget(path), o);
+  EXPECT_LT(fits[0].relativeError, 1e-3) << fitParamList(fits[0]);
 }
 
 TEST(SliceFit, AMeasuredMaterialIsAMaterialEvenWhenItsFileEndsInBinary) {
