@@ -127,19 +127,32 @@ std::string_view firstWord(std::string_view name) {
   return underscore == std::string_view::npos ? std::string_view() : name.substr(0, underscore);
 }
 
+// A parameter's layer: the shortest prefix of whole words that has a LAYER_weight in the model (OpenPBR gives each
+// layer a weight: "thin_film" for thin_film_ior), else its first word.
+std::string_view layerOf(const ModelInfo& model, std::string_view name) {
+  for (std::size_t underscore = name.find('_'); underscore != std::string_view::npos;
+       underscore = name.find('_', underscore + 1)) {
+    const std::string weight = std::string(name.substr(0, underscore)) + "_weight";
+    for (const ParamInfo& param : model.params) {
+      if (param.name == weight) return name.substr(0, underscore);
+    }
+  }
+  return firstWord(name);
+}
+
 // Three layers at least: Ward's rho_d, rho_s, alpha_x, alpha_y are pairs, not layers.
 bool isLayered(const ModelInfo& model) {
   std::vector<std::string_view> layers;
   for (const ParamInfo& param : model.params) {
-    const std::string_view layer = firstWord(param.name);
+    const std::string_view layer = layerOf(model, param.name);
     if (std::find(layers.begin(), layers.end(), layer) == layers.end()) layers.push_back(layer);
   }
   if (layers.size() < 3) return false;
   for (const ParamInfo& param : model.params) {
-    const std::string_view layer = firstWord(param.name);
+    const std::string_view layer = layerOf(model, param.name);
     if (layer.empty()) return false;
     int members = 0;
-    for (const ParamInfo& other : model.params) members += firstWord(other.name) == layer ? 1 : 0;
+    for (const ParamInfo& other : model.params) members += layerOf(model, other.name) == layer ? 1 : 0;
     if (members < 2) return false;
   }
   return true;
@@ -148,7 +161,7 @@ bool isLayered(const ModelInfo& model) {
 }  // namespace
 
 std::string_view paramLayer(const ModelInfo& model, const ParamInfo& param) {
-  return isLayered(model) ? firstWord(param.name) : std::string_view();
+  return isLayered(model) ? layerOf(model, param.name) : std::string_view();
 }
 
 const ParamInfo* findParam(const ModelInfo& model, std::string_view name) {

@@ -97,7 +97,8 @@ const ParamInfo& deltaParam();
 // The ParamInfo of `name` for `model` (delta included), or null.
 const ParamInfo* findParam(const ModelInfo& model, std::string_view name);
 // The layer of a parameter of a layered model, one whose parameters are all named LAYER_rest in layers of two or
-// more (OpenPBR's naming: "coat" for coat_roughness); empty for every other model. The viewer groups by it.
+// more (OpenPBR's naming: "coat" for coat_roughness, "thin_film" for thin_film_ior, a layer being the shortest
+// prefix with a LAYER_weight); empty for every other model. The viewer groups by it.
 std::string_view paramLayer(const ModelInfo& model, const ParamInfo& param);
 
 // Sets one parameter of `record` (whose model is already set). Throws Error naming `where`, the parameter and

@@ -8,6 +8,7 @@
 #include "brdf_params/material_params.h"
 #include "generated/ggx_albedo.h"
 #include "measured/measured_library.h"
+#include "reference/thin_film.h"
 #include "shared/brdf_tables.h"
 #include "util/error.h"
 
@@ -36,6 +37,8 @@ std::vector<float> brdfTableValues() {
   for (std::size_t i = 0; i < std::size(reference::kAverageFresnel); ++i) {
     values[gpu::kAverageFresnelOffset + i] = static_cast<float>(reference::kAverageFresnel[i]);
   }
+  const std::vector<double>& film = reference::thinFilmSpectrum();
+  for (std::size_t i = 0; i < film.size(); ++i) values[gpu::kThinFilmOffset + i] = static_cast<float>(film[i]);
   return values;
 }
 

@@ -301,11 +301,12 @@ float indexWithin(float ior, const gpu::MaterialRecord& record, std::string_view
   return std::min(ior, iorMax);
 }
 
-// KHR_materials_clearcoat onto openpbr: the core factors as its base and the coat as its coat. The extension's coat
-// is a dielectric of index 1.5 whose Fresnel term scales the base below it, with no internal reflections:
-// openpbr's coat with coat_darkening 0 (albedo scaling alone). KHR_materials_specular's factors go to
-// specular_weight and specular_color, which mean nearly what they mean in glTF (docs/gltf.md, "Material extensions").
-gpu::MaterialRecord mapClearcoat(const MetallicRoughness& input, const std::string& where) {
+// KHR_materials_clearcoat and KHR_materials_iridescence onto openpbr: the core factors as its base, the coat as its
+// coat and the iridescent film as its thin film. The extension's coat is a dielectric of index 1.5 whose Fresnel
+// term scales the base below it, with no internal reflections: openpbr's coat with coat_darkening 0 (albedo scaling
+// alone). KHR_materials_specular's factors go to specular_weight and specular_color, which mean nearly what they
+// mean in glTF (docs/gltf.md, "Material extensions").
+gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string& where) {
   gpu::MaterialRecord record = defaultRecord(modelId("openpbr"));
   const std::string mapped = where + " (metallic-roughness under KHR_materials_clearcoat)";
   setParam(record, "base_color", input.baseColor, mapped);
@@ -319,6 +320,18 @@ gpu::MaterialRecord mapClearcoat(const MetallicRoughness& input, const std::stri
   setParam(record, "coat_roughness", glm::vec3(input.clearcoatRoughness), where + " (KHR_materials_clearcoat)");
   setParam(record, "coat_ior", glm::vec3(1.5f), where + " (KHR_materials_clearcoat)");
   setParam(record, "coat_darkening", glm::vec3(0.0f), where + " (KHR_materials_clearcoat)");
+  const std::string film = where + " (KHR_materials_iridescence)";
+  const ParamInfo& thickness = *findParam(modelInfo(record.model), "thin_film_thickness");
+  const ParamInfo& filmIor = *findParam(modelInfo(record.model), "thin_film_ior");
+  const float micrometres = input.iridescenceThicknessNm / 1000.0f;
+  if (micrometres > thickness.max || input.iridescenceIor > filmIor.max) {
+    warn(film + ": the film's thickness " + formatNumber(input.iridescenceThicknessNm) + " nm and index " +
+         formatNumber(input.iridescenceIor) + " are used up to openpbr's " + formatNumber(1000.0f * thickness.max) +
+         " nm and " + formatNumber(filmIor.max));
+  }
+  setParam(record, "thin_film_weight", glm::vec3(input.iridescence), film);
+  setParam(record, "thin_film_thickness", glm::vec3(std::min(micrometres, thickness.max)), film);
+  setParam(record, "thin_film_ior", glm::vec3(std::clamp(input.iridescenceIor, filmIor.min, filmIor.max)), film);
   return record;
 }
 
@@ -341,7 +354,7 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
     setParam(record, "tint", input.baseColor, where + " (base colour as glass tint)");
     return record;
   }
-  if (input.clearcoat > 0.0f) return mapClearcoat(input, where);
+  if (input.clearcoat > 0.0f || input.iridescence > 0.0f) return mapLayered(input, where);
   // glTF's own BRDF (Appendix B): the factors as they are, nothing approximated.
   gpu::MaterialRecord record = defaultRecord(modelId("gltf_pbr"));
   const std::string mapped = where + " (metallic-roughness)";
@@ -468,6 +481,31 @@ void convertMaterials(Document& document, Scene& scene) {
       }
       for (const char* texture : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}) {
         if (coat->contains(texture)) document.ignore(std::string(name) + "." + texture + " (its factor applies alone)");
+      }
+    }
+    if (const json* film = findPath(materialJson, {"extensions", "KHR_materials_iridescence"})) {
+      const std::string name = "KHR_materials_iridescence";
+      const double kLargest = std::numeric_limits<float>::max();
+      if (const json* factor = findPath(*film, {"iridescenceFactor"})) {
+        input.iridescence = checkedFactor(factor->get<double>(), 0.0, 1.0, where, name + ".iridescenceFactor");
+      }
+      if (const json* ior = findPath(*film, {"iridescenceIor"})) {
+        input.iridescenceIor = checkedFactor(ior->get<double>(), 1.0, kLargest, where, name + ".iridescenceIor");
+      }
+      // Without a thickness texture the film is iridescenceThicknessMaximum thick (the extension's text); the
+      // minimum only matters with one.
+      if (const json* value = findPath(*film, {"iridescenceThicknessMinimum"})) {
+        checkedFactor(value->get<double>(), 0.0, kLargest, where, name + ".iridescenceThicknessMinimum");
+      }
+      if (const json* value = findPath(*film, {"iridescenceThicknessMaximum"})) {
+        input.iridescenceThicknessNm =
+            checkedFactor(value->get<double>(), 0.0, kLargest, where, name + ".iridescenceThicknessMaximum");
+      }
+      if (film->contains("iridescenceTexture")) {
+        document.ignore(name + ".iridescenceTexture (its factor applies alone)");
+      }
+      if (film->contains("iridescenceThicknessTexture")) {
+        document.ignore(name + ".iridescenceThicknessTexture (the film is iridescenceThicknessMaximum thick)");
       }
     }
 

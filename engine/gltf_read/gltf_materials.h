@@ -26,10 +26,13 @@ struct MetallicRoughness {
   glm::vec3 specularColor{1.0f};        // KHR_materials_specular.specularColorFactor
   float clearcoat = 0.0f;               // KHR_materials_clearcoat.clearcoatFactor
   float clearcoatRoughness = 0.0f;      // KHR_materials_clearcoat.clearcoatRoughnessFactor
+  float iridescence = 0.0f;             // KHR_materials_iridescence.iridescenceFactor
+  float iridescenceIor = 1.3f;          // KHR_materials_iridescence.iridescenceIor
+  float iridescenceThicknessNm = 400.0f;  // KHR_materials_iridescence.iridescenceThicknessMaximum (no texture read)
 };
 
-// glass (eta = ior, tint = base colour) when transmission is 1; openpbr when a clear coat covers any of it
-// (docs/gltf.md, "Material extensions"); else gltf_pbr, glTF's own BRDF, with the factors as they are (an ior above
+// glass (eta = ior, tint = base colour) when transmission is 1; openpbr when a clear coat or an iridescent film
+// covers any of it (docs/gltf.md, "Material extensions"); else gltf_pbr, glTF's own BRDF, with the factors as they are (an ior above
 // gltf_pbr's 3 is used as 3, with a warning). `where` starts error messages.
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where);
 

@@ -148,7 +148,9 @@ bool drawMaterialEditor(gpu::MaterialRecord& record) {
     const std::string_view paramsLayer = paramLayer(modelInfo(record.model), param);
     if (!paramsLayer.empty() && paramsLayer != layer) {
       layer = paramsLayer;
-      open = ImGui::CollapsingHeader(std::string(layer).c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+      std::string heading(layer);
+      std::replace(heading.begin(), heading.end(), '_', ' ');  // "thin film"
+      open = ImGui::CollapsingHeader(heading.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
     }
     if (!open) continue;
     changed |= isFileParam(param) ? drawFileParam(record, param) : drawParam(record, param);

@@ -1,6 +1,7 @@
 // OpenPBR Surface 1.1.1: a metal and a glossy-diffuse dielectric mixed by metalness, under a coat.
 // lobes: reflection diffuse glossy
 // feature: coat coat_weight
+// feature: thin_film thin_film_weight
 // fit: by name, its layers give one look many ways: which of them a fit frees is not yet designed (issue 38)
 // reciprocal: no, albedo scaling by 1 - E(wo) conserves energy but weighs wo and wi differently (OpenPBR)
 // look: base_color=0.8/0.25/0.1, specular_roughness=0.35, coat_weight=1, coat_roughness=0.05
@@ -23,6 +24,9 @@
 // | coat_roughness_anisotropy     | [0, 1]   | 0       |                   | stretches the coat's GGX along the tangent |
 // | coat_ior                      | [1, 3]   | 1.6     |                   | index of refraction of the coat           |
 // | coat_darkening                | [0, 1]   | 1       |                   | 1: the coat darkens the base as physics does; 0: compensated |
+// | thin_film_weight              | [0, 1]   | 0       |                   | coverage of the thin film on the base     |
+// | thin_film_thickness           | [0, 5]   | 0.5     |                   | the film's thickness in micrometres       |
+// | thin_film_ior                 | [1, 3]   | 1.4     |                   | the film's index of refraction            |
 // Portsmouth, Hoffman, Pharr, Kutz, Leidl et al., "OpenPBR Surface", Academy Software Foundation, v1.1.1, 2026,
 // section "Reduction to a mixture of lobes", with non-reciprocal albedo scaling (docs/brdfs.md, "openpbr"):
 //   f = C f_coat + lerp(1, T (1 - E_coat(wo)), C) lerp(1, Delta, C delta) lerp(f_dielectric, f_metal, M),
@@ -45,11 +49,14 @@
 #ifndef RAYLAB_BRDF_OPENPBR_GLSL
 #define RAYLAB_BRDF_OPENPBR_GLSL
 
+#extension GL_EXT_control_flow_attributes : require
+
 #include "brdf/brdf_tables.glsl"
 #include "brdf/eon.glsl"
 #include "brdf/fresnel.glsl"
 #include "brdf/ggx.glsl"
 #include "brdf/sampling.glsl"
+#include "brdf/thin_film.glsl"
 
 // The GGX widths (alpha_t, alpha_b) of a roughness and an anisotropy (OpenPBR, "Microfacet model").
 vec2 openpbrAlphas(float roughness, float anisotropy) {
@@ -181,7 +188,7 @@ vec2 openpbrLobeProbabilities(float baseWeight, vec3 baseColor, float metalness,
 vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
                  vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
-                 float coatDarkening, vec3 wi, vec3 wo) {
+                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return vec3(0.0);  // one-sided; also false for NaN directions
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
@@ -195,12 +202,56 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
   const float alphaTable = sqrt(alpha.x * alpha.y);
   const float eps = openpbrSpecularEps(specularWeight, specularIor, C, coatIor);
   const vec3 rho = baseWeight * baseColor;
-  const float passed = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
-  const vec3 dielectric = specularColor * openpbrGgxReflection(wi, wo, h, alpha, eps) +
-                          passed * eonEval(rho, diffuseRoughness, wi, wo);
+  const float loss = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
+  const float cosH = openpbrCosineToHalfVector(wo, h);
+  vec3 F = vec3(openpbrFresnel(cosH, eps)), passed = vec3(loss);
   const vec3 b = openpbrF82B(rho, specularColor);
-  const vec3 metal = min(specularWeight * openpbrF82(rho, b, openpbrCosineToHalfVector(wo, h)), vec3(1.0)) *
-                         openpbrMicrofacet(wi, wo, h, alpha) +
+  vec3 metalF = openpbrF82(rho, b, cosH);
+  // The thin film (reference: openpbr.cpp), compiled only where a scene has one: over the dielectric at wo.H, its
+  // albedo's 3 x 3 quadrature, and over the metal at wo.H, every channel, in one loop with one call of the film
+  // (thin_film.glsl says why).
+  const float W = featureEnabled(kOpenpbrFeatureThinFilm) ? thinFilmWeight : 0.0;
+  if (W > 0.0) {
+    const float thicknessNm = 1000.0 * thinFilmThickness, eta = (1.0 + eps) / (1.0 - eps);
+    const bool dielectricFilm = M < 1.0 && eps < 0.9999;
+    vec3 filmF = F, filmAlbedo = vec3(0.0), metalFilm = metalF;
+    float bareAlbedo = 0.0;
+    [[dont_unroll]] for (uint job = 0u; job < 33u; ++job) {
+      const uint point = job / 3u, c = job % 3u;  // point 0: wo.H; 1-9: the quadrature; 10: the metal
+      if ((point < 10u && !dielectricFilm) || (point == 10u && !(M > 0.0))) continue;
+      float cosTheta = cosH, g = 1.0;
+      vec2 index = vec2(eta, 0.0);
+      if (point >= 1u && point <= 9u) {
+        const vec2 u = (vec2(float((point - 1u) / 3u), float((point - 1u) % 3u)) + 0.5) / 3.0;
+        const vec3 m = sampleGgxVisibleNormal(wo, alpha.x, alpha.y, u);
+        const vec3 reflected = reflectAbout(wo, m);
+        if (!(reflected.z > 0.0)) continue;
+        cosTheta = clamp(dot(wo, m), 0.0, 1.0);
+        g = G1_GGX(reflected, alpha.x, alpha.y);
+        if (c == 0u) bareAlbedo += g * openpbrFresnel(cosTheta, eps);
+      } else if (point == 10u) {
+        index = metalIndexFromTint(rho[c], specularColor[c]);
+      }
+      const float film = thinFilmChannel(c, cosTheta, thinFilmIor, thicknessNm, index);
+      if (point == 0u) {
+        filmF[c] = film;
+      } else if (point <= 9u) {
+        filmAlbedo[c] += g * film;
+      } else {
+        metalFilm[c] = thinFilmOverMetal(metalF[c], film, index, cosH);
+      }
+    }
+    if (dielectricFilm) {
+      F = mix(F, filmF, W);
+      // E_film = E_spec(wo) + (quadrature with the film - without it) / 9.
+      const vec3 eFilm = clamp(vec3(1.0 - loss) + (filmAlbedo - bareAlbedo) / 9.0, 0.0, 1.0);
+      passed = max(vec3(1.0) - mix(vec3(1.0 - loss), eFilm, W), vec3(0.0));
+    }
+    metalF = mix(metalF, metalFilm, W);
+  }
+  const vec3 dielectric = specularColor * F * openpbrMicrofacet(wi, wo, h, alpha) +
+                          passed * eonEval(rho, diffuseRoughness, wi, wo);
+  const vec3 metal = min(specularWeight * metalF, vec3(1.0)) * openpbrMicrofacet(wi, wo, h, alpha) +
                      openpbrMetalMultipleScattering(rho, b, specularWeight, alpha, wi, wo);
   const vec3 substrate = mix(dielectric, metal, M);
   if (!(C > 0.0)) return substrate;
@@ -235,7 +286,7 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
 float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
                  vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
-                 float coatDarkening, vec3 wi, vec3 wo) {
+                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
@@ -256,7 +307,8 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
 BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness,
                          float specularWeight, vec3 specularColor, float specularRoughness, float specularAnisotropy,
                          float specularIor, float coatWeight, vec3 coatColor, float coatRoughness,
-                         float coatAnisotropy, float coatIor, float coatDarkening, vec3 wo, vec3 u) {
+                         float coatAnisotropy, float coatIor, float coatDarkening, float thinFilmWeight,
+                         float thinFilmThickness, float thinFilmIor, vec3 wo, vec3 u) {
   if (!(wo.z > 0.0)) return noSample();
   coatWeight = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;  // as in openpbrEval
   const vec2 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
@@ -277,10 +329,12 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
   return acceptSample(wi,
                       openpbrEval(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                                   specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
-                                  coatRoughness, coatAnisotropy, coatIor, coatDarkening, wi, wo),
+                                  coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness,
+                                  thinFilmIor, wi, wo),
                       openpbrPdf(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                                  specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
-                                 coatRoughness, coatAnisotropy, coatIor, coatDarkening, wi, wo));
+                                 coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness,
+                                  thinFilmIor, wi, wo));
 }
 
 #endif

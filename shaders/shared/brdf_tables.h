@@ -15,7 +15,10 @@
 //                                             its last slice (eps = 1) is GGX with F = 1 on these finer axes
 //   [kMirrorAverageLossOffset, +kGgxAlbedoSize) 1 - E_avg(alpha_i) of that slice, the mean of the interpolant
 //   [kAverageFresnelOffset, +kDielectricAlbedoEpsSize) 2 integral F(mu) mu dmu of the Fresnel term at eps_k
-// The values are computed at build time (engine/reference/ggx_albedo_table.cpp) into generated/ggx_albedo.h.
+//   [kThinFilmOffset, +6 kThinFilmSamples)    the thin film's spectral integrals G_c(t), t = k kThinFilmStepNm, as
+//                                             (Re, Im) of channels r, g, b per k (engine/reference/thin_film.h;
+//                                             computed when the tables are made, not at build time)
+// The values above it are computed at build time (engine/reference/ggx_albedo_table.cpp) into generated/ggx_albedo.h.
 //   [kFileDirectoryOffset, +kMaxFileBlocks)   where block b begins, as the bits of a uint: the files the scene uses,
 //                                             in the order the upload numbers them (engine/brdf_tables), from
 //                                             kFileBlocksOffset on. A material of model `measured` or `nbrdf` holds
@@ -49,7 +52,11 @@ RL_CONST uint kDielectricAlbedoOffset = kGgxAlbedoAverageOffset + kGgxAlbedoSize
 RL_CONST uint kDielectricAlbedoFloats = kDielectricAlbedoEpsSize * kGgxAlbedoSize * kGgxAlbedoSize;
 RL_CONST uint kMirrorAverageLossOffset = kDielectricAlbedoOffset + kDielectricAlbedoFloats;
 RL_CONST uint kAverageFresnelOffset = kMirrorAverageLossOffset + kGgxAlbedoSize;
-RL_CONST uint kBrdfTableFloats = kAverageFresnelOffset + kDielectricAlbedoEpsSize;
+RL_CONST uint kThinFilmSamples = 1024;
+RL_CONST float kThinFilmStepNm = 12.5;
+RL_CONST uint kThinFilmTerms = 12;
+RL_CONST uint kThinFilmOffset = kAverageFresnelOffset + kDielectricAlbedoEpsSize;
+RL_CONST uint kBrdfTableFloats = kThinFilmOffset + 6 * kThinFilmSamples;
 
 RL_CONST uint kMerlThetaHBins = 90;
 RL_CONST uint kMerlThetaDBins = 90;

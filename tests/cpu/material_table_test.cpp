@@ -201,6 +201,7 @@ TEST(MaterialTable, OnlyALayeredModelsParametersHaveLayers) {
   EXPECT_EQ(paramLayer(openpbr, *findParam(openpbr, "coat_ior")), "coat");
   EXPECT_EQ(paramLayer(openpbr, *findParam(openpbr, "specular_roughness_anisotropy")), "specular");
   EXPECT_EQ(paramLayer(openpbr, *findParam(openpbr, "base_color")), "base");
+  EXPECT_EQ(paramLayer(openpbr, *findParam(openpbr, "thin_film_ior")), "thin_film") << "a layer is the prefix with a _weight";
   const ModelInfo& gltf = *findModel("gltf_pbr");
   EXPECT_EQ(paramLayer(gltf, *findParam(gltf, "base_color")), "");
   const ModelInfo& conductor = *findModel("ggx_conductor");
@@ -223,9 +224,11 @@ TEST(MaterialTable, ModelFeaturesHaveTheirOwnBitsAboveTheFixedFeatures) {
     }
   }
   const ModelInfo& openpbr = *findModel("openpbr");
-  ASSERT_EQ(openpbr.features.size(), 1u);
+  ASSERT_EQ(openpbr.features.size(), 2u);
   EXPECT_EQ(openpbr.features[0].name, "coat");
   EXPECT_EQ(openpbr.features[0].param, "coat_weight");
+  EXPECT_EQ(openpbr.features[1].name, "thin_film");
+  EXPECT_EQ(openpbr.features[1].param, "thin_film_weight");
 }
 
 }  // namespace

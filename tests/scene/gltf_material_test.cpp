@@ -393,6 +393,36 @@ TEST(GltfMaterial, KhrMaterialsClearcoatIsOpenPbrsCoat) {
   }
 }
 
+// KHR_materials_iridescence maps onto openpbr's thin film: the factor as its weight, the index, and the maximum
+// thickness (no thickness texture) in micrometres. A factor of 0 leaves glTF's own BRDF.
+TEST(GltfMaterial, KhrMaterialsIridescenceIsOpenPbrsThinFilm) {
+  WarningCapture warnings;
+  const Scene scene = loadMaterial({{"pbrMetallicRoughness", {{"metallicFactor", 1.0}, {"roughnessFactor", 0.2}}},
+                                    {"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 0.9},
+                                                                                   {"iridescenceIor", 1.8},
+                                                                                   {"iridescenceThicknessMaximum", 650.0}}}}}});
+  const gpu::MaterialRecord& r = scene.materials[0].record;
+  EXPECT_EQ(r.model, modelId("openpbr"));
+  EXPECT_FLOAT_EQ(getParam(r, "base_metalness").x, 1.0f);
+  EXPECT_FLOAT_EQ(getParam(r, "thin_film_weight").x, 0.9f);
+  EXPECT_FLOAT_EQ(getParam(r, "thin_film_ior").x, 1.8f);
+  EXPECT_FLOAT_EQ(getParam(r, "thin_film_thickness").x, 0.65f);
+  EXPECT_FLOAT_EQ(getParam(r, "coat_weight").x, 0.0f);
+  EXPECT_EQ(warnings.count("KHR_materials_iridescence"), 0) << "read, not ignored";
+  // The extension's defaults: index 1.3, 400 nm.
+  const Scene defaults = loadMaterial({{"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 1.0}}}}}});
+  EXPECT_FLOAT_EQ(getParam(defaults.materials[0].record, "thin_film_ior").x, 1.3f);
+  EXPECT_FLOAT_EQ(getParam(defaults.materials[0].record, "thin_film_thickness").x, 0.4f);
+  const Scene none = loadMaterial({{"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 0.0}}}}}});
+  EXPECT_EQ(none.materials[0].record.model, modelId("gltf_pbr"));
+  for (const json& bad : {json{{"iridescenceFactor", 1.5}}, json{{"iridescenceIor", 0.5}},
+                          json{{"iridescenceThicknessMaximum", -1.0}}, json{{"iridescenceFactor", "1"}}}) {
+    const std::string error = materialError({{"name", "bad film"}, {"extensions", {{"KHR_materials_iridescence", bad}}}});
+    EXPECT_NE(error.find("iridescence"), std::string::npos) << error;
+    EXPECT_TRUE(error.find("bad film") != std::string::npos || error.find("materials[0]") != std::string::npos) << error;
+  }
+}
+
 // glTF 3.9.3: the emissive texture is multiplied by emissiveFactor, whose default is zero.
 TEST(GltfMaterial, AnEmissiveTextureMultipliesTheFactorAndIsSkippedUnderAZeroOne) {
   GltfBuilder lit = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
