@@ -152,6 +152,7 @@ dvec3 thinFilmReflectance(double cosTheta, double etaFilm, double thicknessNm, c
         power *= step;
         term = power * spectrum(m * film.opd, c);
         terms += term;
+        if (std::norm(power) < 1e-10) break;  // as thin_film.glsl: |x|^m below 1e-5, the tail smaller still
       }
       const complex ratio = step * spectrum(film.opd, c);
       terms += term * ratio / (1.0 - ratio);

@@ -207,20 +207,20 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
   vec3 F = vec3(openpbrFresnel(cosH, eps)), passed = vec3(loss);
   const vec3 b = openpbrF82B(rho, specularColor);
   vec3 metalF = openpbrF82(rho, b, cosH);
-  // The thin film (reference: openpbr.cpp), compiled only where a scene has one: over the dielectric at wo.H, its
-  // albedo's 3 x 3 quadrature, and over the metal at wo.H, every channel, in one loop with one call of the film
-  // (thin_film.glsl says why).
+  // The thin film (reference: openpbr.cpp), compiled only where a scene has one: over the dielectric at wo.H and at
+  // its albedo's 3 x 3 quadrature points, then over the metal at wo.H, a channel at a time (its index differs per
+  // channel), in one loop with one call of the film (thin_film.glsl says why).
   const float W = featureEnabled(kOpenpbrFeatureThinFilm) ? thinFilmWeight : 0.0;
   if (W > 0.0) {
     const float thicknessNm = 1000.0 * thinFilmThickness, eta = (1.0 + eps) / (1.0 - eps);
     const bool dielectricFilm = M < 1.0 && eps < 0.9999;
     vec3 filmF = F, filmAlbedo = vec3(0.0), metalFilm = metalF;
     float bareAlbedo = 0.0;
-    [[dont_unroll]] for (uint job = 0u; job < 33u; ++job) {
-      const uint point = job / 3u, c = job % 3u;  // point 0: wo.H; 1-9: the quadrature; 10: the metal
-      if ((point < 10u && !dielectricFilm) || (point == 10u && !(M > 0.0))) continue;
+    [[dont_unroll]] for (uint point = 0u; point < 13u; ++point) {  // 0: wo.H; 1-9: the quadrature; 10-12: the metal
+      if ((point < 10u && !dielectricFilm) || (point >= 10u && !(M > 0.0))) continue;
       float cosTheta = cosH, g = 1.0;
       vec2 index = vec2(eta, 0.0);
+      const uint c = point >= 10u ? point - 10u : 0u;
       if (point >= 1u && point <= 9u) {
         const vec2 u = (vec2(float((point - 1u) / 3u), float((point - 1u) % 3u)) + 0.5) / 3.0;
         const vec3 m = sampleGgxVisibleNormal(wo, alpha.x, alpha.y, u);
@@ -228,17 +228,17 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
         if (!(reflected.z > 0.0)) continue;
         cosTheta = clamp(dot(wo, m), 0.0, 1.0);
         g = G1_GGX(reflected, alpha.x, alpha.y);
-        if (c == 0u) bareAlbedo += g * openpbrFresnel(cosTheta, eps);
-      } else if (point == 10u) {
+        bareAlbedo += g * openpbrFresnel(cosTheta, eps);
+      } else if (point >= 10u) {
         index = metalIndexFromTint(rho[c], specularColor[c]);
       }
-      const float film = thinFilmChannel(c, cosTheta, thinFilmIor, thicknessNm, index);
+      const vec3 film = thinFilmReflectance(cosTheta, thinFilmIor, thicknessNm, index);
       if (point == 0u) {
-        filmF[c] = film;
+        filmF = film;
       } else if (point <= 9u) {
-        filmAlbedo[c] += g * film;
+        filmAlbedo += g * film;
       } else {
-        metalFilm[c] = thinFilmOverMetal(metalF[c], film, index, cosH);
+        metalFilm[c] = thinFilmOverMetal(metalF[c], film[c], index, cosH);
       }
     }
     if (dielectricFilm) {

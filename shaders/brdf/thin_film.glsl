@@ -21,40 +21,58 @@ vec2 complexSqrt(vec2 z) {
   return vec2(re, z.y < 0.0 ? -im : im);
 }
 
-// G_c(t) for channel c at t nm, linear in the table, 0 beyond it.
-vec2 thinFilmSpectrum(uint c, float t) {
+// G_c(t) of the three channels at t nm (real and imaginary parts), linear in the table, 0 beyond it.
+void thinFilmSpectrum(float t, out vec3 re, out vec3 im) {
+  re = vec3(0.0);
+  im = vec3(0.0);
   const float x = t / kThinFilmStepNm;
-  if (!(x < float(kThinFilmSamples - 1u))) return vec2(0.0);
+  if (!(x < float(kThinFilmSamples - 1u))) return;
   const uint k = uint(x);
-  const uint i = kThinFilmOffset + 6u * k + 2u * c;
-  const vec2 a = vec2(brdfTables[i], brdfTables[i + 1u]), b = vec2(brdfTables[i + 6u], brdfTables[i + 7u]);
-  return mix(a, b, x - float(k));
+  const uint i = kThinFilmOffset + 6u * k;
+  const float f = x - float(k);
+  re = mix(vec3(brdfTables[i], brdfTables[i + 2u], brdfTables[i + 4u]),
+           vec3(brdfTables[i + 6u], brdfTables[i + 8u], brdfTables[i + 10u]), f);
+  im = mix(vec3(brdfTables[i + 1u], brdfTables[i + 3u], brdfTables[i + 5u]),
+           vec3(brdfTables[i + 7u], brdfTables[i + 9u], brdfTables[i + 11u]), f);
 }
 
-// One polarisation's reflectance in channel c from its amplitudes r12 (real) and r23, and the optical path (nm).
-float thinFilmPolarisation(uint c, float r12, vec2 r23, float opd) {
+// One polarisation's RGB reflectance from its amplitudes r12 (real) and r23, and the optical path (nm): the series'
+// terms a_m = p^m G_c(m OPD), p = -x exp(i arg r23), in every channel at once.
+vec3 thinFilmPolarisation(float r12, vec2 r23, float opd) {
   const float R12 = r12 * r12, R23 = dot(r23, r23);
   const float denominator = 1.0 - R12 * R23;
-  if (!(denominator > 1e-7)) return 1.0;  // both interfaces mirrors
+  if (!(denominator > 1e-7)) return vec3(1.0);  // both interfaces mirrors
   const float T = (1.0 - R12) * (1.0 - R23) / denominator;
-  const vec2 step = -r12 * r23;  // -x exp(i arg r23)
-  vec2 power = vec2(1.0, 0.0), term = vec2(0.0), terms = vec2(0.0);
+  const vec2 step = -r12 * r23;
+  vec2 power = vec2(1.0, 0.0);
+  vec3 termRe = vec3(0.0), termIm = vec3(0.0), sumRe = vec3(0.0);
   [[dont_unroll]] for (uint m = 1u; m <= kThinFilmTerms; ++m) {
     power = complexMul(power, step);
-    term = complexMul(power, thinFilmSpectrum(c, float(m) * opd));
-    terms += term;
+    vec3 gRe, gIm;
+    thinFilmSpectrum(float(m) * opd, gRe, gIm);
+    termRe = power.x * gRe - power.y * gIm;
+    termIm = power.x * gIm + power.y * gRe;
+    sumRe += termRe;
+    // Most films stop here after a few terms: |x|^m below 1e-5 (x is 0.05 for a film of index 2 on glass at normal
+    // incidence), and the tail below is then smaller still.
+    if (dot(power, power) < 1e-10) break;
   }
-  const vec2 ratio = complexMul(step, thinFilmSpectrum(c, opd));
-  terms += complexDiv(complexMul(term, ratio), vec2(1.0, 0.0) - ratio);
-  return 1.0 - T * (1.0 + 2.0 * terms.x);
+  // The geometric tail a_M ratio / (1 - ratio), ratio = p G_c(OPD), per channel.
+  vec3 gRe, gIm;
+  thinFilmSpectrum(opd, gRe, gIm);
+  const vec3 ratioRe = step.x * gRe - step.y * gIm, ratioIm = step.x * gIm + step.y * gRe;
+  const vec3 numRe = termRe * ratioRe - termIm * ratioIm, numIm = termRe * ratioIm + termIm * ratioRe;
+  const vec3 denRe = 1.0 - ratioRe, denIm = -ratioIm;
+  sumRe += (numRe * denRe + numIm * denIm) / (denRe * denRe + denIm * denIm);
+  return 1.0 - T * (1.0 + 2.0 * sumRe);
 }
 
-// Channel c's unpolarised reflectance, from a medium of index 1, of a film (index etaFilm, thickness nm) over a
-// base of complex index eta3 = (n, k).
-float thinFilmChannel(uint c, float cosTheta, float etaFilm, float thicknessNm, vec2 eta3) {
+// The unpolarised RGB reflectance, from a medium of index 1, of a film (index etaFilm, thickness nm) over a base of
+// complex index eta3 = (n, k).
+vec3 thinFilmReflectance(float cosTheta, float etaFilm, float thicknessNm, vec2 eta3) {
   const float sin2 = max(0.0, 1.0 - cosTheta * cosTheta);
   const float cos2Film = 1.0 - sin2 / (etaFilm * etaFilm);
-  if (!(cos2Film > 0.0)) return 1.0;  // a film of index below 1 past its critical angle
+  if (!(cos2Film > 0.0)) return vec3(1.0);  // a film of index below 1 past its critical angle
   const float cosFilm = sqrt(cos2Film);
   // r_s = (a c - w) / (a c + w), r_p = (b^2 c - a w) / (b^2 c + a w), w = b cos_b, at each interface a -> b.
   const float wFilm = etaFilm * cosFilm;
@@ -67,10 +85,10 @@ float thinFilmChannel(uint c, float cosTheta, float etaFilm, float thicknessNm, 
   const vec2 bc = eta3Squared * cosFilm, aw = etaFilm * w;
   const vec2 bottomP = complexDiv(bc - aw, bc + aw);
   const float opd = 2.0 * etaFilm * thicknessNm * cosFilm;
-  float R = 0.0;
+  vec3 R = vec3(0.0);
   [[dont_unroll]] for (uint polarisation = 0u; polarisation < 2u; ++polarisation) {
     const bool s = polarisation == 0u;
-    R += 0.5 * thinFilmPolarisation(c, s ? topS : topP, s ? bottomS : bottomP, opd);
+    R += 0.5 * thinFilmPolarisation(s ? topS : topP, s ? bottomS : bottomP, opd);
   }
   return clamp(R, 0.0, 1.0);
 }
