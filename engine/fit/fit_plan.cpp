@@ -61,16 +61,19 @@ std::vector<Variable> variablesOf(const ModelInfo& model, bool isotropic) {
   return variables;
 }
 
+// A direction of the upper hemisphere at least 0.15 above the horizon, for the probes below.
+glm::dvec3 randomDirection(std::mt19937_64& random) {
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const double z = 0.15 + 0.85 * uniform(random), phi = 6.283185307179586 * uniform(random);
+  const double r = std::sqrt(1.0 - z * z);
+  return glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
+}
+
 // Whether f is affine in the given RGB parameters (each channel in its own channel, jointly), tested at random
 // points of the box and random pairs of directions: f(a) = f(0) + sum_k a_k (f(e_k) - f(0)) to 1e-9.
 bool jointlyLinear(const ModelPlan& plan, const std::vector<std::array<int, 3>>& groups) {
   std::mt19937_64 random(12345);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  const auto direction = [&] {
-    const double z = 0.15 + 0.85 * uniform(random), phi = 6.283185307179586 * uniform(random);
-    const double r = std::sqrt(1.0 - z * z);
-    return glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
-  };
   for (int trial = 0; trial < 4; ++trial) {
     std::vector<double> x;
     for (const Variable& v : plan.variables) x.push_back(v.lo + (v.hi - v.lo) * uniform(random));
@@ -102,7 +105,7 @@ bool jointlyLinear(const ModelPlan& plan, const std::vector<std::array<int, 3>>&
       amounts.push_back(a);
     }
     for (int p = 0; p < 8; ++p) {
-      const glm::dvec3 wi = direction(), wo = direction();
+      const glm::dvec3 wi = randomDirection(random), wo = randomDirection(random);
       const glm::dvec3 h = reference::eval(zero, wi, wo);
       glm::dvec3 predicted = h, scale = glm::abs(h);
       for (std::size_t k = 0; k < groups.size(); ++k) {
@@ -126,11 +129,6 @@ bool jointlyLinear(const ModelPlan& plan, const std::vector<std::array<int, 3>>&
 std::vector<int> privateVariables(const ModelPlan& plan, int group) {
   std::mt19937_64 random(54321);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  const auto direction = [&] {
-    const double z = 0.15 + 0.85 * uniform(random), phi = 6.283185307179586 * uniform(random);
-    const double r = std::sqrt(1.0 - z * z);
-    return glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
-  };
   // Whether changing variable j moves f somewhere, with the linear groups' amounts drawn where `active` says and 0
   // elsewhere.
   const auto moves = [&](int j, const std::function<bool(int)>& active) {
@@ -148,7 +146,7 @@ std::vector<int> privateVariables(const ModelPlan& plan, int group) {
       applyVariables(plan.variables, x.data(), a);
       applyVariables(plan.variables, moved.data(), b);
       for (int p = 0; p < 16; ++p) {
-        const glm::dvec3 wi = direction(), wo = direction();
+        const glm::dvec3 wi = randomDirection(random), wo = randomDirection(random);
         const glm::dvec3 fa = reference::eval(a, wi, wo), fb = reference::eval(b, wi, wo);
         for (int c = 0; c < 3; ++c) {
           if (!(fa[c] == fb[c])) return true;
@@ -171,11 +169,6 @@ std::vector<int> privateVariables(const ModelPlan& plan, int group) {
 int channelOf(const ModelPlan& plan, int j) {
   std::mt19937_64 random(777u + std::uint64_t(j));
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  const auto direction = [&] {
-    const double z = 0.15 + 0.85 * uniform(random), phi = 6.283185307179586 * uniform(random);
-    const double r = std::sqrt(1.0 - z * z);
-    return glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
-  };
   int mask = 0;
   for (int trial = 0; trial < 8; ++trial) {
     std::vector<double> x;
@@ -187,7 +180,7 @@ int channelOf(const ModelPlan& plan, int j) {
     applyVariables(plan.variables, x.data(), a);
     applyVariables(plan.variables, moved.data(), b);
     for (int p = 0; p < 16; ++p) {
-      const glm::dvec3 wi = direction(), wo = direction();
+      const glm::dvec3 wi = randomDirection(random), wo = randomDirection(random);
       const glm::dvec3 fa = reference::eval(a, wi, wo), fb = reference::eval(b, wi, wo);
       for (int c = 0; c < 3; ++c) {
         if (!(fa[c] == fb[c])) mask |= 1 << c;  // NaN counts as a change
