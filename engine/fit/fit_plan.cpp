@@ -122,6 +122,24 @@ bool jointlyLinear(const ModelPlan& plan, const std::vector<std::array<int, 3>>&
   return true;
 }
 
+// The channels of f (bit c for channel c) that differ between the variables' values x and moved on any of 16 random
+// pairs of directions; NaN counts as a difference.
+int channelsMoved(const ModelPlan& plan, const std::vector<double>& x, const std::vector<double>& moved,
+                  std::mt19937_64& random) {
+  reference::Material a = plan.base, b = plan.base;
+  applyVariables(plan.variables, x.data(), a);
+  applyVariables(plan.variables, moved.data(), b);
+  int mask = 0;
+  for (int p = 0; p < 16; ++p) {
+    const glm::dvec3 wi = randomDirection(random), wo = randomDirection(random);
+    const glm::dvec3 fa = reference::eval(a, wi, wo), fb = reference::eval(b, wi, wo);
+    for (int c = 0; c < 3; ++c) {
+      if (!(fa[c] == fb[c])) mask |= 1 << c;
+    }
+  }
+  return mask;
+}
+
 // The nonlinear variables that f depends on only through linear group `group`: with the group's amounts at 0,
 // changing one of them changes f on no pair tried, and with only this group's amounts non-zero it changes f on some
 // (the second test keeps another lobe's variables out where the draws left that lobe dark: Lafortune's first lobe is
@@ -142,16 +160,7 @@ std::vector<int> privateVariables(const ModelPlan& plan, int group) {
       std::vector<double> moved = x;
       const Variable& v = plan.variables[std::size_t(j)];
       moved[std::size_t(j)] = v.lo + (v.hi - v.lo) * uniform(random);
-      reference::Material a = plan.base, b = plan.base;
-      applyVariables(plan.variables, x.data(), a);
-      applyVariables(plan.variables, moved.data(), b);
-      for (int p = 0; p < 16; ++p) {
-        const glm::dvec3 wi = randomDirection(random), wo = randomDirection(random);
-        const glm::dvec3 fa = reference::eval(a, wi, wo), fb = reference::eval(b, wi, wo);
-        for (int c = 0; c < 3; ++c) {
-          if (!(fa[c] == fb[c])) return true;
-        }
-      }
+      if (channelsMoved(plan, x, moved, random) != 0) return true;
     }
     return false;
   };
@@ -176,16 +185,7 @@ int channelOf(const ModelPlan& plan, int j) {
     std::vector<double> moved = x;
     const Variable& v = plan.variables[std::size_t(j)];
     moved[std::size_t(j)] += (v.hi - v.lo) * (uniform(random) < 0.5 ? -0.03 : 0.03);
-    reference::Material a = plan.base, b = plan.base;
-    applyVariables(plan.variables, x.data(), a);
-    applyVariables(plan.variables, moved.data(), b);
-    for (int p = 0; p < 16; ++p) {
-      const glm::dvec3 wi = randomDirection(random), wo = randomDirection(random);
-      const glm::dvec3 fa = reference::eval(a, wi, wo), fb = reference::eval(b, wi, wo);
-      for (int c = 0; c < 3; ++c) {
-        if (!(fa[c] == fb[c])) mask |= 1 << c;  // NaN counts as a change
-      }
-    }
+    mask |= channelsMoved(plan, x, moved, random);
   }
   return mask == 1 ? 0 : mask == 2 ? 1 : mask == 4 ? 2 : -1;
 }
