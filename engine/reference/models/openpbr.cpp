@@ -165,7 +165,7 @@ Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
   const double W = p.thin_film_weight;
   const double loss = dielectricReflectionLoss(wo.z, projectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
   dvec3 F = dvec3(fresnel(cosH, eps)), passed(loss);
-  if (W > 0.0) {
+  if (W > 0.0 && M < 1.0) {  // the dielectric's film (a pure metal has none to show)
     F = (1.0 - W) * F + W * filmOverDielectric(p, eps, cosH);
     const dvec3 eFilm = filmAlbedo(p, eps, alpha, wo, 1.0 - loss);
     passed = glm::max(dvec3(1.0) - ((1.0 - W) * (1.0 - loss) + W * eFilm), 0.0);
@@ -175,7 +175,7 @@ Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
   // Metal.
   const dvec3 b = f82Coefficient(rho, p.specular_color);
   dvec3 metalF = f82(rho, b, cosH);
-  if (W > 0.0) metalF = (1.0 - W) * metalF + W * filmOverMetal(p, rho, metalF, cosH);
+  if (W > 0.0 && M > 0.0) metalF = (1.0 - W) * metalF + W * filmOverMetal(p, rho, metalF, cosH);
   const dvec3 metal = glm::min(p.specular_weight * metalF, dvec3(1.0)) * microfacet(wi, wo, alpha) +
                       metalMultipleScattering(rho, b, p.specular_weight, alpha, wi, wo);
 
