@@ -258,7 +258,10 @@ ModelPlan planOf(const ModelInfo& model, bool isotropic) {
     for (std::vector<int>& group : plan.diffGroups) {
       if (channel < 0) break;
       bool free = true;
-      for (int k : group) free &= plan.variables[std::size_t(k)].channel >= 0 && plan.variables[std::size_t(k)].channel != channel;
+      for (int k : group) {
+        const int other = plan.variables[std::size_t(k)].channel;
+        free &= other >= 0 && other != channel;
+      }
       if (free) {
         group.push_back(int(j));
         placed = true;

@@ -224,7 +224,7 @@ std::vector<double> lobeSearch(const FitTarget& coarse, const ModelPlan& plan, F
     reference::Material with = plan.base, without = plan.base;
     applyVariables(plan.variables, current.data(), with);
     std::vector<double> zeroed = current;
-    for (int c = 0; c < 3; ++c) zeroed[std::size_t(plan.linear[std::size_t(lobe.group)].variables[std::size_t(c)])] = 0.0;
+    for (int j : plan.linear[std::size_t(lobe.group)].variables) zeroed[std::size_t(j)] = 0.0;
     applyVariables(plan.variables, zeroed.data(), without);
     double share = 0.0, total = 0.0;
     for (const FitPair* pair : pairs) {
@@ -250,7 +250,8 @@ std::vector<double> lobeSearch(const FitTarget& coarse, const ModelPlan& plan, F
       std::vector<double> trial = current;
       for (std::size_t j = 0; j < n; ++j) {
         const Variable& v = plan.variables[std::size_t(lobe.variables[j])];
-        trial[std::size_t(lobe.variables[j])] = v.lo + (v.hi - v.lo) * (strata[j][std::size_t(p)] + uniform(random)) / points;
+        const double u = (strata[j][std::size_t(p)] + uniform(random)) / points;
+        trial[std::size_t(lobe.variables[j])] = v.lo + (v.hi - v.lo) * u;
       }
       const double cost = solvedCost(pairs, plan, metric, cycles, trial);
       if (cost < bestCost) {

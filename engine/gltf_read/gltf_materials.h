@@ -32,8 +32,8 @@ struct MetallicRoughness {
 };
 
 // glass (eta = ior, tint = base colour) when transmission is 1; openpbr when a clear coat or an iridescent film
-// covers any of it (docs/gltf.md, "Material extensions"); else gltf_pbr, glTF's own BRDF, with the factors as they are (an ior above
-// gltf_pbr's 3 is used as 3, with a warning). `where` starts error messages.
+// covers any of it (docs/gltf.md, "Material extensions"); else gltf_pbr, glTF's own BRDF, with the factors as they
+// are (an ior above gltf_pbr's 3 is used as 3, with a warning). `where` starts error messages.
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where);
 
 // Applies an extras.raylab material object to `record`: "model" (optional) restarts from that model's

@@ -70,16 +70,17 @@ const Shape kSpecular{{number("specularFactor"), object("specularTexture", kText
 const Shape kClearcoat{{number("clearcoatFactor"), object("clearcoatTexture", kTextureInfo), number("clearcoatRoughnessFactor"),
                         object("clearcoatRoughnessTexture", kTextureInfo),
                         object("clearcoatNormalTexture", kNormalTextureInfo)}};
-const Shape kIridescence{{number("iridescenceFactor"), object("iridescenceTexture", kTextureInfo), number("iridescenceIor"),
-                          number("iridescenceThicknessMinimum"), number("iridescenceThicknessMaximum"),
-                          object("iridescenceThicknessTexture", kTextureInfo)}};
+const Shape kIridescence{{number("iridescenceFactor"), object("iridescenceTexture", kTextureInfo),
+                          number("iridescenceIor"), number("iridescenceThicknessMinimum"),
+                          number("iridescenceThicknessMaximum"), object("iridescenceThicknessTexture", kTextureInfo)}};
 const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                        object("normalTexture", kNormalTextureInfo), object("occlusionTexture", kOcclusionTextureInfo),
                        object("emissiveTexture", kTextureInfo), numbers("emissiveFactor", 3), string("alphaMode"),
                        number("alphaCutoff"), boolean("doubleSided")},
                       {object("KHR_materials_ior", kIor), object("KHR_materials_emissive_strength", kEmissiveStrength),
                        object("KHR_materials_transmission", kTransmission), object("KHR_materials_specular", kSpecular),
-                       object("KHR_materials_clearcoat", kClearcoat), object("KHR_materials_iridescence", kIridescence)}};
+                       object("KHR_materials_clearcoat", kClearcoat),
+                       object("KHR_materials_iridescence", kIridescence)}};
 const Shape kPrimitive{{required(indexMap("attributes")), index("indices"), index("material"), index("mode"),
                         indexMaps("targets")}};
 const Shape kMesh{{string("name"), required(objects("primitives", kPrimitive)), numbers("weights")}};

@@ -188,7 +188,8 @@ vec2 openpbrLobeProbabilities(float baseWeight, vec3 baseColor, float metalness,
 vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
                  vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
-                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor, vec3 wi, vec3 wo) {
+                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor, vec3 wi,
+                 vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return vec3(0.0);  // one-sided; also false for NaN directions
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
@@ -286,7 +287,8 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
 float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
                  vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
-                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor, vec3 wi, vec3 wo) {
+                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor, vec3 wi,
+                 vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
@@ -329,12 +331,12 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
   return acceptSample(wi,
                       openpbrEval(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                                   specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
-                                  coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness,
-                                  thinFilmIor, wi, wo),
+                                  coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight,
+                                  thinFilmThickness, thinFilmIor, wi, wo),
                       openpbrPdf(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                                  specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
-                                 coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness,
-                                  thinFilmIor, wi, wo));
+                                 coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight,
+                                 thinFilmThickness, thinFilmIor, wi, wo));
 }
 
 #endif
