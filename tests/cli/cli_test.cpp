@@ -251,9 +251,15 @@ TEST(CliTest, HeatmapWritesTheCostOfEveryPixel) {
   const Image ticks = readExr(dir + "/cost.exr");
   ASSERT_EQ(ticks.width, 40u);
   ASSERT_EQ(ticks.height, 24u);
-  std::size_t positive = 0;
-  for (std::size_t i = 0; i < ticks.rgba.size(); i += 4) positive += ticks.rgba[i] > 0.0f;
-  EXPECT_EQ(positive, std::size_t(40 * 24)) << "every pixel took some time";
+  // Every pixel is written (never negative or NaN) and nearly all took time: on a machine whose hypervisor took
+  // most of each core, a fresh clone's run once read the same clock at both ends of 4 of the 960 pixels' samples.
+  std::size_t positive = 0, written = 0;
+  for (std::size_t i = 0; i < ticks.rgba.size(); i += 4) {
+    positive += ticks.rgba[i] > 0.0f;
+    written += ticks.rgba[i] >= 0.0f;
+  }
+  EXPECT_EQ(written, std::size_t(40 * 24)) << "every pixel has a cost";
+  EXPECT_GE(positive, std::size_t(40 * 24 * 99 / 100)) << "nearly every pixel took some time";
   // Per sample and plausible: a clock read behind its start used to wrap to about 1e19 ticks.
   float most = 0.0f;
   for (std::size_t i = 0; i < ticks.rgba.size(); i += 4) most = std::max(most, ticks.rgba[i]);
