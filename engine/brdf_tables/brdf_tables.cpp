@@ -8,6 +8,7 @@
 #include "brdf_params/material_params.h"
 #include "generated/ggx_albedo.h"
 #include "measured/measured_library.h"
+#include "reference/fuzz.h"
 #include "reference/thin_film.h"
 #include "shared/brdf_tables.h"
 #include "util/error.h"
@@ -39,6 +40,7 @@ std::vector<float> brdfTableValues() {
   }
   const std::vector<double>& film = reference::thinFilmSpectrum();
   for (std::size_t i = 0; i < film.size(); ++i) values[gpu::kThinFilmOffset + i] = static_cast<float>(film[i]);
+  std::copy(std::begin(reference::kFuzzLtcTable), std::end(reference::kFuzzLtcTable), values.begin() + gpu::kFuzzLtcOffset);
   return values;
 }
 

@@ -301,14 +301,17 @@ float indexWithin(float ior, const gpu::MaterialRecord& record, std::string_view
   return std::min(ior, iorMax);
 }
 
-// KHR_materials_clearcoat and KHR_materials_iridescence onto openpbr: the core factors as its base, the coat as its
-// coat and the iridescent film as its thin film. The extension's coat is a dielectric of index 1.5 whose Fresnel
+// KHR_materials_clearcoat, KHR_materials_iridescence and KHR_materials_sheen onto openpbr: the core factors as its
+// base, the coat as its coat, the iridescent film as its thin film and the sheen as its fuzz.
+// The sheen's layering is the fuzz's, f_sheen + (1 - max(sheenColor) E_sheen) f_base, so that sheenColor =
+// fuzz_weight fuzz_color with fuzz_weight = max(sheenColor): a black sheen is none. Only the lobe differs: glTF's
+// is Estevez & Kulla's "Charlie", openpbr's Zeltner et al.'s (docs/gltf.md). The extension's coat is a dielectric of index 1.5 whose Fresnel
 // term scales the base below it, with no internal reflections: openpbr's coat with coat_darkening 0 (albedo scaling
 // alone). KHR_materials_specular's factors go to specular_weight and specular_color, which mean nearly what they
 // mean in glTF (docs/gltf.md, "Material extensions").
 gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string& where) {
   gpu::MaterialRecord record = defaultRecord(modelId("openpbr"));
-  const std::string mapped = where + " (metallic-roughness under KHR_materials_clearcoat)";
+  const std::string mapped = where + " (metallic-roughness as openpbr's base)";
   setParam(record, "base_color", input.baseColor, mapped);
   setParam(record, "base_metalness", glm::vec3(input.metallic), mapped);
   setParam(record, "specular_roughness", glm::vec3(input.roughness), mapped);
@@ -332,6 +335,11 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
   setParam(record, "thin_film_weight", glm::vec3(input.iridescence), film);
   setParam(record, "thin_film_thickness", glm::vec3(std::min(micrometres, thickness.max)), film);
   setParam(record, "thin_film_ior", glm::vec3(std::clamp(input.iridescenceIor, filmIor.min, filmIor.max)), film);
+  const std::string sheen = where + " (KHR_materials_sheen)";
+  const float sheenWeight = std::max({input.sheenColor.r, input.sheenColor.g, input.sheenColor.b});
+  setParam(record, "fuzz_weight", glm::vec3(sheenWeight), sheen);
+  if (sheenWeight > 0.0f) setParam(record, "fuzz_color", input.sheenColor / sheenWeight, sheen);
+  setParam(record, "fuzz_roughness", glm::vec3(input.sheenRoughness), sheen);
   return record;
 }
 
@@ -354,7 +362,8 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
     setParam(record, "tint", input.baseColor, where + " (base colour as glass tint)");
     return record;
   }
-  if (input.clearcoat > 0.0f || input.iridescence > 0.0f) return mapLayered(input, where);
+  const bool sheen = input.sheenColor != glm::vec3(0.0f);
+  if (input.clearcoat > 0.0f || input.iridescence > 0.0f || sheen) return mapLayered(input, where);
   // glTF's own BRDF (Appendix B): the factors as they are, nothing approximated.
   gpu::MaterialRecord record = defaultRecord(modelId("gltf_pbr"));
   const std::string mapped = where + " (metallic-roughness)";
@@ -506,6 +515,22 @@ void convertMaterials(Document& document, Scene& scene) {
       }
       if (film->contains("iridescenceThicknessTexture")) {
         document.ignore(name + ".iridescenceThicknessTexture (the film is iridescenceThicknessMaximum thick)");
+      }
+    }
+
+    if (const json* sheen = findPath(materialJson, {"extensions", "KHR_materials_sheen"})) {
+      const std::string name = "KHR_materials_sheen";
+      if (const json* colour = findPath(*sheen, {"sheenColorFactor"})) {
+        for (int c = 0; c < 3; ++c) {
+          input.sheenColor[c] = checkedFactor((*colour)[std::size_t(c)].get<double>(), 0.0, 1.0, where,
+                                              name + ".sheenColorFactor[" + std::to_string(c) + "]");
+        }
+      }
+      if (const json* factor = findPath(*sheen, {"sheenRoughnessFactor"})) {
+        input.sheenRoughness = checkedFactor(factor->get<double>(), 0.0, 1.0, where, name + ".sheenRoughnessFactor");
+      }
+      for (const char* texture : {"sheenColorTexture", "sheenRoughnessTexture"}) {
+        if (sheen->contains(texture)) document.ignore(name + "." + texture + " (its factor applies alone)");
       }
     }
 

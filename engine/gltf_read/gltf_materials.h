@@ -29,10 +29,12 @@ struct MetallicRoughness {
   float iridescence = 0.0f;             // KHR_materials_iridescence.iridescenceFactor
   float iridescenceIor = 1.3f;          // KHR_materials_iridescence.iridescenceIor
   float iridescenceThicknessNm = 400.0f;  // KHR_materials_iridescence.iridescenceThicknessMaximum (no texture read)
+  glm::vec3 sheenColor{0.0f};           // KHR_materials_sheen.sheenColorFactor
+  float sheenRoughness = 0.0f;          // KHR_materials_sheen.sheenRoughnessFactor
 };
 
-// glass (eta = ior, tint = base colour) when transmission is 1; openpbr when a clear coat or an iridescent film
-// covers any of it (docs/gltf.md, "Material extensions"); else gltf_pbr, glTF's own BRDF, with the factors as they
+// glass (eta = ior, tint = base colour) when transmission is 1; openpbr when a clear coat, an iridescent film or a
+// sheen covers any of it (docs/gltf.md, "Material extensions"); else gltf_pbr, glTF's own BRDF, with the factors as they
 // are (an ior above gltf_pbr's 3 is used as 3, with a warning). `where` starts error messages.
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where);
 

@@ -73,6 +73,8 @@ const Shape kClearcoat{{number("clearcoatFactor"), object("clearcoatTexture", kT
 const Shape kIridescence{{number("iridescenceFactor"), object("iridescenceTexture", kTextureInfo),
                           number("iridescenceIor"), number("iridescenceThicknessMinimum"),
                           number("iridescenceThicknessMaximum"), object("iridescenceThicknessTexture", kTextureInfo)}};
+const Shape kSheen{{numbers("sheenColorFactor", 3), object("sheenColorTexture", kTextureInfo),
+                    number("sheenRoughnessFactor"), object("sheenRoughnessTexture", kTextureInfo)}};
 const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                        object("normalTexture", kNormalTextureInfo), object("occlusionTexture", kOcclusionTextureInfo),
                        object("emissiveTexture", kTextureInfo), numbers("emissiveFactor", 3), string("alphaMode"),
@@ -80,7 +82,7 @@ const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                       {object("KHR_materials_ior", kIor), object("KHR_materials_emissive_strength", kEmissiveStrength),
                        object("KHR_materials_transmission", kTransmission), object("KHR_materials_specular", kSpecular),
                        object("KHR_materials_clearcoat", kClearcoat),
-                       object("KHR_materials_iridescence", kIridescence)}};
+                       object("KHR_materials_iridescence", kIridescence), object("KHR_materials_sheen", kSheen)}};
 const Shape kPrimitive{{required(indexMap("attributes")), index("indices"), index("material"), index("mode"),
                         indexMaps("targets")}};
 const Shape kMesh{{string("name"), required(objects("primitives", kPrimitive)), numbers("weights")}};

@@ -1,7 +1,8 @@
-// OpenPBR Surface 1.1.1: a metal and a glossy-diffuse dielectric mixed by metalness, under a coat.
+// OpenPBR Surface 1.1.1: a metal and a glossy-diffuse dielectric mixed by metalness, under a coat and a fuzz.
 // lobes: reflection diffuse glossy
 // feature: coat coat_weight
 // feature: thin_film thin_film_weight
+// feature: fuzz fuzz_weight
 // fit: by name, its layers give one look many ways: which of them a fit frees is not yet designed (issue 38)
 // reciprocal: no, albedo scaling by 1 - E(wo) conserves energy but weighs wo and wi differently (OpenPBR)
 // look: base_color=0.8/0.25/0.1, specular_roughness=0.35, coat_weight=1, coat_roughness=0.05
@@ -27,6 +28,9 @@
 // | thin_film_weight              | [0, 1]   | 0       |                   | coverage of the thin film on the base     |
 // | thin_film_thickness           | [0, 5]   | 0.5     |                   | the film's thickness in micrometres       |
 // | thin_film_ior                 | [1, 3]   | 1.4     |                   | the film's index of refraction            |
+// | fuzz_weight                   | [0, 1]   | 0       |                   | coverage of the fuzz over everything      |
+// | fuzz_color                    | [0, 1]   | 1       | rgb               | tints the light the fuzz reflects         |
+// | fuzz_roughness                | [0, 1]   | 0.5     |                   | 0: fibres along the normal; 1: round flakes |
 // Portsmouth, Hoffman, Pharr, Kutz, Leidl et al., "OpenPBR Surface", Academy Software Foundation, v1.1.1, 2026,
 // section "Reduction to a mixture of lobes", with non-reciprocal albedo scaling (docs/brdfs.md, "openpbr"):
 //   f = C f_coat + lerp(1, T (1 - E_coat(wo)), C) lerp(1, Delta, C delta) lerp(f_dielectric, f_metal, M),
@@ -45,7 +49,10 @@
 // view-dependent absorption T = coat_color^((1/mu_i^t + 1/mu_o^t) / 2) with the cosines refracted into the coat,
 // roughening of the base r' = lerp(r, min(1, r^4 + 2 r_c^4)^(1/4), C), and darkening
 // Delta = (1 - K) / (1 - E_b K), K = lerp(F_coat(cos_o), 1 - (1 - E_F) / coat_ior^2, r_b).
-// Sampled as a mixture fixed per material: the cosine lobe, or GGX visible normals of the coat or of the base.
+// Fuzz (OpenPBR, "Fuzz", after Zeltner et al. 2022; fuzz.glsl): F fuzz_color f_fuzz + (1 - F E_fuzz(wo)) f_below,
+// F = fuzz_weight: the fuzz reflects E_fuzz of the light and passes the rest, untinted, to the coated base.
+// Sampled as a mixture fixed per material: the cosine lobe, or GGX visible normals of the coat or of the base, or
+// the fuzz's LTC.
 #ifndef RAYLAB_BRDF_OPENPBR_GLSL
 #define RAYLAB_BRDF_OPENPBR_GLSL
 
@@ -54,6 +61,7 @@
 #include "brdf/brdf_tables.glsl"
 #include "brdf/eon.glsl"
 #include "brdf/fresnel.glsl"
+#include "brdf/fuzz.glsl"
 #include "brdf/ggx.glsl"
 #include "brdf/sampling.glsl"
 #include "brdf/thin_film.glsl"
@@ -172,24 +180,65 @@ vec3 openpbrMetalMultipleScattering(vec3 F0, vec3 b, float weight, vec2 alpha, v
 }
 
 // The probabilities of the mixture: (the specular lobes against the cosine lobe, the coat within the specular
-// lobes). Fixed per material: a glossy share for the metal, four times the dielectric's F0 (its reflectance
-// rises towards grazing), a quarter for the coat, against the diffuse albedo.
-vec2 openpbrLobeProbabilities(float baseWeight, vec3 baseColor, float metalness, float specularWeight,
-                              float specularIor, float coatWeight, float coatIor) {
+// lobes, the fuzz within them). Fixed per material: a glossy share for the metal, four times the dielectric's F0
+// (its reflectance rises towards grazing), a quarter for the coat, half the fuzz's mean colour, against the diffuse
+// albedo.
+vec3 openpbrLobeProbabilities(float baseWeight, vec3 baseColor, float metalness, float specularWeight,
+                              float specularIor, float coatWeight, float coatIor, float fuzzWeight, vec3 fuzzColor) {
   const float eps = openpbrSpecularEps(specularWeight, specularIor, coatWeight, coatIor);
   const float diffuse = (1.0 - metalness) * baseWeight * sum3(baseColor) / 3.0;
   const float base = metalness + (1.0 - metalness) * min(1.0, 4.0 * eps * eps);
   const float coat = 0.25 * coatWeight;
-  const float specular = base + coat;
-  return vec2(diffuse + specular > 0.0 ? specular / (diffuse + specular) : 0.5,
-              specular > 0.0 ? coat / specular : 0.0);
+  const float fuzz = 0.5 * fuzzWeight * sum3(fuzzColor) / 3.0;
+  const float specular = base + coat + fuzz;
+  return vec3(diffuse + specular > 0.0 ? specular / (diffuse + specular) : 0.5,
+              specular > 0.0 ? coat / specular : 0.0, specular > 0.0 ? fuzz / specular : 0.0);
+}
+
+// The coat over the substrate: its reflection, the absorption along the two refracted paths through it, and the
+// darkening by the light it reflects back onto the base.
+vec3 openpbrCoatOver(vec3 substrate, vec3 wi, vec3 wo, vec3 h, float C, vec3 coatColor, float coatRoughness,
+                     float coatAnisotropy, float coatIor, float coatDarkening, float alphaTable, float eps, vec3 rho,
+                     vec3 specularColor, float specularWeight, float specularRoughness, float M) {
+  const vec2 alphaCoat = openpbrAlphas(coatRoughness, coatAnisotropy);
+  const float epsCoat = (coatIor - 1.0) / (coatIor + 1.0);
+  const vec3 coat = vec3(openpbrGgxReflection(wi, wo, h, alphaCoat, epsCoat));
+  const float coatPassed = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alphaCoat, wo), epsCoat);  // 1 - E_coat
+  // Absorption along the two paths through the coat, refracted: cos_t^2 = 1 - (1 - cos^2) / coat_ior^2.
+  const float inv2 = 1.0 / (coatIor * coatIor);
+  const float pathLength = 0.5 * (inversesqrt(1.0 - (1.0 - wi.z * wi.z) * inv2) +
+                                  inversesqrt(1.0 - (1.0 - wo.z * wo.z) * inv2));
+  const vec3 T = pow(max(coatColor, vec3(0.0)), vec3(pathLength));
+  // Darkening by the light the coat reflects back onto the base (OpenPBR, "Darkening").
+  vec3 darkening = vec3(1.0);
+  if (coatDarkening > 0.0) {
+    const float eSpecNormal = 1.0 - openpbrDielectricLoss(1.0, alphaTable, eps);
+    const vec3 eBase = mix(specularColor * eSpecNormal + (1.0 - eSpecNormal) * rho, min(specularWeight * rho, vec3(1.0)), M);
+    const float kRough = 1.0 - (1.0 - openpbrAverageFresnel(epsCoat)) * inv2;
+    const float kSmooth = openpbrFresnel(wo.z, epsCoat);
+    const float rDielectric = mix(1.0, specularRoughness, eps * eps);
+    const float K = mix(kSmooth, kRough, mix(rDielectric, specularRoughness, M));
+    // E_b, K <= 1: Delta <= 1, and 0/0 (a white base under a coat that returns everything) is no darkening.
+    const vec3 denominator = vec3(1.0) - eBase * K;
+    const vec3 delta = mix(vec3(1.0), (1.0 - K) / max(denominator, vec3(1e-30)), greaterThan(denominator, vec3(0.0)));
+    darkening = mix(vec3(1.0), delta, C * coatDarkening);
+  }
+  return C * coat + mix(vec3(1.0), T * coatPassed, C) * darkening * substrate;
+}
+
+// The fuzz over everything (fuzz.glsl), compiled only where a scene has one.
+vec3 openpbrFuzzOver(vec3 below, vec3 wi, vec3 wo, float fuzzWeight, vec3 fuzzColor, float fuzzRoughness) {
+  const float F = featureEnabled(kOpenpbrFeatureFuzz) ? fuzzWeight : 0.0;
+  if (!(F > 0.0)) return below;
+  const vec3 lobe = fuzzLobe(wo.z, fuzzRoughness);
+  return F * fuzzColor * (lobe.x * fuzzDensity(wi, wo, lobe) / wi.z) + (1.0 - F * lobe.x) * below;
 }
 
 vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
                  vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
-                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor, vec3 wi,
-                 vec3 wo) {
+                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
+                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return vec3(0.0);  // one-sided; also false for NaN directions
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
@@ -255,54 +304,35 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
   const vec3 metal = min(specularWeight * metalF, vec3(1.0)) * openpbrMicrofacet(wi, wo, h, alpha) +
                      openpbrMetalMultipleScattering(rho, b, specularWeight, alpha, wi, wo);
   const vec3 substrate = mix(dielectric, metal, M);
-  if (!(C > 0.0)) return substrate;
-
-  // The coat over it.
-  const vec2 alphaCoat = openpbrAlphas(coatRoughness, coatAnisotropy);
-  const float epsCoat = (coatIor - 1.0) / (coatIor + 1.0);
-  const vec3 coat = vec3(openpbrGgxReflection(wi, wo, h, alphaCoat, epsCoat));
-  const float coatPassed = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alphaCoat, wo), epsCoat);  // 1 - E_coat
-  // Absorption along the two paths through the coat, refracted: cos_t^2 = 1 - (1 - cos^2) / coat_ior^2.
-  const float inv2 = 1.0 / (coatIor * coatIor);
-  const float pathLength = 0.5 * (inversesqrt(1.0 - (1.0 - wi.z * wi.z) * inv2) +
-                                  inversesqrt(1.0 - (1.0 - wo.z * wo.z) * inv2));
-  const vec3 T = pow(max(coatColor, vec3(0.0)), vec3(pathLength));
-  // Darkening by the light the coat reflects back onto the base (OpenPBR, "Darkening").
-  vec3 darkening = vec3(1.0);
-  if (coatDarkening > 0.0) {
-    const float eSpecNormal = 1.0 - openpbrDielectricLoss(1.0, alphaTable, eps);
-    const vec3 eBase = mix(specularColor * eSpecNormal + (1.0 - eSpecNormal) * rho, min(specularWeight * rho, vec3(1.0)), M);
-    const float kRough = 1.0 - (1.0 - openpbrAverageFresnel(epsCoat)) * inv2;
-    const float kSmooth = openpbrFresnel(wo.z, epsCoat);
-    const float rDielectric = mix(1.0, specularRoughness, eps * eps);
-    const float K = mix(kSmooth, kRough, mix(rDielectric, specularRoughness, M));
-    // E_b, K <= 1: Delta <= 1, and 0/0 (a white base under a coat that returns everything) is no darkening.
-    const vec3 denominator = vec3(1.0) - eBase * K;
-    const vec3 delta = mix(vec3(1.0), (1.0 - K) / max(denominator, vec3(1e-30)), greaterThan(denominator, vec3(0.0)));
-    darkening = mix(vec3(1.0), delta, C * coatDarkening);
-  }
-  return C * coat + mix(vec3(1.0), T * coatPassed, C) * darkening * substrate;
+  return openpbrFuzzOver(C > 0.0 ? openpbrCoatOver(substrate, wi, wo, h, C, coatColor, coatRoughness, coatAnisotropy,
+                                                   coatIor, coatDarkening, alphaTable, eps, rho, specularColor,
+                                                   specularWeight, specularRoughness, M)
+                                 : substrate,
+                         wi, wo, fuzzWeight, fuzzColor, fuzzRoughness);
 }
+
 
 float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
                  vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
-                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor, vec3 wi,
-                 vec3 wo) {
+                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
+                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
   coatWeight = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;  // as in openpbrEval
-  const vec2 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
-                                          coatIor);
+  fuzzWeight = featureEnabled(kOpenpbrFeatureFuzz) ? fuzzWeight : 0.0;
+  const vec3 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
+                                          coatIor, fuzzWeight, fuzzColor);
   precise const vec3 h = wi + wo;
   const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, coatWeight, coatRoughness),
                                    specularAnisotropy);
-  float specular = (1.0 - p.y) * ggxReflectionPdf(h, wo, alpha.x, alpha.y);
+  float specular = (1.0 - p.y - p.z) * ggxReflectionPdf(h, wo, alpha.x, alpha.y);
   if (p.y > 0.0) {
     const vec2 alphaCoat = openpbrAlphas(coatRoughness, coatAnisotropy);
     specular += p.y * ggxReflectionPdf(h, wo, alphaCoat.x, alphaCoat.y);
   }
+  if (p.z > 0.0) specular += p.z * fuzzDensity(wi, wo, fuzzLobe(wo.z, fuzzRoughness));
   return (1.0 - p.x) * cosineHemispherePdf(wi) + p.x * specular;
 }
 
@@ -310,19 +340,24 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                          float specularWeight, vec3 specularColor, float specularRoughness, float specularAnisotropy,
                          float specularIor, float coatWeight, vec3 coatColor, float coatRoughness,
                          float coatAnisotropy, float coatIor, float coatDarkening, float thinFilmWeight,
-                         float thinFilmThickness, float thinFilmIor, vec3 wo, vec3 u) {
+                         float thinFilmThickness, float thinFilmIor, float fuzzWeight, vec3 fuzzColor,
+                         float fuzzRoughness, vec3 wo, vec3 u) {
   if (!(wo.z > 0.0)) return noSample();
   coatWeight = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;  // as in openpbrEval
-  const vec2 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
-                                          coatIor);
+  fuzzWeight = featureEnabled(kOpenpbrFeatureFuzz) ? fuzzWeight : 0.0;
+  const vec3 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
+                                          coatIor, fuzzWeight, fuzzColor);
   vec3 wi;
-  if (u.x < p.x) {
-    // u.y picks the coat or the base and is stretched back to [0, 1) for the visible-normal sampler.
+  if (u.x < p.x && u.y >= p.y && u.y < p.y + p.z) {
+    // u.y picks the coat, the fuzz or the base, and is stretched back to [0, 1) for the lobe's sampler.
+    const vec3 w = liftOffHorizon(wo);  // as openpbrPdf reads the lobe
+    wi = sampleFuzz(w, fuzzLobe(w.z, fuzzRoughness), vec2(min((u.y - p.y) / p.z, 0.99999994), u.z));
+  } else if (u.x < p.x) {
     const bool coat = u.y < p.y;
     const vec2 alpha = coat ? openpbrAlphas(coatRoughness, coatAnisotropy)
                             : openpbrAlphas(openpbrBaseRoughness(specularRoughness, coatWeight, coatRoughness),
                                             specularAnisotropy);
-    const float v = coat ? u.y / p.y : (u.y - p.y) / (1.0 - p.y);
+    const float v = coat ? u.y / p.y : (u.y - p.y - p.z) / (1.0 - p.y - p.z);
     wi = reflectAbout(wo, sampleGgxVisibleNormal(liftOffHorizon(wo), alpha.x, alpha.y, vec2(min(v, 0.99999994), u.z)));
   } else {
     wi = sampleCosineHemisphere(u.yz);
@@ -332,11 +367,11 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                       openpbrEval(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                                   specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
                                   coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight,
-                                  thinFilmThickness, thinFilmIor, wi, wo),
+                                  thinFilmThickness, thinFilmIor, fuzzWeight, fuzzColor, fuzzRoughness, wi, wo),
                       openpbrPdf(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                                  specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
                                  coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight,
-                                 thinFilmThickness, thinFilmIor, wi, wo));
+                                 thinFilmThickness, thinFilmIor, fuzzWeight, fuzzColor, fuzzRoughness, wi, wo));
 }
 
 #endif

@@ -18,6 +18,9 @@
 //   [kThinFilmOffset, +6 kThinFilmSamples)    the thin film's spectral integrals G_c(t), t = k kThinFilmStepNm, as
 //                                             (Re, Im) of channels r, g, b per k (engine/reference/thin_film.h;
 //                                             computed when the tables are made, not at build time)
+//   [kFuzzLtcOffset, +kFuzzLtcFloats)         the fuzz's fitted lobe (E_fuzz, a, b) at [3 (i size + j) + k]:
+//                                             roughness_i = i / (size - 1), mu_j = j / (size - 1), size kFuzzLtcSize
+//                                             (engine/reference/fuzz.h; committed, written by raylab_fuzz_table)
 // The values above it are computed at build time (engine/reference/ggx_albedo_table.cpp) into generated/ggx_albedo.h.
 //   [kFileDirectoryOffset, +kMaxFileBlocks)   where block b begins, as the bits of a uint: the files the scene uses,
 //                                             in the order the upload numbers them (engine/brdf_tables), from
@@ -56,7 +59,10 @@ RL_CONST uint kThinFilmSamples = 1024;
 RL_CONST float kThinFilmStepNm = 12.5;
 RL_CONST uint kThinFilmTerms = 12;
 RL_CONST uint kThinFilmOffset = kAverageFresnelOffset + kDielectricAlbedoEpsSize;
-RL_CONST uint kBrdfTableFloats = kThinFilmOffset + 6 * kThinFilmSamples;
+RL_CONST uint kFuzzLtcSize = 32;
+RL_CONST uint kFuzzLtcFloats = 3 * kFuzzLtcSize * kFuzzLtcSize;
+RL_CONST uint kFuzzLtcOffset = kThinFilmOffset + 6 * kThinFilmSamples;
+RL_CONST uint kBrdfTableFloats = kFuzzLtcOffset + kFuzzLtcFloats;
 
 RL_CONST uint kMerlThetaHBins = 90;
 RL_CONST uint kMerlThetaDBins = 90;

@@ -224,11 +224,13 @@ TEST(MaterialTable, ModelFeaturesHaveTheirOwnBitsAboveTheFixedFeatures) {
     }
   }
   const ModelInfo& openpbr = *findModel("openpbr");
-  ASSERT_EQ(openpbr.features.size(), 2u);
+  ASSERT_EQ(openpbr.features.size(), 3u);
   EXPECT_EQ(openpbr.features[0].name, "coat");
   EXPECT_EQ(openpbr.features[0].param, "coat_weight");
   EXPECT_EQ(openpbr.features[1].name, "thin_film");
   EXPECT_EQ(openpbr.features[1].param, "thin_film_weight");
+  EXPECT_EQ(openpbr.features[2].name, "fuzz");
+  EXPECT_EQ(openpbr.features[2].param, "fuzz_weight");
 }
 
 }  // namespace

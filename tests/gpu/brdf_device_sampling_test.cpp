@@ -76,6 +76,9 @@ std::vector<SamplingCase> samplingCases() {
                    {"coat_weight", 1.0f}, {"coat_roughness", 0.2f}}},
       {"openpbr", {{"base_color", 0.9f}, {"base_metalness", 1.0f}, {"specular_roughness", 0.4f},
                    {"coat_weight", 0.5f}, {"coat_roughness", 0.3f}, {"coat_roughness_anisotropy", 0.6f}}},
+      // Fuzz over a coated diffuse base: the fuzz's LTC as a third lobe.
+      {"openpbr", {{"base_color", 0.5f}, {"coat_weight", 1.0f}, {"coat_roughness", 0.1f}, {"fuzz_weight", 1.0f},
+                   {"fuzz_roughness", 0.4f}, {"fuzz_color", 0.9f}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;

@@ -65,11 +65,12 @@ std::vector<FurnaceCase> furnaceCases() {
                                                                    {"k", 20.0f}, {"multiscatter", 1.0f}})},
       // OpenPBR's white-furnace list (the CPU test sweeps it at the BSDF level): a white metal under a thin film (a
       // film over a perfect mirror reflects everything), compiled with the film and without the coat, and a white
-      // diffuse base under a white coat, compiled without the film.
+      // diffuse base under a white coat and a white fuzz, compiled without the film.
       {"openpbr metal + thin film", material("openpbr", {{"base_color", 1.0f}, {"base_metalness", 1.0f},
                                                           {"specular_roughness", 0.5f}, {"thin_film_weight", 1.0f},
                                                           {"thin_film_thickness", 0.4f}, {"thin_film_ior", 1.8f}})},
-      {"openpbr diffuse + coat", material("openpbr", {{"base_color", 1.0f}, {"coat_weight", 1.0f}, {"coat_roughness", 0.2f}})},
+      {"openpbr diffuse + coat + fuzz", material("openpbr", {{"base_color", 1.0f}, {"coat_weight", 1.0f}, {"coat_roughness", 0.2f},
+                                                              {"fuzz_weight", 1.0f}, {"fuzz_roughness", 0.5f}})},
   };
 }
 
@@ -78,7 +79,7 @@ TEST_F(PathIntegratorTest, WhiteFurnaceRendersEachModelsDirectionalAlbedo) {
   for (const FurnaceCase& c : furnaceCases()) {
     const Scene scene = furnace(c.material, glm::vec3(1.0f));
     // A model's own features are compiled exactly when a material uses them: openpbr's coat only with a coat, its
-    // film only with a film.
+    // film only with a film, its fuzz only with a fuzz.
     for (const ModelFeature& feature : modelInfo(c.material.model).features) {
       EXPECT_EQ((featuresOf(scene).features & feature.bit) != 0, getParam(c.material, feature.param).x > 0.0f)
           << c.label << ": " << feature.name;

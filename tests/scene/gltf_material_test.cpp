@@ -423,6 +423,33 @@ TEST(GltfMaterial, KhrMaterialsIridescenceIsOpenPbrsThinFilm) {
   }
 }
 
+// KHR_materials_sheen maps onto openpbr's fuzz: both layer as f_sheen + (1 - max(colour) E) f_base, so the weight is
+// the colour's largest channel and the fuzz's colour the rest of it. A black sheen (the default) leaves glTF's BRDF.
+TEST(GltfMaterial, KhrMaterialsSheenIsOpenPbrsFuzz) {
+  WarningCapture warnings;
+  const Scene scene = loadMaterial({{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.1, 0.3, 1.0}}, {"metallicFactor", 0.0}}},
+                                    {"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {0.8, 0.4, 0.2}},
+                                                                             {"sheenRoughnessFactor", 0.6}}}}}});
+  const gpu::MaterialRecord& r = scene.materials[0].record;
+  EXPECT_EQ(r.model, modelId("openpbr"));
+  EXPECT_FLOAT_EQ(getParam(r, "fuzz_weight").x, 0.8f);
+  EXPECT_EQ(getParam(r, "fuzz_color"), glm::vec3(1.0f, 0.5f, 0.25f));
+  EXPECT_FLOAT_EQ(getParam(r, "fuzz_roughness").x, 0.6f);
+  EXPECT_EQ(getParam(r, "base_color"), glm::vec3(0.2f, 0.1f, 0.3f));
+  EXPECT_EQ(warnings.count("KHR_materials_sheen"), 0) << "read, not ignored";
+  const Scene none = loadMaterial({{"extensions", {{"KHR_materials_sheen", {{"sheenRoughnessFactor", 0.5}}}}}});
+  EXPECT_EQ(none.materials[0].record.model, modelId("gltf_pbr"));
+  const Scene textured = loadMaterial({{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {1.0, 1.0, 1.0}},
+                                                                              {"sheenColorTexture", {{"index", 0}}}}}}}});
+  EXPECT_EQ(warnings.count("sheenColorTexture"), 1) << "its texture is not yet read, and says so";
+  for (const json& bad : {json{{"sheenColorFactor", {1.5, 0.0, 0.0}}}, json{{"sheenRoughnessFactor", -0.1}},
+                          json{{"sheenColorFactor", {0.5, 0.5}}}, json{{"sheenRoughnessFactor", "1"}}}) {
+    const std::string error = materialError({{"name", "bad sheen"}, {"extensions", {{"KHR_materials_sheen", bad}}}});
+    EXPECT_NE(error.find("sheen"), std::string::npos) << error;
+    EXPECT_TRUE(error.find("bad sheen") != std::string::npos || error.find("materials[0]") != std::string::npos) << error;
+  }
+}
+
 // glTF 3.9.3: the emissive texture is multiplied by emissiveFactor, whose default is zero.
 TEST(GltfMaterial, AnEmissiveTextureMultipliesTheFactorAndIsSkippedUnderAZeroOne) {
   GltfBuilder lit = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));

@@ -1,15 +1,17 @@
 // OpenPBR Surface 1.1.1 (Academy Software Foundation), its "Reduction to a mixture of lobes" with non-reciprocal
 // albedo scaling, as the specification's sections write each piece (docs/brdfs.md, "openpbr"): the F82-tint
 // metal with Kulla & Conty's multiple scattering, the glossy-diffuse dielectric (GGX reflection over EON scaled by
-// 1 - E_spec(wo)), the metalness mix, and the coat (its reflection, view-dependent absorption, roughening and
-// darkening). The directional albedos E come from the build-time table (reference/albedo_tables.h); the rest is
-// written here in double from the formulas, not from the GLSL.
+// 1 - E_spec(wo)), the metalness mix, the coat (its reflection, view-dependent absorption, roughening and
+// darkening), the thin film, and the fuzz over all (Zeltner et al.'s LTC, reference/fuzz.h). The directional
+// albedos E come from the build-time table (reference/albedo_tables.h); the rest is written here in double from the
+// formulas, not from the GLSL.
 #include <algorithm>
 #include <cmath>
 #include <complex>
 
 #include "generated/reference_params.h"
 #include "reference/albedo_tables.h"
+#include "reference/fuzz.h"
 #include "reference/ggx.h"
 #include "reference/sampling.h"
 #include "reference/terms.h"
@@ -139,14 +141,28 @@ dvec3 filmAlbedo(const OpenpbrParams& p, double eps, const Alphas& alpha, const 
   return glm::clamp(dvec3(eSpec) + (film - bare) / n, 0.0, 1.0);
 }
 
-// The fixed mixture: {specular lobes against the cosine lobe, the coat within the specular lobes}.
-dvec2 lobeProbabilities(const OpenpbrParams& p) {
+// The fixed mixture: {specular lobes against the cosine lobe, the coat within the specular lobes, the fuzz within
+// them}.
+dvec3 lobeProbabilities(const OpenpbrParams& p) {
   const double eps = specularEps(p);
   const double diffuse = (1.0 - p.base_metalness) * p.base_weight * (p.base_color.x + p.base_color.y + p.base_color.z) / 3.0;
   const double base = p.base_metalness + (1.0 - p.base_metalness) * std::min(1.0, 4.0 * eps * eps);
   const double coat = 0.25 * p.coat_weight;
-  const double specular = base + coat;
-  return {diffuse + specular > 0.0 ? specular / (diffuse + specular) : 0.5, specular > 0.0 ? coat / specular : 0.0};
+  const double fuzz = 0.5 * p.fuzz_weight * (p.fuzz_color.x + p.fuzz_color.y + p.fuzz_color.z) / 3.0;
+  const double specular = base + coat + fuzz;
+  return {diffuse + specular > 0.0 ? specular / (diffuse + specular) : 0.5, specular > 0.0 ? coat / specular : 0.0,
+          specular > 0.0 ? fuzz / specular : 0.0};
+}
+
+// The fuzz over everything (OpenPBR, "Fuzz"): F fuzz_color f_fuzz + (1 - F E_fuzz(wo)) f_below. Its lobe is broad, so
+// it joins the diffuse term, which the albedo quadrature integrates over the hemisphere's (cos, azimuth).
+Lobes fuzzOver(const OpenpbrParams& p, const Lobes& below, const dvec3& wi, const dvec3& wo) {
+  const double F = p.fuzz_weight;
+  if (!(F > 0.0)) return below;
+  const FuzzLobe lobe = fuzzLobe(wo.z, p.fuzz_roughness);
+  const double passed = 1.0 - F * lobe.albedo;
+  return {F * p.fuzz_color * (lobe.albedo * fuzzDensity(wi, wo, lobe) / wi.z) + passed * below.diffuse,
+          passed * below.specular};
 }
 
 }  // namespace
@@ -180,7 +196,7 @@ Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
                       metalMultipleScattering(rho, b, p.specular_weight, alpha, wi, wo);
 
   Lobes substrate{(1.0 - M) * diffuse, (1.0 - M) * specular + M * metal};
-  if (!(C > 0.0)) return substrate;
+  if (!(C > 0.0)) return fuzzOver(p, substrate, wi, wo);
 
   // The coat: its reflection, and what it passes to the base.
   const Alphas alphaCoat = coatAlphas(p);
@@ -209,22 +225,31 @@ Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
     }
   }
   const dvec3 below = ((1.0 - C) + C * T * coatPassed) * darkening;
-  return {below * substrate.diffuse, C * coat + below * substrate.specular};
+  return fuzzOver(p, {below * substrate.diffuse, C * coat + below * substrate.specular}, wi, wo);
 }
 
-// The specular lobes: the coat's GGX with probability q (u.x stretched back to [0, 1)), else the base's.
+// The specular lobes: the coat's GGX with probability q, the fuzz's LTC with probability z, else the base's GGX
+// (u.x stretched back to [0, 1) for the lobe's sampler).
 dvec3 openpbrSampleSpecular(const OpenpbrParams& p, const dvec3& wo, const dvec2& u) {
-  const double q = lobeProbabilities(p).y;
+  const dvec3 probabilities = lobeProbabilities(p);
+  const double q = probabilities.y, z = probabilities.z;
+  if (u.x >= q && u.x < q + z) {
+    return sampleFuzz(wo, fuzzLobe(wo.z, p.fuzz_roughness), dvec2(std::min((u.x - q) / z, 1.0 - 1e-12), u.y));
+  }
   const bool coat = u.x < q;
   const Alphas a = coat ? coatAlphas(p) : baseAlphas(p);
-  const double v = coat ? u.x / q : (u.x - q) / (1.0 - q);
+  const double v = coat ? u.x / q : (u.x - q - z) / (1.0 - q - z);
   return reflectAbout(wo, sampleGgxVisibleNormal(wo, a.t, a.b, dvec2(std::min(v, 1.0 - 1e-12), u.y)));
 }
 
 double openpbrPdfSpecular(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
-  const double q = lobeProbabilities(p).y;
+  const dvec3 probabilities = lobeProbabilities(p);
+  const double q = probabilities.y, z = probabilities.z;
   const Alphas base = baseAlphas(p), coat = coatAlphas(p);
-  return (1.0 - q) * ggxReflectionPdf(wi + wo, wo, base.t, base.b) + q * ggxReflectionPdf(wi + wo, wo, coat.t, coat.b);
+  double density = (1.0 - q - z) * ggxReflectionPdf(wi + wo, wo, base.t, base.b) +
+                   q * ggxReflectionPdf(wi + wo, wo, coat.t, coat.b);
+  if (z > 0.0) density += z * fuzzDensity(wi, wo, fuzzLobe(wo.z, p.fuzz_roughness));
+  return density;
 }
 
 SpecularLobe openpbrSpecularLobe(const OpenpbrParams& p) {
