@@ -56,6 +56,9 @@ std::uint32_t lobeFlags(const Material& material);
 // Empty for every other model.
 std::optional<dvec3> sampleTwoSided(const Material& material, const dvec3& wo, const dvec3& u);
 std::optional<double> pdfTwoSided(const Material& material, const dvec3& wi, const dvec3& wo);
+// The absorption coefficient per unit length inside a transmissive material (a model's `medium:` line: openpbr's
+// volume); zero for every other model and material.
+dvec3 mediumAbsorption(const Material& material);
 // A two-sided model's index of refraction, inside over outside (its parameter of kind eta); empty for the others.
 std::optional<double> transmissionEta(const Material& material);
 // A model whose f is a table read from a file (measured): a step function of the directions, which the albedo

@@ -30,6 +30,10 @@ BsdfSample bsdfSample(MaterialRecord m, vec3 wo, vec3 u) { return modelSample(m,
 // The lobe flags the model declares (shared/brdf_lobes.h).
 uint bsdfFlags(MaterialRecord m) { return modelFlags(m.model); }
 
+// The absorption coefficient per unit length inside a transmissive material with a volume (openpbr's
+// transmission_depth > 0); zero for every other material. The path integrator attenuates the segments inside by it.
+vec3 bsdfMediumAbsorption(MaterialRecord m) { return modelMediumAbsorption(m); }
+
 // True for a BSDF of delta lobes only (glass): bsdfEval, bsdfPdf and light sampling see nothing of it.
 bool isSpecularOnly(uint flags) { return (flags & (kLobeDiffuse | kLobeGlossy)) == 0u; }
 

@@ -1,8 +1,10 @@
 // OpenPBR Surface 1.1.1: a metal and a glossy-diffuse dielectric mixed by metalness, under a coat and a fuzz.
-// lobes: reflection diffuse glossy
+// lobes: reflection transmission diffuse glossy
 // feature: coat coat_weight
 // feature: thin_film thin_film_weight
 // feature: fuzz fuzz_weight
+// feature: transmission transmission_weight
+// medium: transmission_weight base_metalness transmission_color transmission_depth
 // fit: by name, its layers give one look many ways: which of them a fit frees is not yet designed (issue 38)
 // reciprocal: no, albedo scaling by 1 - E(wo) conserves energy but weighs wo and wi differently (OpenPBR)
 // look: base_color=0.8/0.25/0.1, specular_roughness=0.35, coat_weight=1, coat_roughness=0.05
@@ -31,6 +33,9 @@
 // | fuzz_weight                   | [0, 1]   | 0       |                   | coverage of the fuzz over everything      |
 // | fuzz_color                    | [0, 1]   | 1       | rgb               | tints the light the fuzz reflects         |
 // | fuzz_roughness                | [0, 1]   | 0.5     |                   | 0: fibres along the normal; 1: round flakes |
+// | transmission_weight           | [0, 1]   | 0       |                   | the dielectric's share that lets light through |
+// | transmission_color            | [0, 1]   | 1       | rgb               | the colour the volume reaches at transmission_depth |
+// | transmission_depth            | [0, 1000] | 0      |                   | that depth in scene units; 0: no volume, tinted at the surface |
 // Portsmouth, Hoffman, Pharr, Kutz, Leidl et al., "OpenPBR Surface", Academy Software Foundation, v1.1.1, 2026,
 // section "Reduction to a mixture of lobes", with non-reciprocal albedo scaling (docs/brdfs.md, "openpbr"):
 //   f = C f_coat + lerp(1, T (1 - E_coat(wo)), C) lerp(1, Delta, C delta) lerp(f_dielectric, f_metal, M),
@@ -62,6 +67,7 @@
 #include "brdf/eon.glsl"
 #include "brdf/fresnel.glsl"
 #include "brdf/fuzz.glsl"
+#include "brdf/ggx_dielectric.glsl"
 #include "brdf/ggx.glsl"
 #include "brdf/sampling.glsl"
 #include "brdf/thin_film.glsl"
@@ -234,11 +240,11 @@ vec3 openpbrFuzzOver(vec3 below, vec3 wi, vec3 wo, float fuzzWeight, vec3 fuzzCo
   return F * fuzzColor * (lobe.x * fuzzDensity(wi, wo, lobe) / wi.z) + (1.0 - F * lobe.x) * below;
 }
 
-vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
+vec3 openpbrReflection(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
                  vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
-                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, vec3 wi, vec3 wo) {
+                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float diffuseScale, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return vec3(0.0);  // one-sided; also false for NaN directions
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
@@ -300,7 +306,7 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
     metalF = mix(metalF, metalFilm, W);
   }
   const vec3 dielectric = specularColor * F * openpbrMicrofacet(wi, wo, h, alpha) +
-                          passed * eonEval(rho, diffuseRoughness, wi, wo);
+                          diffuseScale * passed * eonEval(rho, diffuseRoughness, wi, wo);
   const vec3 metal = min(specularWeight * metalF, vec3(1.0)) * openpbrMicrofacet(wi, wo, h, alpha) +
                      openpbrMetalMultipleScattering(rho, b, specularWeight, alpha, wi, wo);
   const vec3 substrate = mix(dielectric, metal, M);
@@ -312,7 +318,7 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
 }
 
 
-float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
+float openpbrReflectionPdf(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
                  vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
@@ -320,7 +326,7 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
   if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
-  coatWeight = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;  // as in openpbrEval
+  coatWeight = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;  // as in openpbrReflection
   fuzzWeight = featureEnabled(kOpenpbrFeatureFuzz) ? fuzzWeight : 0.0;
   const vec3 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
                                           coatIor, fuzzWeight, fuzzColor);
@@ -336,42 +342,172 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
   return (1.0 - p.x) * cosineHemispherePdf(wi) + p.x * specular;
 }
 
-BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness,
-                         float specularWeight, vec3 specularColor, float specularRoughness, float specularAnisotropy,
-                         float specularIor, float coatWeight, vec3 coatColor, float coatRoughness,
-                         float coatAnisotropy, float coatIor, float coatDarkening, float thinFilmWeight,
-                         float thinFilmThickness, float thinFilmIor, float fuzzWeight, vec3 fuzzColor,
-                         float fuzzRoughness, vec3 wo, vec3 u) {
-  if (!(wo.z > 0.0)) return noSample();
-  coatWeight = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;  // as in openpbrEval
+// A direction from the reflection's mixture (zero when it fails); the caller evaluates f and the density.
+vec3 openpbrReflectionDirection(float baseWeight, vec3 baseColor, float metalness, float specularWeight,
+                                float specularRoughness, float specularAnisotropy, float specularIor, float coatWeight,
+                                float coatRoughness, float coatAnisotropy, float coatIor, float fuzzWeight,
+                                vec3 fuzzColor, float fuzzRoughness, vec3 wo, vec3 u) {
+  if (!(wo.z > 0.0)) return vec3(0.0);
+  coatWeight = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;  // as in openpbrReflection
   fuzzWeight = featureEnabled(kOpenpbrFeatureFuzz) ? fuzzWeight : 0.0;
   const vec3 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
                                           coatIor, fuzzWeight, fuzzColor);
-  vec3 wi;
   if (u.x < p.x && u.y >= p.y && u.y < p.y + p.z) {
     // u.y picks the coat, the fuzz or the base, and is stretched back to [0, 1) for the lobe's sampler.
-    const vec3 w = liftOffHorizon(wo);  // as openpbrPdf reads the lobe
-    wi = sampleFuzz(w, fuzzLobe(w.z, fuzzRoughness), vec2(min((u.y - p.y) / p.z, 0.99999994), u.z));
-  } else if (u.x < p.x) {
+    const vec3 w = liftOffHorizon(wo);  // as openpbrReflectionPdf reads the lobe
+    return sampleFuzz(w, fuzzLobe(w.z, fuzzRoughness), vec2(min((u.y - p.y) / p.z, 0.99999994), u.z));
+  }
+  if (u.x < p.x) {
     const bool coat = u.y < p.y;
     const vec2 alpha = coat ? openpbrAlphas(coatRoughness, coatAnisotropy)
                             : openpbrAlphas(openpbrBaseRoughness(specularRoughness, coatWeight, coatRoughness),
                                             specularAnisotropy);
     const float v = coat ? u.y / p.y : (u.y - p.y - p.z) / (1.0 - p.y - p.z);
-    wi = reflectAbout(wo, sampleGgxVisibleNormal(liftOffHorizon(wo), alpha.x, alpha.y, vec2(min(v, 0.99999994), u.z)));
-  } else {
-    wi = sampleCosineHemisphere(u.yz);
+    return reflectAbout(wo, sampleGgxVisibleNormal(liftOffHorizon(wo), alpha.x, alpha.y, vec2(min(v, 0.99999994), u.z)));
   }
-  if (!(wi.z > 0.0)) return noSample();
-  return acceptSample(wi,
-                      openpbrEval(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
-                                  specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
-                                  coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight,
-                                  thinFilmThickness, thinFilmIor, fuzzWeight, fuzzColor, fuzzRoughness, wi, wo),
-                      openpbrPdf(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
-                                 specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
-                                 coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight,
-                                 thinFilmThickness, thinFilmIor, fuzzWeight, fuzzColor, fuzzRoughness, wi, wo));
+  return sampleCosineHemisphere(u.yz);
+}
+
+// The translucent base (OpenPBR, "Translucent base"), compiled only where a scene has one: T = transmission_weight
+// of the dielectric (the metal is opaque) refracts through the dielectric's own GGX interface, index specular_ior
+// (parallel layers above bend the light back: only the base's index decides where it goes) and the base's
+// roughness, into the object. transmission_depth > 0: a volume whose absorption the path integrator applies
+// (openpbrMediumAbsorption); 0: no volume, transmission_color tints the light at the interface on its way in. The
+// reflection off the outside keeps its specular term and scales the glossy-diffuse part by 1 - T. What crosses the
+// surface also crosses the coat and the fuzz: scaled by what they pass along the outside direction.
+// An opaque material (T = 0) is shaded on either side, as every opaque surface: the model is two-sided only for
+// its transmission.
+float openpbrTransmissionShare(float transmissionWeight, float metalness) {
+  return featureEnabled(kOpenpbrFeatureTransmission) ? transmissionWeight * (1.0 - metalness) : 0.0;
+}
+// ggx_dielectric's index floor: an index of 1 has no refraction half vector.
+float openpbrTransmissionEta(float specularIor) { return max(specularIor, 1.001); }
+// The share of the sampler's choices that go to the interface's own sampler (reflect or refract by F) when wo is
+// outside, against the reflection's mixture (the coat's and fuzz's lobes, the diffuse the rest keeps).
+const float kOpenpbrInterfaceShare = 0.75;
+
+// What the coat and the fuzz pass of light crossing them along w (outside): the coat's 1 - E_coat and its absorption
+// along one refracted crossing (coat_color is the transmittance there and back at normal incidence), the fuzz's
+// 1 - F E_fuzz.
+vec3 openpbrLayersPassed(vec3 w, float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy,
+                         float coatIor, float fuzzWeight, float fuzzRoughness) {
+  vec3 passed = vec3(1.0);
+  const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
+  if (C > 0.0) {
+    const float epsCoat = (coatIor - 1.0) / (coatIor + 1.0);
+    const float loss = openpbrDielectricLoss(w.z, openpbrProjectedAlpha(openpbrAlphas(coatRoughness, coatAnisotropy), w),
+                                             epsCoat);
+    const float cosT = sqrt(1.0 - (1.0 - w.z * w.z) / (coatIor * coatIor));
+    passed *= mix(vec3(1.0), pow(max(coatColor, vec3(0.0)), vec3(0.5 / cosT)) * loss, C);
+  }
+  const float F = featureEnabled(kOpenpbrFeatureFuzz) ? fuzzWeight : 0.0;
+  if (F > 0.0) passed *= 1.0 - F * fuzzLobe(w.z, fuzzRoughness).x;
+  return passed;
+}
+
+// The interior's absorption coefficient per unit length, -ln(transmission_color) / transmission_depth, for the path
+// integrator's Beer-Lambert attenuation inside (Beer's law with the colour reached at that depth); 0 without a volume.
+// A channel of colour 0 absorbs everything: 1e30 per unit length.
+vec3 openpbrMediumAbsorption(float transmissionWeight, float metalness, vec3 transmissionColor,
+                             float transmissionDepth) {
+  if (!(openpbrTransmissionShare(transmissionWeight, metalness) > 0.0 && transmissionDepth > 0.0)) return vec3(0.0);
+  return min(-log(max(transmissionColor, vec3(1e-30))) / transmissionDepth, vec3(1e30));
+}
+
+vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
+                 vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
+                 float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
+                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
+                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
+                 vec3 transmissionColor, float transmissionDepth, vec3 wi, vec3 wo) {
+  const float T = openpbrTransmissionShare(transmissionWeight, metalness);
+  if (T > 0.0 && !(wi.z > 0.0 && wo.z > 0.0)) {
+    if (!(abs(wi.z) > 0.0 && abs(wo.z) > 0.0)) return vec3(0.0);  // on the surface, or NaN
+    const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
+    const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
+    const vec3 tint = transmissionDepth > 0.0 ? vec3(1.0) : transmissionColor;
+    vec3 f = T * ggxDielectricEval(alpha.x, alpha.y, openpbrTransmissionEta(specularIor), tint, wi, wo);
+    if (wi.z * wo.z < 0.0) {
+      f *= openpbrLayersPassed(liftOffHorizon(wi.z > 0.0 ? wi : wo), coatWeight, coatColor, coatRoughness,
+                               coatAnisotropy, coatIor, fuzzWeight, fuzzRoughness);
+    }
+    return f;
+  }
+  if (!(T > 0.0) && wo.z < 0.0) {  // an opaque surface seen from behind
+    wi.z = -wi.z;
+    wo.z = -wo.z;
+  }
+  return openpbrReflection(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
+                           specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor, coatRoughness,
+                           coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
+                           fuzzWeight, fuzzColor, fuzzRoughness, 1.0 - T, wi, wo);
+}
+
+float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
+                 vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
+                 float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
+                 float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
+                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
+                 vec3 transmissionColor, float transmissionDepth, vec3 wi, vec3 wo) {
+  const float T = openpbrTransmissionShare(transmissionWeight, metalness);
+  float interfaceDensity = 0.0, share = 0.0;
+  if (T > 0.0) {
+    if (!(abs(wi.z) > 0.0 && abs(wo.z) > 0.0)) return 0.0;
+    const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
+    const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
+    interfaceDensity = ggxDielectricPdf(alpha.x, alpha.y, openpbrTransmissionEta(specularIor), vec3(1.0), wi, wo);
+    share = wo.z > 0.0 ? kOpenpbrInterfaceShare * T : 1.0;
+  } else if (wo.z < 0.0) {
+    wi.z = -wi.z;
+    wo.z = -wo.z;
+  }
+  if (!(share < 1.0)) return interfaceDensity;
+  return share * interfaceDensity +
+         (1.0 - share) * openpbrReflectionPdf(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight,
+                                              specularColor, specularRoughness, specularAnisotropy, specularIor,
+                                              coatWeight, coatColor, coatRoughness, coatAnisotropy, coatIor,
+                                              coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
+                                              fuzzWeight, fuzzColor, fuzzRoughness, wi, wo);
+}
+
+BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness,
+                         float specularWeight, vec3 specularColor, float specularRoughness, float specularAnisotropy,
+                         float specularIor, float coatWeight, vec3 coatColor, float coatRoughness,
+                         float coatAnisotropy, float coatIor, float coatDarkening, float thinFilmWeight,
+                         float thinFilmThickness, float thinFilmIor, float fuzzWeight, vec3 fuzzColor,
+                         float fuzzRoughness, float transmissionWeight, vec3 transmissionColor,
+                         float transmissionDepth, vec3 wo, vec3 u) {
+  const float T = openpbrTransmissionShare(transmissionWeight, metalness);
+  const float share = T > 0.0 ? (wo.z > 0.0 ? kOpenpbrInterfaceShare * T : 1.0) : 0.0;
+  vec3 wi;
+  if (u.x < share) {
+    const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
+    const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
+    wi = ggxDielectricSample(alpha.x, alpha.y, openpbrTransmissionEta(specularIor), vec3(1.0), wo,
+                             vec3(min(u.x / share, 0.99999994), u.yz)).wi;
+  } else {
+    // The reflection's mixture, for an opaque surface seen from behind mirrored to the front and back.
+    const bool behind = !(T > 0.0) && wo.z < 0.0;
+    wi = openpbrReflectionDirection(baseWeight, baseColor, metalness, specularWeight, specularRoughness,
+                                    specularAnisotropy, specularIor, coatWeight, coatRoughness, coatAnisotropy, coatIor,
+                                    fuzzWeight, fuzzColor, fuzzRoughness, behind ? vec3(wo.xy, -wo.z) : wo,
+                                    vec3(min((u.x - share) / (1.0 - share), 0.99999994), u.yz));
+    if (behind) wi.z = -wi.z;
+  }
+  if (!(abs(wi.z) > 0.0)) return noSample();
+  const float pdf = openpbrPdf(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
+                               specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor, coatRoughness,
+                               coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
+                               fuzzWeight, fuzzColor, fuzzRoughness, transmissionWeight, transmissionColor,
+                               transmissionDepth, wi, wo);
+  if (!(pdf > 0.0)) return noSample();
+  return BsdfSample(wi,
+                    openpbrEval(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
+                                specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
+                                coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight,
+                                thinFilmThickness, thinFilmIor, fuzzWeight, fuzzColor, fuzzRoughness,
+                                transmissionWeight, transmissionColor, transmissionDepth, wi, wo),
+                    pdf);
 }
 
 #endif

@@ -21,6 +21,12 @@ float environmentWeight(Payload p) {
 }
 
 void miss(inout Payload p) {
+  // A path that leaves a volume without crossing its surface again (a mesh that is not closed) travelled an endless
+  // way through it: Beer-Lambert leaves nothing.
+  if (maxComponent(p.path.absorption) > 0.0) {
+    p.done = true;
+    return;
+  }
   p.path.radiance += p.path.throughput * environmentRadiance(p.path.direction) * environmentWeight(p);
   p.done = true;
 }

@@ -63,7 +63,17 @@ void specularVertex(Surface s, MaterialRecord material, vec3 wo, inout Payload p
   continueOrEnd(p, offsetRayOrigin(s.position, side), b.wi, p.path.throughput * b.weight);
 }
 
+// A continuation that crosses the surface of a transmissive material with a volume enters or leaves that volume
+// (the surface's outward normal tells which; closed surfaces are assumed, as in every renderer with interior media).
+void crossMedium(inout Payload p, Surface s, MaterialRecord material, vec3 wo, vec3 wi) {
+  const bool fromOutside = dot(wo, s.geometricNormal) > 0.0, toOutside = dot(wi, s.geometricNormal) > 0.0;
+  if (fromOutside && !toOutside) p.path.absorption = bsdfMediumAbsorption(material);
+  if (!fromOutside && toOutside) p.path.absorption = vec3(0.0);
+}
+
 void closestHitPath(Hit hit, inout Payload p) {
+  // Beer-Lambert along the segment that reached here, inside a volume.
+  if (maxComponent(p.path.absorption) > 0.0) p.path.throughput *= exp(-p.path.absorption * hit.t);
   Surface s = surfaceAt(hit);
   MaterialRecord material = materials[s.material];
   const vec3 wo = -p.path.direction;
@@ -115,6 +125,7 @@ void closestHitPath(Hit hit, inout Payload p) {
   if (!seesSameSide(wi, ng, b.wi.z)) return;
   p.path.lastSpecular = 0u;
   p.path.lastPdf = (1.0 - delta) * b.pdf;
+  if (isTwoSided(flags)) crossMedium(p, s, material, wo, wi);
   continueOrEnd(p, offsetRayOrigin(s.position, leavingSide(ng, wi)), wi, p.path.throughput * b.f * (abs(b.wi.z) / b.pdf));
 }
 

@@ -58,6 +58,7 @@ Payload startSample(uvec2 pixel, uint sampleIndex) {
   p.path.direction = primaryDirection(pixel, offset);
   p.path.radiance = vec3(0.0);
   p.path.throughput = vec3(1.0);
+  p.path.absorption = vec3(0.0);
   p.path.depth = 0u;
   p.done = false;
   p.split = false;

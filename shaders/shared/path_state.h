@@ -29,8 +29,12 @@ struct PathState {
   vec3 lastPosition;
   float lastPdf;
   Rng rng;
+  // The absorption coefficient of the medium the next segment travels in (a transmissive material's volume, entered
+  // through its surface; zero outside), by which the path integrator attenuates it: Beer-Lambert, exp(-sigma t).
+  vec3 absorption;
+  uint pad0;
 };
-RL_CHECK_SIZE(PathState, 96);
+RL_CHECK_SIZE(PathState, 112);
 
 RL_NAMESPACE_END
 

@@ -224,13 +224,15 @@ TEST(MaterialTable, ModelFeaturesHaveTheirOwnBitsAboveTheFixedFeatures) {
     }
   }
   const ModelInfo& openpbr = *findModel("openpbr");
-  ASSERT_EQ(openpbr.features.size(), 3u);
+  ASSERT_EQ(openpbr.features.size(), 4u);
   EXPECT_EQ(openpbr.features[0].name, "coat");
   EXPECT_EQ(openpbr.features[0].param, "coat_weight");
   EXPECT_EQ(openpbr.features[1].name, "thin_film");
   EXPECT_EQ(openpbr.features[1].param, "thin_film_weight");
   EXPECT_EQ(openpbr.features[2].name, "fuzz");
   EXPECT_EQ(openpbr.features[2].param, "fuzz_weight");
+  EXPECT_EQ(openpbr.features[3].name, "transmission");
+  EXPECT_EQ(openpbr.features[3].param, "transmission_weight");
 }
 
 }  // namespace

@@ -195,6 +195,37 @@ TEST(OpenPbr, TheFurnaceIsInvariantUnderThinFilm) {
               worstLabel.c_str(), largest);
 }
 
+// The translucent base (transmission_weight): from outside, what it reflects and transmits together. Smooth, a white
+// translucent base, alone or mixed with a white diffuse one, has albedo 1; rough, it loses what single-scattering GGX
+// loses (raylab's dielectric interface has no multiple-scattering compensation: ggx_dielectric's figures); under a
+// coat and a fuzz it never exceeds 1. The albedo of a two-sided material is the fraction of the light arriving from
+// wo that is reflected or transmitted (reference/albedo.h).
+TEST(OpenPbr, TheTranslucentBaseConservesEnergy) {
+  double worstSmooth = 0.0, lowestRough = 1.0, largest = 0.0;
+  for (double weight : {1.0, 0.5}) {
+    for (double roughness : {0.0, 0.5}) {
+      for (double layers : {0.0, 1.0}) {
+        const Material m = makeMaterial("openpbr", {{"base_color", 1.0}, {"specular_roughness", roughness},
+                                                    {"transmission_weight", weight}, {"coat_weight", layers},
+                                                    {"coat_roughness", 0.3}, {"fuzz_weight", layers}});
+        for (double theta : {0.0, 45.0, 75.0}) {
+          const double a = albedoOf(m, theta, 30.0, 1e-4);
+          largest = std::max(largest, a);
+          EXPECT_LE(a, 1.0 + kTableTolerance) << weight << " " << roughness << " " << layers << " " << theta;
+          if (roughness == 0.0 && layers == 0.0) {
+            worstSmooth = std::max(worstSmooth, std::abs(a - 1.0));
+            EXPECT_NEAR(a, 1.0, kTableTolerance) << "weight " << weight << " theta " << theta;
+          }
+          if (roughness > 0.0 && layers == 0.0) lowestRough = std::min(lowestRough, a);
+        }
+      }
+    }
+  }
+  EXPECT_GT(lowestRough, 0.9) << "a rough white translucent base loses only single scattering's share";
+  std::printf("translucent base: smooth white |albedo - 1| <= %.1e, rough (r 0.5) lowest %.4f, largest %.4f\n",
+              worstSmooth, lowestRough, largest);
+}
+
 TEST(OpenPbr, NoMaterialReflectsMoreThanItReceives) {
   double largest = 0.0;
   for (double metalness : {0.0, 0.5, 1.0}) {

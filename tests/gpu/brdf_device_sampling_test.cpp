@@ -79,6 +79,10 @@ std::vector<SamplingCase> samplingCases() {
       // Fuzz over a coated diffuse base: the fuzz's LTC as a third lobe.
       {"openpbr", {{"base_color", 0.5f}, {"coat_weight", 1.0f}, {"coat_roughness", 0.1f}, {"fuzz_weight", 1.0f},
                    {"fuzz_roughness", 0.4f}, {"fuzz_color", 0.9f}}},
+      // A translucent base under a coat: the interface's reflection and refraction beside the reflection's mixture,
+      // from outside and from inside.
+      {"openpbr", {{"base_color", 0.5f}, {"specular_roughness", 0.4f}, {"transmission_weight", 0.8f},
+                   {"transmission_color", 0.7f}, {"coat_weight", 0.5f}, {"coat_roughness", 0.2f}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;

@@ -18,6 +18,7 @@
 // Near-zero values are compared against an absolute floor of 1e-15 (1/sr): 3e-15 of a white Lambertian,
 // far below anything a render can show, and 100x above the largest value the library rounds to 0 where
 // exp(-x) underflows float32 (about 1e-17, ward_gmd at cosines of 1e-7).
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -171,7 +172,10 @@ void addRandomCases(std::uint32_t model, int count, Random& random, std::vector<
       // Rough glass: two cases in three across the surface, wi near the direction wo refracts to (up to three lobe
       // widths off it; beyond the critical angle the straight-through direction), from either side.
       if (random.uniform() < 0.5) wo.z = -wo.z;
-      const double eta = getParam(material, "eta").x;
+      const auto& params = modelInfo(model).params;  // the index: the parameter of kind eta
+      const double eta = getParam(material, std::find_if(params.begin(), params.end(), [](const ParamInfo& q) {
+                                              return q.role == "eta" && !q.rgb;
+                                            })->name).x;
       const double ratio = wo.z > 0.0 ? 1.0 / eta : eta;  // eta_o / eta_t
       const double sin2T = ratio * ratio * (1.0 - wo.z * wo.z);
       const dvec3 n(0.0, 0.0, wo.z > 0.0 ? 1.0 : -1.0);

@@ -15,7 +15,7 @@ import os
 import re
 import sys
 
-MAX_PARAM_FLOATS = 32  # gpu::kMaxMaterialParams (shaders/shared/scene_records.h)
+MAX_PARAM_FLOATS = 40  # gpu::kMaxMaterialParams (shaders/shared/scene_records.h)
 LOBES = {"reflection": 1, "transmission": 2, "diffuse": 4, "glossy": 8, "specular": 16}
 ROLES = {"diffuse", "specular", "eta", "transmittance", "slope", "slope_x", "slope_y", "exponent", "mirror_exponent",
          "exponent_x", "exponent_y", "lobe_x", "lobe_y", "file", "network", "roughness", "metallic", "specular_weight",
@@ -37,7 +37,7 @@ def parse_model(name, prefix, include, path):
     a model's GLSL file opens with."""
     lobes, params, sweep, slot, preset_lines = None, [], "", 0, []
     look, figure_lines, sweep_scene_lines, non_reciprocal, fit_by_name = None, [], [], "", ""
-    feature_lines = []
+    feature_lines, medium = [], None
     with open(path, encoding="utf-8") as f:
         for number, line in enumerate(f, 1):
             if not line.startswith("//"):
@@ -62,6 +62,8 @@ def parse_model(name, prefix, include, path):
                     raise RegistryError(f"{where}: 'feature: NAME PARAM' names a part of the model that a scene uses "
                                         "when PARAM > 0 in one of its materials")
                 feature_lines.append((where, words[0], words[1]))
+            elif body.startswith("medium:"):
+                medium = (where, body[len("medium:"):].split())
             elif body.startswith("fit:"):
                 answer, _, why = body[len("fit:"):].partition(",")
                 if answer.strip() != "by name" or not why.strip():
@@ -120,6 +122,13 @@ def parse_model(name, prefix, include, path):
         if param not in by_name or by_name[param]["rgb"]:
             raise RegistryError(f"{where}: '{param}' is not a scalar parameter of the model")
         features.append(dict(name=feature, param=param))
+    medium_params = []
+    if medium is not None:
+        where, words = medium
+        if not two_sided or not words or any(w not in by_name for w in words):
+            raise RegistryError(f"{where}: 'medium: PARAM...' names the parameters <prefix>MediumAbsorption takes, of "
+                                "a model with transmission and a density")
+        medium_params = [by_name[w] for w in words]
     presets = [parse_preset(where, words, params) for where, words in preset_lines]
     keys = {p["name"] for p in params} | {"delta"} | {p["key"] for p in presets}
     if look is not None:
@@ -133,7 +142,7 @@ def parse_model(name, prefix, include, path):
     sweep_scenes = [parse_sweep_scene(where, text, why, params, keys) for where, text, why in sweep_scene_lines]
     return dict(name=name, prefix=prefix, include=include, path=path, lobes=lobes, params=params, sweep=sweep,
                 presets=presets, look=look[1] if look else None, figures=figures, sweep_scenes=sweep_scenes,
-                non_reciprocal=non_reciprocal, fit_by_name=fit_by_name, features=features)
+                non_reciprocal=non_reciprocal, fit_by_name=fit_by_name, features=features, medium=medium_params)
 
 
 def check_param_list(where, text, keys):
@@ -196,12 +205,14 @@ def is_two_sided(model):
     return bool(model["lobes"] & LOBES["transmission"] and model["lobes"] & (LOBES["diffuse"] | LOBES["glossy"]))
 
 
-def glsl_args(model):
+def glsl_value(param):
     # An RGB parameter as its three slots: a helper function taking the record would copy all of it per call.
-    def rgb(slot):
-        return f"vec3(m.params[{slot}], m.params[{slot + 1}], m.params[{slot + 2}])"
+    slot = param["slot"]
+    return f"vec3(m.params[{slot}], m.params[{slot + 1}], m.params[{slot + 2}])" if param["rgb"] else f"m.params[{slot}]"
 
-    return "".join((f"{rgb(p['slot'])}, " if p["rgb"] else f"m.params[{p['slot']}], ") for p in model["params"])
+
+def glsl_args(model):
+    return "".join(glsl_value(p) + ", " for p in model["params"])
 
 
 FIRST_MODEL_FEATURE_BIT = 16  # shared/features.h: the kSpecFeatures bits from here up are the models' own
@@ -254,6 +265,10 @@ def glsl_dispatch(models):
           "noSample()", surface)
     chain("DeltaEvent modelDeltaEvent(MaterialRecord m, vec3 wi, vec3 n)",
           lambda m: f"DeltaEvent({glsl_args(m)}wi, n)", "noDeltaEvent()", delta)
+    media = [(i, m) for i, m in enumerate(models) if m["medium"]]
+    out.append("// The absorption coefficient inside a transmissive material (its `medium:` line), for the path integrator.")
+    chain("vec3 modelMediumAbsorption(MaterialRecord m)",
+          lambda m: "MediumAbsorption(" + ", ".join(glsl_value(p) for p in m["medium"]) + ")", "vec3(0.0)", media)
     out.append("uint modelFlags(uint model) {")
     for i, m in enumerate(models):
         guard = "featureEnabled(kFeatureDeltaBsdf) && " if is_delta(m) else ""
@@ -330,6 +345,8 @@ def reference_header(models):
             out.append(f"double {m['prefix']}PdfSpecular(const {s}& p, const dvec3& wi, const dvec3& wo);")
         if m["lobes"] & LOBES["glossy"]:
             out.append(f"SpecularLobe {m['prefix']}SpecularLobe(const {s}& p);")
+        if m["medium"]:
+            out.append(f"dvec3 {m['prefix']}MediumAbsorption(const {s}& p);")
         out.append("")
     out += ["}  // namespace raylab::reference", ""]
     return "\n".join(out)
@@ -364,6 +381,8 @@ def reference_dispatch(models):
     eta_name = lambda m: next(p["name"] for p in m["params"] if p["role"] == "eta" and not p["rgb"])
     switch("std::optional<double> transmissionEta(const Material& material)",
            lambda m: f"{params(m)}.{eta_name(m)}", "std::nullopt", is_two_sided)
+    switch("dvec3 mediumAbsorption(const Material& material)",
+           lambda m: f"{m['prefix']}MediumAbsorption({params(m)})", "dvec3(0.0)", lambda m: bool(m["medium"]))
     switch("std::optional<SpecularLobe> specularLobe(const Material& material)",
            lambda m: f"{m['prefix']}SpecularLobe({params(m)})", "std::nullopt", glossy)
     switch("std::optional<DielectricEvent> deltaEvent(const Material& material, const dvec3& wi, const dvec3& n)",

@@ -165,9 +165,9 @@ Lobes fuzzOver(const OpenpbrParams& p, const Lobes& below, const dvec3& wi, cons
           passed * below.specular};
 }
 
-}  // namespace
-
-Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
+// The reflection off the outside: every layer, the glossy-diffuse part scaled by diffuseScale (1 - T under a
+// translucent base).
+Lobes reflectionLobes(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo, double diffuseScale) {
   if (!aboveHorizon(wi, wo)) return {};
   const double C = p.coat_weight, M = p.base_metalness;
   const dvec3 h = wi + wo;
@@ -187,7 +187,7 @@ Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
     passed = glm::max(dvec3(1.0) - ((1.0 - W) * (1.0 - loss) + W * eFilm), 0.0);
   }
   const dvec3 specular = p.specular_color * F * microfacet(wi, wo, alpha);
-  const dvec3 diffuse = passed * eonEval(EonParams{rho, p.base_diffuse_roughness}, wi, wo).sum();
+  const dvec3 diffuse = diffuseScale * passed * eonEval(EonParams{rho, p.base_diffuse_roughness}, wi, wo).sum();
   // Metal.
   const dvec3 b = f82Coefficient(rho, p.specular_color);
   dvec3 metalF = f82(rho, b, cosH);
@@ -230,7 +230,7 @@ Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
 
 // The specular lobes: the coat's GGX with probability q, the fuzz's LTC with probability z, else the base's GGX
 // (u.x stretched back to [0, 1) for the lobe's sampler).
-dvec3 openpbrSampleSpecular(const OpenpbrParams& p, const dvec3& wo, const dvec2& u) {
+dvec3 sampleReflectionSpecular(const OpenpbrParams& p, const dvec3& wo, const dvec2& u) {
   const dvec3 probabilities = lobeProbabilities(p);
   const double q = probabilities.y, z = probabilities.z;
   if (u.x >= q && u.x < q + z) {
@@ -242,7 +242,7 @@ dvec3 openpbrSampleSpecular(const OpenpbrParams& p, const dvec3& wo, const dvec2
   return reflectAbout(wo, sampleGgxVisibleNormal(wo, a.t, a.b, dvec2(std::min(v, 1.0 - 1e-12), u.y)));
 }
 
-double openpbrPdfSpecular(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
+double reflectionSpecularPdf(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
   const dvec3 probabilities = lobeProbabilities(p);
   const double q = probabilities.y, z = probabilities.z;
   const Alphas base = baseAlphas(p), coat = coatAlphas(p);
@@ -250,6 +250,98 @@ double openpbrPdfSpecular(const OpenpbrParams& p, const dvec3& wi, const dvec3& 
                    q * ggxReflectionPdf(wi + wo, wo, coat.t, coat.b);
   if (z > 0.0) density += z * fuzzDensity(wi, wo, fuzzLobe(wo.z, p.fuzz_roughness));
   return density;
+}
+
+// The reflection's mixture: the cosine lobe, or the specular lobes with probability lobeProbabilities(p).x.
+dvec3 sampleReflection(const OpenpbrParams& p, const dvec3& wo, const dvec3& u) {
+  if (!(wo.z > 0.0)) return dvec3(0.0);
+  const dvec2 rest(u.y, u.z);
+  return u.x < lobeProbabilities(p).x ? sampleReflectionSpecular(p, wo, rest) : sampleCosineHemisphere(rest);
+}
+double reflectionPdf(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
+  if (!aboveHorizon(wi, wo)) return 0.0;
+  const double specular = lobeProbabilities(p).x;
+  return (1.0 - specular) * pdfCosineHemisphere(wi) + specular * reflectionSpecularPdf(p, wi, wo);
+}
+
+// The translucent base (OpenPBR, "Translucent base"; openpbr.glsl says how): T = transmission_weight of the
+// dielectric refracts through the base's own GGX interface of index specular_ior, tinted by transmission_color on
+// the way in when there is no volume (transmission_depth 0).
+double transmissionShare(const OpenpbrParams& p) { return p.transmission_weight * (1.0 - p.base_metalness); }
+GgxDielectricParams interfaceOf(const OpenpbrParams& p) {
+  const Alphas a = baseAlphas(p);
+  return {a.t, a.b, std::max(p.specular_ior, 1.001),
+          p.transmission_depth > 0.0 ? dvec3(1.0) : p.transmission_color};
+}
+constexpr double kInterfaceShare = 0.75;  // of the sampler's choices when wo is outside (openpbr.glsl)
+
+// What the coat and the fuzz pass of light crossing them along the outside direction w.
+dvec3 layersPassed(const OpenpbrParams& p, const dvec3& w) {
+  dvec3 passed(1.0);
+  if (p.coat_weight > 0.0) {
+    const double loss = dielectricReflectionLoss(w.z, projectedAlpha(coatAlphas(p), w), coatEps(p));
+    const double cosT = std::sqrt(1.0 - (1.0 - w.z * w.z) / (p.coat_ior * p.coat_ior));
+    for (int c = 0; c < 3; ++c) {
+      const double crossing = std::pow(std::max(p.coat_color[c], 0.0), 0.5 / cosT) * loss;
+      passed[c] *= 1.0 - p.coat_weight + p.coat_weight * crossing;
+    }
+  }
+  if (p.fuzz_weight > 0.0) passed *= 1.0 - p.fuzz_weight * fuzzLobe(w.z, p.fuzz_roughness).albedo;
+  return passed;
+}
+
+bool offTheSurface(const dvec3& w) { return w.z != 0.0 && std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z); }
+
+}  // namespace
+
+Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) {
+  dvec3 wi = wiIn, wo = woIn;
+  const double T = transmissionShare(p);
+  if (T > 0.0 && !(wi.z > 0.0 && wo.z > 0.0)) {
+    if (!offTheSurface(wi) || !offTheSurface(wo)) return {};
+    dvec3 f = T * ggxDielectricEval(interfaceOf(p), wi, wo).sum();
+    if (wi.z * wo.z < 0.0) f *= layersPassed(p, wi.z > 0.0 ? wi : wo);
+    return {dvec3(0.0), f};
+  }
+  if (!(T > 0.0) && wo.z < 0.0) {  // an opaque surface seen from behind: shaded as from the front
+    wi.z = -wi.z;
+    wo.z = -wo.z;
+  }
+  return reflectionLobes(p, wi, wo, 1.0 - T);
+}
+
+dvec3 openpbrSample(const OpenpbrParams& p, const dvec3& wo, const dvec3& u) {
+  const double T = transmissionShare(p);
+  const double share = T > 0.0 ? (wo.z > 0.0 ? kInterfaceShare * T : 1.0) : 0.0;
+  if (u.x < share) return ggxDielectricSample(interfaceOf(p), wo, dvec3(std::min(u.x / share, 1.0 - 1e-12), u.y, u.z));
+  const bool behind = !(T > 0.0) && wo.z < 0.0;
+  dvec3 wi = sampleReflection(p, behind ? dvec3(wo.x, wo.y, -wo.z) : wo,
+                              dvec3(std::min((u.x - share) / (1.0 - share), 1.0 - 1e-12), u.y, u.z));
+  if (behind) wi.z = -wi.z;
+  return wi;
+}
+
+double openpbrPdf(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) {
+  dvec3 wi = wiIn, wo = woIn;
+  const double T = transmissionShare(p);
+  double interfaceDensity = 0.0, share = 0.0;
+  if (T > 0.0) {
+    if (!offTheSurface(wi) || !offTheSurface(wo)) return 0.0;
+    interfaceDensity = ggxDielectricPdf(interfaceOf(p), wi, wo);
+    share = wo.z > 0.0 ? kInterfaceShare * T : 1.0;
+  } else if (wo.z < 0.0) {
+    wi.z = -wi.z;
+    wo.z = -wo.z;
+  }
+  if (!(share < 1.0)) return interfaceDensity;
+  return share * interfaceDensity + (1.0 - share) * reflectionPdf(p, wi, wo);
+}
+
+dvec3 openpbrMediumAbsorption(const OpenpbrParams& p) {
+  if (!(transmissionShare(p) > 0.0 && p.transmission_depth > 0.0)) return dvec3(0.0);
+  dvec3 sigma;
+  for (int c = 0; c < 3; ++c) sigma[c] = std::min(-std::log(std::max(p.transmission_color[c], 1e-30)) / p.transmission_depth, 1e30);
+  return sigma;
 }
 
 SpecularLobe openpbrSpecularLobe(const OpenpbrParams& p) {
