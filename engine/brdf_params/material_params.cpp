@@ -140,22 +140,21 @@ std::string_view layerOf(const ModelInfo& model, std::string_view name) {
   return firstWord(name);
 }
 
-// Three layers at least: Ward's rho_d, rho_s, alpha_x, alpha_y are pairs, not layers.
+// Three layers of two parameters at least: Ward's rho_d, rho_s, alpha_x, alpha_y are pairs, not layers.
 bool isLayered(const ModelInfo& model) {
   std::vector<std::string_view> layers;
   for (const ParamInfo& param : model.params) {
     const std::string_view layer = layerOf(model, param.name);
     if (std::find(layers.begin(), layers.end(), layer) == layers.end()) layers.push_back(layer);
   }
-  if (layers.size() < 3) return false;
-  for (const ParamInfo& param : model.params) {
-    const std::string_view layer = layerOf(model, param.name);
+  int groups = 0;  // layers of two or more parameters (a lone parameter may have its own: geometry_thin_walled)
+  for (const std::string_view layer : layers) {
     if (layer.empty()) return false;
     int members = 0;
     for (const ParamInfo& other : model.params) members += layerOf(model, other.name) == layer ? 1 : 0;
-    if (members < 2) return false;
+    groups += members >= 2 ? 1 : 0;
   }
-  return true;
+  return groups >= 3;
 }
 
 }  // namespace

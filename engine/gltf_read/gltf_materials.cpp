@@ -335,6 +335,25 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
   setParam(record, "thin_film_weight", glm::vec3(input.iridescence), film);
   setParam(record, "thin_film_thickness", glm::vec3(std::min(micrometres, thickness.max)), film);
   setParam(record, "thin_film_ior", glm::vec3(std::clamp(input.iridescenceIor, filmIor.min, filmIor.max)), film);
+  // KHR_materials_transmission and KHR_materials_volume onto the translucent base: a finite attenuation distance is
+  // the volume (transmission_depth, transmission_color = attenuationColor); without one, glTF tints what passes by
+  // the base colour, which is openpbr's tint at the surface (depth 0).
+  if (input.transmission > 0.0f) {
+    const std::string through = where + " (KHR_materials_transmission)";
+    setParam(record, "transmission_weight", glm::vec3(input.transmission), through);
+    const ParamInfo& depth = *findParam(modelInfo(record.model), "transmission_depth");
+    if (input.volumeThickness > 0.0f && std::isfinite(input.attenuationDistance)) {
+      if (input.attenuationDistance > depth.max) {
+        warn(where + " (KHR_materials_volume): attenuationDistance " + formatNumber(input.attenuationDistance) +
+             " is used as openpbr's largest transmission_depth, " + formatNumber(depth.max));
+      }
+      setParam(record, "transmission_depth", glm::vec3(std::min(input.attenuationDistance, depth.max)),
+               where + " (KHR_materials_volume)");
+      setParam(record, "transmission_color", input.attenuationColor, where + " (KHR_materials_volume)");
+    } else {
+      setParam(record, "transmission_color", input.baseColor, through);
+    }
+  }
   const std::string sheen = where + " (KHR_materials_sheen)";
   const float sheenWeight = std::max({input.sheenColor.r, input.sheenColor.g, input.sheenColor.b});
   setParam(record, "fuzz_weight", glm::vec3(sheenWeight), sheen);
@@ -346,7 +365,10 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
 }  // namespace
 
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where) {
-  if (input.transmission >= 1.0f) {
+  const bool sheen = input.sheenColor != glm::vec3(0.0f);
+  const bool layered = input.clearcoat > 0.0f || input.iridescence > 0.0f || sheen;
+  const bool volume = input.volumeThickness > 0.0f && std::isfinite(input.attenuationDistance);
+  if (input.transmission >= 1.0f && !volume && !layered) {
     // Glass: smooth up to a roughness of 0.001, rough (ggx_dielectric, alpha = roughness^2 as glTF's own BRDF)
     // beyond, unless the index is too close to 1 for an interface, where smooth glass is as invisible as both.
     const gpu::MaterialRecord smooth = defaultRecord(modelId("glass"));
@@ -362,8 +384,7 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
     setParam(record, "tint", input.baseColor, where + " (base colour as glass tint)");
     return record;
   }
-  const bool sheen = input.sheenColor != glm::vec3(0.0f);
-  if (input.clearcoat > 0.0f || input.iridescence > 0.0f || sheen) return mapLayered(input, where);
+  if (layered || input.transmission > 0.0f) return mapLayered(input, where);
   // glTF's own BRDF (Appendix B): the factors as they are, nothing approximated.
   gpu::MaterialRecord record = defaultRecord(modelId("gltf_pbr"));
   const std::string mapped = where + " (metallic-roughness)";
@@ -461,9 +482,6 @@ void convertMaterials(Document& document, Scene& scene) {
             findPath(materialJson, {"extensions", "KHR_materials_transmission", "transmissionFactor"})) {
       input.transmission =
           checkedFactor(transmission->get<double>(), 0.0, 1.0, where, "KHR_materials_transmission.transmissionFactor");
-      if (input.transmission > 0.0f && input.transmission < 1.0f) {
-        document.ignore("transmission factors between 0 and 1 (such materials are opaque)");
-      }
     }
     if (findPath(materialJson, {"extensions", "KHR_materials_transmission", "transmissionTexture"})) {
       document.ignore("transmission textures");
@@ -518,6 +536,24 @@ void convertMaterials(Document& document, Scene& scene) {
       }
     }
 
+    if (const json* volume = findPath(materialJson, {"extensions", "KHR_materials_volume"})) {
+      const std::string name = "KHR_materials_volume";
+      const double kLargest = std::numeric_limits<float>::max();
+      if (const json* factor = findPath(*volume, {"thicknessFactor"})) {
+        input.volumeThickness = checkedFactor(factor->get<double>(), 0.0, kLargest, where, name + ".thicknessFactor");
+      }
+      if (const json* distance = findPath(*volume, {"attenuationDistance"})) {
+        input.attenuationDistance =
+            checkedFactor(distance->get<double>(), 1e-30, kLargest, where, name + ".attenuationDistance");
+      }
+      if (const json* colour = findPath(*volume, {"attenuationColor"})) {
+        for (int c = 0; c < 3; ++c) {
+          input.attenuationColor[c] = checkedFactor((*colour)[std::size_t(c)].get<double>(), 0.0, 1.0, where,
+                                                    name + ".attenuationColor[" + std::to_string(c) + "]");
+        }
+      }
+      if (volume->contains("thicknessTexture")) document.ignore(name + ".thicknessTexture (only whether there is a volume matters)");
+    }
     if (const json* sheen = findPath(materialJson, {"extensions", "KHR_materials_sheen"})) {
       const std::string name = "KHR_materials_sheen";
       if (const json* colour = findPath(*sheen, {"sheenColorFactor"})) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -29,12 +30,15 @@ struct MetallicRoughness {
   float iridescence = 0.0f;             // KHR_materials_iridescence.iridescenceFactor
   float iridescenceIor = 1.3f;          // KHR_materials_iridescence.iridescenceIor
   float iridescenceThicknessNm = 400.0f;  // KHR_materials_iridescence.iridescenceThicknessMaximum (no texture read)
+  float volumeThickness = 0.0f;         // KHR_materials_volume.thicknessFactor (0: thin-walled, no volume)
+  float attenuationDistance = std::numeric_limits<float>::infinity();  // KHR_materials_volume
+  glm::vec3 attenuationColor{1.0f};     // KHR_materials_volume.attenuationColor
   glm::vec3 sheenColor{0.0f};           // KHR_materials_sheen.sheenColorFactor
   float sheenRoughness = 0.0f;          // KHR_materials_sheen.sheenRoughnessFactor
 };
 
-// glass (eta = ior, tint = base colour) when transmission is 1; openpbr when a clear coat, an iridescent film or a
-// sheen covers any of it (docs/gltf.md, "Material extensions"); else gltf_pbr, glTF's own BRDF, with the factors as they
+// glass (eta = ior, tint = base colour) when transmission is 1 without a volume; openpbr when a clear coat, an
+// iridescent film or a sheen covers any of it, or its transmission is partial or has a volume (docs/gltf.md, "Material extensions"); else gltf_pbr, glTF's own BRDF, with the factors as they
 // are (an ior above gltf_pbr's 3 is used as 3, with a warning). `where` starts error messages.
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where);
 

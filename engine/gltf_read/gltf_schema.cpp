@@ -75,6 +75,8 @@ const Shape kIridescence{{number("iridescenceFactor"), object("iridescenceTextur
                           number("iridescenceThicknessMaximum"), object("iridescenceThicknessTexture", kTextureInfo)}};
 const Shape kSheen{{numbers("sheenColorFactor", 3), object("sheenColorTexture", kTextureInfo),
                     number("sheenRoughnessFactor"), object("sheenRoughnessTexture", kTextureInfo)}};
+const Shape kVolume{{number("thicknessFactor"), object("thicknessTexture", kTextureInfo), number("attenuationDistance"),
+                     numbers("attenuationColor", 3)}};
 const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                        object("normalTexture", kNormalTextureInfo), object("occlusionTexture", kOcclusionTextureInfo),
                        object("emissiveTexture", kTextureInfo), numbers("emissiveFactor", 3), string("alphaMode"),
@@ -82,7 +84,8 @@ const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                       {object("KHR_materials_ior", kIor), object("KHR_materials_emissive_strength", kEmissiveStrength),
                        object("KHR_materials_transmission", kTransmission), object("KHR_materials_specular", kSpecular),
                        object("KHR_materials_clearcoat", kClearcoat),
-                       object("KHR_materials_iridescence", kIridescence), object("KHR_materials_sheen", kSheen)}};
+                       object("KHR_materials_iridescence", kIridescence), object("KHR_materials_sheen", kSheen),
+                       object("KHR_materials_volume", kVolume)}};
 const Shape kPrimitive{{required(indexMap("attributes")), index("indices"), index("material"), index("mode"),
                         indexMaps("targets")}};
 const Shape kMesh{{string("name"), required(objects("primitives", kPrimitive)), numbers("weights")}};

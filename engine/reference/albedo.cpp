@@ -98,29 +98,31 @@ dvec3 directionFromAngles(double theta, double phi) {
 namespace {
 
 // A tabulated f is a step function, on which adaptive cubature refines every step without end: its albedo is the
-// mean of f cos_i / pdf over kTabulatedSamples draws of the model's own sampler, stratified in u.x, with a fixed
-// seed; errorEstimate is three standard errors of the largest channel.
+// mean of f |cos_i| / pdf over kTabulatedSamples draws of the model's own sampler, stratified in u.x, with a fixed
+// seed; errorEstimate is three standard errors of the largest channel. A material sampled for another reason (a
+// thin wall) takes kSampledSamples: its weights are smooth.
 constexpr int kTabulatedSamples = 1 << 20;
+constexpr int kSampledSamples = 1 << 16;
 
-Albedo tabulatedAlbedo(const Material& material, const dvec3& wo) {
+Albedo sampledAlbedo(const Material& material, const dvec3& wo, int samples) {
   std::mt19937_64 random(20241204);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   dvec3 sum(0.0), sumSquares(0.0);
-  for (int i = 0; i < kTabulatedSamples; ++i) {
-    const dvec3 u((i + uniform(random)) / kTabulatedSamples, uniform(random), uniform(random));
+  for (int i = 0; i < samples; ++i) {
+    const dvec3 u((i + uniform(random)) / samples, uniform(random), uniform(random));
     const Sample s = sample(material, wo, u);
-    const dvec3 weight = s.pdf > 0.0 ? s.f * s.wi.z / s.pdf : dvec3(0.0);
+    const dvec3 weight = s.pdf > 0.0 ? s.f * std::abs(s.wi.z) / s.pdf : dvec3(0.0);
     sum += weight;
     sumSquares += weight * weight;
   }
   Albedo albedo;
-  const double n = kTabulatedSamples;
+  const double n = samples;
   albedo.value = albedo.specular = sum / n;
   for (int c = 0; c < 3; ++c) {
     const double variance = std::max(0.0, sumSquares[c] / n - albedo.value[c] * albedo.value[c]) / (n - 1.0);
     albedo.errorEstimate = std::max(albedo.errorEstimate, 3.0 * std::sqrt(variance));
   }
-  albedo.evaluations = kTabulatedSamples;
+  albedo.evaluations = samples;
   albedo.converged = true;
   return albedo;
 }
@@ -130,7 +132,8 @@ Albedo tabulatedAlbedo(const Material& material, const dvec3& wo) {
 Albedo directionalAlbedo(const Material& material, const dvec3& wo, const AlbedoOptions& options) {
   Albedo albedo;
   if (!aboveHorizon(wo, wo) || (lobeFlags(material) & (gpu::kLobeDiffuse | gpu::kLobeGlossy)) == 0) return albedo;
-  if (isTabulated(material)) return tabulatedAlbedo(material, wo);
+  if (isTabulated(material)) return sampledAlbedo(material, wo, kTabulatedSamples);
+  if (albedoBySampling(material)) return sampledAlbedo(material, wo, kSampledSamples);
   CubatureOptions cubature;
   cubature.relTolerance = options.relTolerance;
   cubature.maxRegions = options.maxRegions;

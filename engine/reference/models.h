@@ -64,5 +64,9 @@ std::optional<double> transmissionEta(const Material& material);
 // A model whose f is a table read from a file (measured): a step function of the directions, which the albedo
 // integrates by sampling rather than by adaptive cubature.
 bool isTabulated(const Material& material);
+// A material whose transmission the albedo quadrature's refraction coordinates do not fit (a model's `albedo
+// sampled when:` line: openpbr's thin walls, whose light goes straight through): its albedo is a Monte Carlo
+// estimate with its own sampler.
+bool albedoBySampling(const Material& material);
 
 }  // namespace raylab::reference

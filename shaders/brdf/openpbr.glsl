@@ -4,7 +4,9 @@
 // feature: thin_film thin_film_weight
 // feature: fuzz fuzz_weight
 // feature: transmission transmission_weight
-// medium: transmission_weight base_metalness transmission_color transmission_depth
+// feature: thin_walled geometry_thin_walled
+// medium: transmission_weight base_metalness transmission_color transmission_depth geometry_thin_walled
+// albedo sampled when: geometry_thin_walled
 // fit: by name, its layers give one look many ways: which of them a fit frees is not yet designed (issue 38)
 // reciprocal: no, albedo scaling by 1 - E(wo) conserves energy but weighs wo and wi differently (OpenPBR)
 // look: base_color=0.8/0.25/0.1, specular_roughness=0.35, coat_weight=1, coat_roughness=0.05
@@ -36,6 +38,9 @@
 // | transmission_weight           | [0, 1]   | 0       |                   | the dielectric's share that lets light through |
 // | transmission_color            | [0, 1]   | 1       | rgb               | the colour the volume reaches at transmission_depth |
 // | transmission_depth            | [0, 1000] | 0      |                   | that depth in scene units; 0: no volume, tinted at the surface |
+// | subsurface_weight             | [0, 1]   | 0       |                   | the dielectric's share that scatters below the surface |
+// | subsurface_color              | [0, 1]   | 0.8     | rgb               | the albedo of that scattering             |
+// | geometry_thin_walled          | [0, 1]   | 0       |                   | 1: a thin shell (leaf, paper, bubble); 0: a solid |
 // Portsmouth, Hoffman, Pharr, Kutz, Leidl et al., "OpenPBR Surface", Academy Software Foundation, v1.1.1, 2026,
 // section "Reduction to a mixture of lobes", with non-reciprocal albedo scaling (docs/brdfs.md, "openpbr"):
 //   f = C f_coat + lerp(1, T (1 - E_coat(wo)), C) lerp(1, Delta, C delta) lerp(f_dielectric, f_metal, M),
@@ -205,7 +210,7 @@ vec3 openpbrLobeProbabilities(float baseWeight, vec3 baseColor, float metalness,
 // darkening by the light it reflects back onto the base.
 vec3 openpbrCoatOver(vec3 substrate, vec3 wi, vec3 wo, vec3 h, float C, vec3 coatColor, float coatRoughness,
                      float coatAnisotropy, float coatIor, float coatDarkening, float alphaTable, float eps, vec3 rho,
-                     vec3 specularColor, float specularWeight, float specularRoughness, float M) {
+                     vec3 diffuseAlbedo, vec3 specularColor, float specularWeight, float specularRoughness, float M) {
   const vec2 alphaCoat = openpbrAlphas(coatRoughness, coatAnisotropy);
   const float epsCoat = (coatIor - 1.0) / (coatIor + 1.0);
   const vec3 coat = vec3(openpbrGgxReflection(wi, wo, h, alphaCoat, epsCoat));
@@ -219,7 +224,8 @@ vec3 openpbrCoatOver(vec3 substrate, vec3 wi, vec3 wo, vec3 h, float C, vec3 coa
   vec3 darkening = vec3(1.0);
   if (coatDarkening > 0.0) {
     const float eSpecNormal = 1.0 - openpbrDielectricLoss(1.0, alphaTable, eps);
-    const vec3 eBase = mix(specularColor * eSpecNormal + (1.0 - eSpecNormal) * rho, min(specularWeight * rho, vec3(1.0)), M);
+    const vec3 eBase = mix(specularColor * eSpecNormal + (1.0 - eSpecNormal) * diffuseAlbedo,
+                           min(specularWeight * rho, vec3(1.0)), M);
     const float kRough = 1.0 - (1.0 - openpbrAverageFresnel(epsCoat)) * inv2;
     const float kSmooth = openpbrFresnel(wo.z, epsCoat);
     const float rDielectric = mix(1.0, specularRoughness, eps * eps);
@@ -244,7 +250,7 @@ vec3 openpbrReflection(float baseWeight, vec3 baseColor, float metalness, float 
                  vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
-                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float diffuseScale, vec3 wi, vec3 wo) {
+                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, vec3 diffuseAlbedo, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return vec3(0.0);  // one-sided; also false for NaN directions
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
@@ -306,13 +312,13 @@ vec3 openpbrReflection(float baseWeight, vec3 baseColor, float metalness, float 
     metalF = mix(metalF, metalFilm, W);
   }
   const vec3 dielectric = specularColor * F * openpbrMicrofacet(wi, wo, h, alpha) +
-                          diffuseScale * passed * eonEval(rho, diffuseRoughness, wi, wo);
+                          passed * eonEval(diffuseAlbedo, diffuseRoughness, wi, wo);
   const vec3 metal = min(specularWeight * metalF, vec3(1.0)) * openpbrMicrofacet(wi, wo, h, alpha) +
                      openpbrMetalMultipleScattering(rho, b, specularWeight, alpha, wi, wo);
   const vec3 substrate = mix(dielectric, metal, M);
   return openpbrFuzzOver(C > 0.0 ? openpbrCoatOver(substrate, wi, wo, h, C, coatColor, coatRoughness, coatAnisotropy,
-                                                   coatIor, coatDarkening, alphaTable, eps, rho, specularColor,
-                                                   specularWeight, specularRoughness, M)
+                                                   coatIor, coatDarkening, alphaTable, eps, rho, diffuseAlbedo,
+                                                   specularColor, specularWeight, specularRoughness, M)
                                  : substrate,
                          wi, wo, fuzzWeight, fuzzColor, fuzzRoughness);
 }
@@ -386,6 +392,25 @@ float openpbrTransmissionEta(float specularIor) { return max(specularIor, 1.001)
 // outside, against the reflection's mixture (the coat's and fuzz's lobes, the diffuse the rest keeps).
 const float kOpenpbrInterfaceShare = 0.75;
 
+// A thin-walled surface (geometry_thin_walled, compiled only where a scene has one) is a shell with the same
+// material on both faces and no inside: what the translucent base passes goes straight through, the base's GGX
+// lobe mirrored through the surface with (1 - F), and the subsurface becomes a thin translucent sheet that
+// scatters half of its light back and half through, both diffusely, tinted by subsurface_color.
+bool openpbrThinWalled(float thinWalled) { return featureEnabled(kOpenpbrFeatureThinWalled) && thinWalled >= 0.5; }
+
+// The glossy-diffuse base's albedo: base_weight base_color, mixed with the subsurface in its short-radius limit (a
+// diffuse lobe of subsurface_color, half of it on a thin wall), of the share 1 - T that does not transmit.
+vec3 openpbrDiffuseAlbedo(float baseWeight, vec3 baseColor, float subsurfaceWeight, vec3 subsurfaceColor, float T,
+                          bool thin) {
+  return (1.0 - T) * mix(baseWeight * baseColor, (thin ? 0.5 : 1.0) * subsurfaceColor, subsurfaceWeight);
+}
+
+// The probability that the reflection's mixture sends its sample through a thin wall (mirrored): the share of the
+// diffuse light that the thin subsurface passes.
+float openpbrThinMirrorShare(float metalness, float subsurfaceWeight, float T, bool thin) {
+  return thin ? 0.5 * subsurfaceWeight * (1.0 - T) * (1.0 - metalness) : 0.0;
+}
+
 // What the coat and the fuzz pass of light crossing them along w (outside): the coat's 1 - E_coat and its absorption
 // along one refracted crossing (coat_color is the transmittance there and back at normal incidence), the fuzz's
 // 1 - F E_fuzz.
@@ -406,12 +431,50 @@ vec3 openpbrLayersPassed(vec3 w, float coatWeight, vec3 coatColor, float coatRou
 }
 
 // The interior's absorption coefficient per unit length, -ln(transmission_color) / transmission_depth, for the path
-// integrator's Beer-Lambert attenuation inside (Beer's law with the colour reached at that depth); 0 without a volume.
-// A channel of colour 0 absorbs everything: 1e30 per unit length.
+// integrator's Beer-Lambert attenuation inside (Beer's law with the colour reached at that depth); 0 without a volume
+// (depth 0, or a thin wall). A channel of colour 0 absorbs everything: 1e30 per unit length.
 vec3 openpbrMediumAbsorption(float transmissionWeight, float metalness, vec3 transmissionColor,
-                             float transmissionDepth) {
-  if (!(openpbrTransmissionShare(transmissionWeight, metalness) > 0.0 && transmissionDepth > 0.0)) return vec3(0.0);
+                             float transmissionDepth, float thinWalled) {
+  if (!(openpbrTransmissionShare(transmissionWeight, metalness) > 0.0 && transmissionDepth > 0.0) ||
+      openpbrThinWalled(thinWalled)) {
+    return vec3(0.0);
+  }
   return min(-log(max(transmissionColor, vec3(1e-30))) / transmissionDepth, vec3(1e30));
+}
+
+// f through a thin wall, wo above and wi below: the straight-through GGX lobe and the thin subsurface's diffuse
+// transmission, under what the coat and the fuzz pass along wo.
+vec3 openpbrThinTransmission(float metalness, float specularWeight, float specularRoughness, float specularAnisotropy,
+                             float specularIor, float coatWeight, vec3 coatColor, float coatRoughness,
+                             float coatAnisotropy, float coatIor, float fuzzWeight, float fuzzRoughness, float T,
+                             vec3 transmissionColor, float subsurfaceWeight, vec3 subsurfaceColor, vec3 wi, vec3 wo) {
+  const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
+  wo = liftOffHorizon(wo);
+  const vec3 mirrored = liftOffHorizon(vec3(wi.xy, -wi.z));
+  precise const vec3 h = mirrored + wo;
+  const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
+  const float eps = openpbrSpecularEps(specularWeight, specularIor, C, coatIor);
+  const vec3 straight = T * transmissionColor * (1.0 - openpbrFresnel(openpbrCosineToHalfVector(wo, h), eps)) *
+                        openpbrMicrofacet(mirrored, wo, h, alpha);
+  const float passed = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
+  const vec3 diffuse = (1.0 - T) * (1.0 - metalness) * subsurfaceWeight * 0.5 * subsurfaceColor * passed * kInvPi;
+  return (straight + diffuse) * openpbrLayersPassed(wo, coatWeight, coatColor, coatRoughness, coatAnisotropy, coatIor,
+                                                    fuzzWeight, fuzzRoughness);
+}
+
+// The density of the thin wall's interface sampler: a visible normal of the base's GGX, reflecting with probability
+// F(wo.m) and going straight through (the reflection mirrored) otherwise. wo above.
+float openpbrThinInterfacePdf(float specularWeight, float specularRoughness, float specularAnisotropy,
+                              float specularIor, float coatWeight, float coatRoughness, float coatIor, vec3 wi,
+                              vec3 wo) {
+  const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
+  wo = liftOffHorizon(wo);
+  const bool through = wi.z < 0.0;
+  const vec3 w = liftOffHorizon(vec3(wi.xy, abs(wi.z)));
+  precise const vec3 h = w + wo;
+  const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
+  const float F = openpbrFresnel(openpbrCosineToHalfVector(wo, h), openpbrSpecularEps(specularWeight, specularIor, C, coatIor));
+  return (through ? 1.0 - F : F) * ggxReflectionPdf(h, wo, alpha.x, alpha.y);
 }
 
 vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
@@ -419,9 +482,11 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
                  float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
-                 vec3 transmissionColor, float transmissionDepth, vec3 wi, vec3 wo) {
+                 vec3 transmissionColor, float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor,
+                 float thinWalled, vec3 wi, vec3 wo) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
-  if (T > 0.0 && !(wi.z > 0.0 && wo.z > 0.0)) {
+  const bool thin = openpbrThinWalled(thinWalled);
+  if (T > 0.0 && !thin && !(wi.z > 0.0 && wo.z > 0.0)) {
     if (!(abs(wi.z) > 0.0 && abs(wo.z) > 0.0)) return vec3(0.0);  // on the surface, or NaN
     const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
     const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
@@ -433,14 +498,21 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
     }
     return f;
   }
-  if (!(T > 0.0) && wo.z < 0.0) {  // an opaque surface seen from behind
+  if ((thin || !(T > 0.0)) && wo.z < 0.0) {  // an opaque surface or a thin wall seen from behind
     wi.z = -wi.z;
     wo.z = -wo.z;
+  }
+  if (thin && wi.z < 0.0 && wo.z > 0.0) {
+    return openpbrThinTransmission(metalness, specularWeight, specularRoughness, specularAnisotropy, specularIor,
+                                   coatWeight, coatColor, coatRoughness, coatAnisotropy, coatIor, fuzzWeight,
+                                   fuzzRoughness, T, transmissionColor, subsurfaceWeight, subsurfaceColor, wi, wo);
   }
   return openpbrReflection(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                            specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor, coatRoughness,
                            coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
-                           fuzzWeight, fuzzColor, fuzzRoughness, 1.0 - T, wi, wo);
+                           fuzzWeight, fuzzColor, fuzzRoughness,
+                           openpbrDiffuseAlbedo(baseWeight, baseColor, subsurfaceWeight, subsurfaceColor, T, thin), wi,
+                           wo);
 }
 
 float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
@@ -448,10 +520,12 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
                  float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
-                 vec3 transmissionColor, float transmissionDepth, vec3 wi, vec3 wo) {
+                 vec3 transmissionColor, float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor,
+                 float thinWalled, vec3 wi, vec3 wo) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
+  const bool thin = openpbrThinWalled(thinWalled);
   float interfaceDensity = 0.0, share = 0.0;
-  if (T > 0.0) {
+  if (T > 0.0 && !thin) {
     if (!(abs(wi.z) > 0.0 && abs(wo.z) > 0.0)) return 0.0;
     const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
     const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
@@ -461,13 +535,23 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
     wi.z = -wi.z;
     wo.z = -wo.z;
   }
+  if (thin && T > 0.0) {
+    if (!(abs(wi.z) > 0.0 && wo.z > 0.0)) return 0.0;
+    interfaceDensity = openpbrThinInterfacePdf(specularWeight, specularRoughness, specularAnisotropy, specularIor,
+                                               coatWeight, coatRoughness, coatIor, wi, wo);
+    share = kOpenpbrInterfaceShare * T;
+  }
   if (!(share < 1.0)) return interfaceDensity;
-  return share * interfaceDensity +
-         (1.0 - share) * openpbrReflectionPdf(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight,
-                                              specularColor, specularRoughness, specularAnisotropy, specularIor,
-                                              coatWeight, coatColor, coatRoughness, coatAnisotropy, coatIor,
-                                              coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
-                                              fuzzWeight, fuzzColor, fuzzRoughness, wi, wo);
+  // The reflection's mixture, a share q of it mirrored through a thin wall.
+  const float q = openpbrThinMirrorShare(metalness, subsurfaceWeight, T, thin);
+  const bool through = wi.z < 0.0;
+  if (through && !(q > 0.0)) return share * interfaceDensity;
+  const float mixture = openpbrReflectionPdf(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight,
+                                             specularColor, specularRoughness, specularAnisotropy, specularIor,
+                                             coatWeight, coatColor, coatRoughness, coatAnisotropy, coatIor,
+                                             coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
+                                             fuzzWeight, fuzzColor, fuzzRoughness, vec3(wi.xy, abs(wi.z)), wo);
+  return share * interfaceDensity + (1.0 - share) * (through ? q : 1.0 - q) * mixture;
 }
 
 BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness,
@@ -476,37 +560,54 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                          float coatAnisotropy, float coatIor, float coatDarkening, float thinFilmWeight,
                          float thinFilmThickness, float thinFilmIor, float fuzzWeight, vec3 fuzzColor,
                          float fuzzRoughness, float transmissionWeight, vec3 transmissionColor,
-                         float transmissionDepth, vec3 wo, vec3 u) {
+                         float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor, float thinWalled,
+                         vec3 wo, vec3 u) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
-  const float share = T > 0.0 ? (wo.z > 0.0 ? kOpenpbrInterfaceShare * T : 1.0) : 0.0;
+  const bool thin = openpbrThinWalled(thinWalled);
+  // An opaque surface or a thin wall seen from behind is sampled mirrored to the front, and mirrored back.
+  const bool behind = (thin || !(T > 0.0)) && wo.z < 0.0;
+  const vec3 w = behind ? vec3(wo.xy, -wo.z) : wo;
+  const float share = T > 0.0 ? (w.z > 0.0 ? kOpenpbrInterfaceShare * T : 1.0) : 0.0;
   vec3 wi;
   if (u.x < share) {
     const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
     const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
-    wi = ggxDielectricSample(alpha.x, alpha.y, openpbrTransmissionEta(specularIor), vec3(1.0), wo,
-                             vec3(min(u.x / share, 0.99999994), u.yz)).wi;
+    const float v = min(u.x / share, 0.99999994);
+    if (thin) {
+      const vec3 m = sampleGgxVisibleNormal(liftOffHorizon(w), alpha.x, alpha.y, u.yz);
+      wi = reflectAbout(w, m);
+      if (!(wi.z > 0.0)) return noSample();
+      const float F = openpbrFresnel(clamp(dot(w, m), 0.0, 1.0), openpbrSpecularEps(specularWeight, specularIor, C, coatIor));
+      if (!(v < F)) wi.z = -wi.z;  // straight through
+    } else {
+      wi = ggxDielectricSample(alpha.x, alpha.y, openpbrTransmissionEta(specularIor), vec3(1.0), w, vec3(v, u.yz)).wi;
+    }
   } else {
-    // The reflection's mixture, for an opaque surface seen from behind mirrored to the front and back.
-    const bool behind = !(T > 0.0) && wo.z < 0.0;
+    const float q = openpbrThinMirrorShare(metalness, subsurfaceWeight, T, thin);
+    float v = min((u.x - share) / (1.0 - share), 0.99999994);
+    const bool mirror = v < q;
+    v = mirror ? v / q : (v - q) / (1.0 - q);
     wi = openpbrReflectionDirection(baseWeight, baseColor, metalness, specularWeight, specularRoughness,
                                     specularAnisotropy, specularIor, coatWeight, coatRoughness, coatAnisotropy, coatIor,
-                                    fuzzWeight, fuzzColor, fuzzRoughness, behind ? vec3(wo.xy, -wo.z) : wo,
-                                    vec3(min((u.x - share) / (1.0 - share), 0.99999994), u.yz));
-    if (behind) wi.z = -wi.z;
+                                    fuzzWeight, fuzzColor, fuzzRoughness, w, vec3(min(v, 0.99999994), u.yz));
+    if (!(wi.z > 0.0)) return noSample();
+    if (mirror) wi.z = -wi.z;
   }
+  if (behind) wi.z = -wi.z;
   if (!(abs(wi.z) > 0.0)) return noSample();
   const float pdf = openpbrPdf(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                                specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor, coatRoughness,
                                coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
                                fuzzWeight, fuzzColor, fuzzRoughness, transmissionWeight, transmissionColor,
-                               transmissionDepth, wi, wo);
+                               transmissionDepth, subsurfaceWeight, subsurfaceColor, thinWalled, wi, wo);
   if (!(pdf > 0.0)) return noSample();
   return BsdfSample(wi,
                     openpbrEval(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                                 specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
                                 coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight,
                                 thinFilmThickness, thinFilmIor, fuzzWeight, fuzzColor, fuzzRoughness,
-                                transmissionWeight, transmissionColor, transmissionDepth, wi, wo),
+                                transmissionWeight, transmissionColor, transmissionDepth, subsurfaceWeight,
+                                subsurfaceColor, thinWalled, wi, wo),
                     pdf);
 }
 

@@ -224,7 +224,7 @@ TEST(MaterialTable, ModelFeaturesHaveTheirOwnBitsAboveTheFixedFeatures) {
     }
   }
   const ModelInfo& openpbr = *findModel("openpbr");
-  ASSERT_EQ(openpbr.features.size(), 4u);
+  ASSERT_EQ(openpbr.features.size(), 5u);
   EXPECT_EQ(openpbr.features[0].name, "coat");
   EXPECT_EQ(openpbr.features[0].param, "coat_weight");
   EXPECT_EQ(openpbr.features[1].name, "thin_film");
@@ -233,6 +233,8 @@ TEST(MaterialTable, ModelFeaturesHaveTheirOwnBitsAboveTheFixedFeatures) {
   EXPECT_EQ(openpbr.features[2].param, "fuzz_weight");
   EXPECT_EQ(openpbr.features[3].name, "transmission");
   EXPECT_EQ(openpbr.features[3].param, "transmission_weight");
+  EXPECT_EQ(openpbr.features[4].name, "thin_walled");
+  EXPECT_EQ(openpbr.features[4].param, "geometry_thin_walled");
 }
 
 }  // namespace

@@ -83,6 +83,9 @@ std::vector<SamplingCase> samplingCases() {
       // from outside and from inside.
       {"openpbr", {{"base_color", 0.5f}, {"specular_roughness", 0.4f}, {"transmission_weight", 0.8f},
                    {"transmission_color", 0.7f}, {"coat_weight", 0.5f}, {"coat_roughness", 0.2f}}},
+      // A thin wall, half translucent and half a subsurface sheet: through it straight and diffusely, from both faces.
+      {"openpbr", {{"base_color", 0.5f}, {"specular_roughness", 0.3f}, {"transmission_weight", 0.5f},
+                   {"subsurface_weight", 1.0f}, {"subsurface_color", 0.8f}, {"geometry_thin_walled", 1.0f}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;

@@ -188,10 +188,35 @@ TEST(GltfMaterial, IorSetsEtaAndFullTransmissionMakesGlass) {
                                                           {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}});
   EXPECT_EQ(noInterface.materials[0].record.model, modelId("glass")) << "ior 1: no interface, smooth or rough";
 
-  WarningCapture warnings;
-  const Scene partial = loadMaterial({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}}}});
-  EXPECT_EQ(partial.materials[0].record.model, modelId("gltf_pbr"));
-  EXPECT_EQ(warnings.count("transmission factors between 0 and 1"), 1);
+  // Partial transmission, and any with a volume, is openpbr's translucent base: the base colour tints what passes at
+  // the surface, or KHR_materials_volume's attenuation is its volume.
+  const Scene partial = loadMaterial({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}}},
+                                      {"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.8, 0.7, 1.0}},
+                                                                {"metallicFactor", 0.0}}}});
+  const gpu::MaterialRecord& half = partial.materials[0].record;
+  EXPECT_EQ(half.model, modelId("openpbr"));
+  EXPECT_FLOAT_EQ(getParam(half, "transmission_weight").x, 0.5f);
+  EXPECT_FLOAT_EQ(getParam(half, "transmission_depth").x, 0.0f);
+  expectNear(getParam(half, "transmission_color"), {0.9f, 0.8f, 0.7f}, "tinted by the base colour");
+  const Scene absorbing = loadMaterial(
+      {{"extensions", {{"KHR_materials_ior", {{"ior", 1.6}}}, {"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                       {"KHR_materials_volume", {{"thicknessFactor", 0.2}, {"attenuationDistance", 0.5},
+                                                 {"attenuationColor", {0.2, 0.6, 0.9}}}}}},
+       {"pbrMetallicRoughness", {{"metallicFactor", 0.0}, {"roughnessFactor", 0.1}}}});
+  const gpu::MaterialRecord& v = absorbing.materials[0].record;
+  EXPECT_EQ(v.model, modelId("openpbr"));
+  EXPECT_FLOAT_EQ(getParam(v, "transmission_weight").x, 1.0f);
+  EXPECT_FLOAT_EQ(getParam(v, "transmission_depth").x, 0.5f);
+  expectNear(getParam(v, "transmission_color"), {0.2f, 0.6f, 0.9f}, "the volume's attenuation colour");
+  EXPECT_NEAR(getParam(v, "specular_ior").x, 1.6f, 1e-6f);
+  const Scene clear = loadMaterial({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                                                    {"KHR_materials_volume", {{"thicknessFactor", 1.0}}}}}});
+  EXPECT_EQ(clear.materials[0].record.model, modelId("ggx_dielectric")) << "a volume that absorbs nothing is glass";
+  for (const json& bad : {json{{"thicknessFactor", -1.0}}, json{{"attenuationDistance", 0.0}},
+                          json{{"attenuationColor", {1.5, 0.0, 0.0}}}, json{{"attenuationColor", {0.5}}}}) {
+    const std::string volumeError = materialError({{"name", "bad volume"}, {"extensions", {{"KHR_materials_volume", bad}}}});
+    EXPECT_NE(volumeError.find("volume"), std::string::npos) << volumeError;
+  }
 
   const std::string error = materialError({{"name", "gem"}, {"extensions", {{"KHR_materials_ior", {{"ior", 0.5}}}}}});
   EXPECT_NE(error.find("material 0 'gem': KHR_materials_ior.ior = 0.5 is outside [1, 10]"), std::string::npos) << error;

@@ -37,7 +37,7 @@ def parse_model(name, prefix, include, path):
     a model's GLSL file opens with."""
     lobes, params, sweep, slot, preset_lines = None, [], "", 0, []
     look, figure_lines, sweep_scene_lines, non_reciprocal, fit_by_name = None, [], [], "", ""
-    feature_lines, medium = [], None
+    feature_lines, medium, sampled_albedo = [], None, None
     with open(path, encoding="utf-8") as f:
         for number, line in enumerate(f, 1):
             if not line.startswith("//"):
@@ -62,6 +62,8 @@ def parse_model(name, prefix, include, path):
                     raise RegistryError(f"{where}: 'feature: NAME PARAM' names a part of the model that a scene uses "
                                         "when PARAM > 0 in one of its materials")
                 feature_lines.append((where, words[0], words[1]))
+            elif body.startswith("albedo sampled when:"):
+                sampled_albedo = (where, body[len("albedo sampled when:"):].split())
             elif body.startswith("medium:"):
                 medium = (where, body[len("medium:"):].split())
             elif body.startswith("fit:"):
@@ -129,6 +131,13 @@ def parse_model(name, prefix, include, path):
             raise RegistryError(f"{where}: 'medium: PARAM...' names the parameters <prefix>MediumAbsorption takes, of "
                                 "a model with transmission and a density")
         medium_params = [by_name[w] for w in words]
+    sampled_albedo_param = None
+    if sampled_albedo is not None:
+        where, words = sampled_albedo
+        if len(words) != 1 or words[0] not in by_name or by_name[words[0]]["rgb"]:
+            raise RegistryError(f"{where}: 'albedo sampled when: PARAM' names the scalar parameter whose value 0.5 or "
+                                "more makes the albedo quadrature sample the model instead")
+        sampled_albedo_param = by_name[words[0]]
     presets = [parse_preset(where, words, params) for where, words in preset_lines]
     keys = {p["name"] for p in params} | {"delta"} | {p["key"] for p in presets}
     if look is not None:
@@ -142,7 +151,8 @@ def parse_model(name, prefix, include, path):
     sweep_scenes = [parse_sweep_scene(where, text, why, params, keys) for where, text, why in sweep_scene_lines]
     return dict(name=name, prefix=prefix, include=include, path=path, lobes=lobes, params=params, sweep=sweep,
                 presets=presets, look=look[1] if look else None, figures=figures, sweep_scenes=sweep_scenes,
-                non_reciprocal=non_reciprocal, fit_by_name=fit_by_name, features=features, medium=medium_params)
+                non_reciprocal=non_reciprocal, fit_by_name=fit_by_name, features=features, medium=medium_params,
+                sampled_albedo=sampled_albedo_param)
 
 
 def check_param_list(where, text, keys):
@@ -391,6 +401,9 @@ def reference_dispatch(models):
            lambda m: True)
     switch("bool isTabulated(const Material& material)", lambda m: "true", "false",
            lambda m: any(p["role"] == "file" for p in m["params"]))
+    switch("bool albedoBySampling(const Material& material)",
+           lambda m: f"material.params[{m['sampled_albedo']['slot']}] >= 0.5", "false",
+           lambda m: m["sampled_albedo"] is not None)
     out += ["}  // namespace raylab::reference", ""]
     return "\n".join(out)
 

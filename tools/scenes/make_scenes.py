@@ -139,6 +139,9 @@ def fallback_pbr(raylab, preview):
                 base = METAL_F0[raylab["metal"]]
     elif model in ("lambert", "oren_nayar", "eon"):
         roughness = 1.0
+    elif model == "openpbr":
+        base = raylab.get("base_color", base)
+        metallic, roughness = raylab.get("base_metalness", 0.0), raylab.get("specular_roughness", 0.3)
     return {"baseColorFactor": rounded(list(base)) + [1.0], "metallicFactor": metallic,
             "roughnessFactor": rounded([roughness])[0]}
 
@@ -461,6 +464,57 @@ def showcase_modern():
     return g
 
 
+def showcase_layered():
+    """openpbr's layers under the showcase's HDR environment (the path integrator), one idea per sphere: in the back
+    row a coat over a metal, over a red diffuse base, a tinted coat and a coat without darkening; in the middle a
+    velvet fuzz, a dusty fuzz, a thin film over a dark dielectric and over a metal; in front coloured glass with
+    absorption inside, rough translucent glass, and a brushed (anisotropic) metal beside glTF's own BRDF for
+    comparison."""
+    g = Gltf("showcase_layered")
+    light = g.material("checker light", {"model": "lambert", "rho_d": [0.7, 0.7, 0.68]}, (0.7, 0.7, 0.68))
+    dark = g.material("checker dark", {"model": "lambert", "rho_d": [0.18, 0.18, 0.2]}, (0.18, 0.18, 0.2))
+    add_checker(g, "floor", (-10.0, 10.0), (-8.0, 8.0), 0.0, 1.0, (light, dark))
+    red = [0.7, 0.08, 0.06]
+    gold = {"base_color": [0.95, 0.75, 0.35], "base_metalness": 1.0, "specular_color": [1.0, 0.85, 0.6]}
+    rows = [
+        (-2.0, [("coat over metal", dict(gold, specular_roughness=0.45, coat_weight=1.0, coat_roughness=0.03)),
+                ("coat over diffuse", {"base_color": red, "specular_roughness": 0.5, "coat_weight": 1.0,
+                                       "coat_roughness": 0.05}),
+                ("tinted coat", {"base_color": [0.85, 0.85, 0.85], "specular_roughness": 0.4, "coat_weight": 1.0,
+                                 "coat_color": [0.3, 0.55, 0.9], "coat_roughness": 0.1}),
+                ("coat without darkening", {"base_color": red, "specular_roughness": 0.5, "coat_weight": 1.0,
+                                            "coat_roughness": 0.05, "coat_darkening": 0.0})]),
+        (-0.4, [("velvet fuzz", {"base_color": [0.25, 0.02, 0.06], "specular_roughness": 0.7, "fuzz_weight": 1.0,
+                                 "fuzz_color": [1.0, 0.6, 0.7], "fuzz_roughness": 0.3}),
+                ("dusty fuzz", {"base_color": [0.1, 0.1, 0.12], "specular_roughness": 0.2, "fuzz_weight": 0.8,
+                                "fuzz_color": [0.85, 0.8, 0.7], "fuzz_roughness": 1.0}),
+                ("thin film over dielectric", {"base_color": [0.03, 0.03, 0.04], "specular_roughness": 0.15,
+                                               "thin_film_weight": 1.0, "thin_film_thickness": 0.45,
+                                               "thin_film_ior": 1.45}),
+                ("thin film over metal", dict(gold, specular_roughness=0.2, thin_film_weight=1.0,
+                                              thin_film_thickness=0.3, thin_film_ior=1.8))]),
+        (1.2, [("coloured glass", {"specular_roughness": 0.0, "transmission_weight": 1.0,
+                                   "transmission_color": [0.25, 0.65, 0.9], "transmission_depth": 0.6}),
+               ("rough translucent", {"specular_roughness": 0.35, "transmission_weight": 1.0,
+                                      "transmission_color": [0.95, 0.6, 0.25], "transmission_depth": 1.0}),
+               ("brushed metal", {"base_color": [0.9, 0.9, 0.92], "base_metalness": 1.0, "specular_roughness": 0.5,
+                                  "specular_roughness_anisotropy": 0.85}),
+               ("gltf_pbr", None)]),
+    ]
+    radius = 0.5
+    for z, spheres in rows:
+        for i, (name, params) in enumerate(spheres):
+            if params is None:
+                raylab = {"model": "gltf_pbr", "base_color": red, "metallic": 0.0, "roughness": 0.5, "ior": 1.5}
+            else:
+                raylab = dict({"model": "openpbr"}, **params)
+            preview = raylab.get("base_color", [0.9, 0.9, 0.9])
+            g.sphere(name, [(i - 1.5) * 1.3, radius, z], radius, g.material(name, raylab, preview))
+    g.camera("camera", [0.0, 3.6, 7.0], [0.0, 0.3, -0.3], 36.0)
+    g.environment("environments/%s.exr" % SHOWCASE_HDRI, strength=0.5)
+    return g
+
+
 # The world of showcase_hdri.gltf, from /usr/share/blender/datafiles/studiolights/world (Debian blender-data).
 SHOWCASE_HDRI = "sunrise"
 
@@ -570,7 +624,7 @@ def main():
     METAL_F0.update(metal_presets(options.raylab))
     LOOKS.update({model["name"]: raylab_tools.look_material(model) for model in registry(options.raylab)})
     documents = [sweep_scene(options.raylab, *sweep) for sweep in sweeps(options.raylab)]
-    for scene in documents + [showcase(), showcase_hdri(), showcase_modern(), cornell_box(), cornell_box_area(), minimal()]:
+    for scene in documents + [showcase(), showcase_hdri(), showcase_modern(), showcase_layered(), cornell_box(), cornell_box_area(), minimal()]:
         path = scene.write(options.directory)
         print("wrote %s (%d bytes)" % (os.path.relpath(path), os.path.getsize(path)))
 

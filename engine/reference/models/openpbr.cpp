@@ -165,9 +165,8 @@ Lobes fuzzOver(const OpenpbrParams& p, const Lobes& below, const dvec3& wi, cons
           passed * below.specular};
 }
 
-// The reflection off the outside: every layer, the glossy-diffuse part scaled by diffuseScale (1 - T under a
-// translucent base).
-Lobes reflectionLobes(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo, double diffuseScale) {
+// The reflection off the outside: every layer, the glossy-diffuse part of albedo diffuseAlbedo (diffuseAlbedoOf).
+Lobes reflectionLobes(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo, const dvec3& diffuseAlbedo) {
   if (!aboveHorizon(wi, wo)) return {};
   const double C = p.coat_weight, M = p.base_metalness;
   const dvec3 h = wi + wo;
@@ -187,7 +186,7 @@ Lobes reflectionLobes(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo, 
     passed = glm::max(dvec3(1.0) - ((1.0 - W) * (1.0 - loss) + W * eFilm), 0.0);
   }
   const dvec3 specular = p.specular_color * F * microfacet(wi, wo, alpha);
-  const dvec3 diffuse = diffuseScale * passed * eonEval(EonParams{rho, p.base_diffuse_roughness}, wi, wo).sum();
+  const dvec3 diffuse = passed * eonEval(EonParams{diffuseAlbedo, p.base_diffuse_roughness}, wi, wo).sum();
   // Metal.
   const dvec3 b = f82Coefficient(rho, p.specular_color);
   dvec3 metalF = f82(rho, b, cosH);
@@ -212,7 +211,8 @@ Lobes reflectionLobes(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo, 
     // E_b, the base's albedo at normal incidence; K, the share of the light leaving the base that the coat
     // reflects back (OpenPBR, "Darkening").
     const double eSpecNormal = 1.0 - dielectricReflectionLoss(1.0, alphaTable, eps);
-    const dvec3 eBase = (1.0 - M) * (p.specular_color * eSpecNormal + (1.0 - eSpecNormal) * rho) + M * glm::min(p.specular_weight * rho, dvec3(1.0));
+    const dvec3 eBase = (1.0 - M) * (p.specular_color * eSpecNormal + (1.0 - eSpecNormal) * diffuseAlbedo) +
+                        M * glm::min(p.specular_weight * rho, dvec3(1.0));
     const double kRough = 1.0 - (1.0 - averageFresnel(epsCoat)) / (p.coat_ior * p.coat_ior);  // the table's E_F
     const double kSmooth = fresnel(wo.z, epsCoat);
     const double roughnessEstimate = (1.0 - M) * ((1.0 - eps * eps) + eps * eps * p.specular_roughness) + M * p.specular_roughness;
@@ -275,6 +275,17 @@ GgxDielectricParams interfaceOf(const OpenpbrParams& p) {
 }
 constexpr double kInterfaceShare = 0.75;  // of the sampler's choices when wo is outside (openpbr.glsl)
 
+// A thin wall (geometry_thin_walled): the same material on both faces, the translucent base's light straight
+// through, the subsurface a sheet that scatters half back and half through (openpbr.glsl).
+bool thinWalled(const OpenpbrParams& p) { return p.geometry_thin_walled >= 0.5; }
+dvec3 diffuseAlbedoOf(const OpenpbrParams& p, double T) {
+  const double sheet = thinWalled(p) ? 0.5 : 1.0, S = p.subsurface_weight;
+  return (1.0 - T) * ((1.0 - S) * p.base_weight * p.base_color + S * sheet * p.subsurface_color);
+}
+double thinMirrorShare(const OpenpbrParams& p, double T) {
+  return thinWalled(p) ? 0.5 * p.subsurface_weight * (1.0 - T) * (1.0 - p.base_metalness) : 0.0;
+}
+
 // What the coat and the fuzz pass of light crossing them along the outside direction w.
 dvec3 layersPassed(const OpenpbrParams& p, const dvec3& w) {
   dvec3 passed(1.0);
@@ -290,6 +301,26 @@ dvec3 layersPassed(const OpenpbrParams& p, const dvec3& w) {
   return passed;
 }
 
+// Through a thin wall, wo above and wi below: the base's GGX lobe mirrored through the surface with 1 - F, and the
+// thin subsurface's diffuse transmission, under what the layers pass along wo.
+dvec3 thinTransmission(const OpenpbrParams& p, double T, const dvec3& wi, const dvec3& wo) {
+  const dvec3 mirrored(wi.x, wi.y, -wi.z);
+  const Alphas alpha = baseAlphas(p);
+  const double eps = specularEps(p);
+  const dvec3 straight = T * p.transmission_color * (1.0 - fresnel(cosineToHalfVector(wo, mirrored + wo), eps)) *
+                         microfacet(mirrored, wo, alpha);
+  const double passed = dielectricReflectionLoss(wo.z, projectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
+  const dvec3 diffuse = (1.0 - T) * (1.0 - p.base_metalness) * p.subsurface_weight * 0.5 * p.subsurface_color *
+                        passed * kInvPi;
+  return (straight + diffuse) * layersPassed(p, wo);
+}
+double thinInterfacePdf(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
+  const dvec3 w(wi.x, wi.y, std::abs(wi.z));
+  const Alphas alpha = baseAlphas(p);
+  const double F = fresnel(cosineToHalfVector(wo, w + wo), specularEps(p));
+  return (wi.z < 0.0 ? 1.0 - F : F) * ggxReflectionPdf(w + wo, wo, alpha.t, alpha.b);
+}
+
 bool offTheSurface(const dvec3& w) { return w.z != 0.0 && std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z); }
 
 }  // namespace
@@ -297,26 +328,51 @@ bool offTheSurface(const dvec3& w) { return w.z != 0.0 && std::isfinite(w.x) && 
 Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) {
   dvec3 wi = wiIn, wo = woIn;
   const double T = transmissionShare(p);
-  if (T > 0.0 && !(wi.z > 0.0 && wo.z > 0.0)) {
+  const bool thin = thinWalled(p);
+  if (T > 0.0 && !thin && !(wi.z > 0.0 && wo.z > 0.0)) {
     if (!offTheSurface(wi) || !offTheSurface(wo)) return {};
     dvec3 f = T * ggxDielectricEval(interfaceOf(p), wi, wo).sum();
     if (wi.z * wo.z < 0.0) f *= layersPassed(p, wi.z > 0.0 ? wi : wo);
     return {dvec3(0.0), f};
   }
-  if (!(T > 0.0) && wo.z < 0.0) {  // an opaque surface seen from behind: shaded as from the front
+  if ((thin || !(T > 0.0)) && wo.z < 0.0) {  // an opaque surface or a thin wall seen from behind
     wi.z = -wi.z;
     wo.z = -wo.z;
   }
-  return reflectionLobes(p, wi, wo, 1.0 - T);
+  if (thin && wi.z < 0.0 && wo.z > 0.0) {
+    if (!offTheSurface(wi) || !offTheSurface(wo)) return {};
+    return {dvec3(0.0), thinTransmission(p, T, wi, wo)};
+  }
+  return reflectionLobes(p, wi, wo, diffuseAlbedoOf(p, T));
 }
 
 dvec3 openpbrSample(const OpenpbrParams& p, const dvec3& wo, const dvec3& u) {
   const double T = transmissionShare(p);
-  const double share = T > 0.0 ? (wo.z > 0.0 ? kInterfaceShare * T : 1.0) : 0.0;
-  if (u.x < share) return ggxDielectricSample(interfaceOf(p), wo, dvec3(std::min(u.x / share, 1.0 - 1e-12), u.y, u.z));
-  const bool behind = !(T > 0.0) && wo.z < 0.0;
-  dvec3 wi = sampleReflection(p, behind ? dvec3(wo.x, wo.y, -wo.z) : wo,
-                              dvec3(std::min((u.x - share) / (1.0 - share), 1.0 - 1e-12), u.y, u.z));
+  const bool thin = thinWalled(p);
+  const bool behind = (thin || !(T > 0.0)) && wo.z < 0.0;
+  const dvec3 w = behind ? dvec3(wo.x, wo.y, -wo.z) : wo;
+  const double share = T > 0.0 ? (w.z > 0.0 ? kInterfaceShare * T : 1.0) : 0.0;
+  dvec3 wi;
+  if (u.x < share) {
+    const double v = std::min(u.x / share, 1.0 - 1e-12);
+    if (thin) {
+      const Alphas alpha = baseAlphas(p);
+      const dvec3 m = sampleGgxVisibleNormal(w, alpha.t, alpha.b, dvec2(u.y, u.z));
+      wi = reflectAbout(w, m);
+      if (!(wi.z > 0.0)) return dvec3(0.0);
+      if (!(v < fresnel(std::clamp(glm::dot(w, m), 0.0, 1.0), specularEps(p)))) wi.z = -wi.z;
+    } else {
+      wi = ggxDielectricSample(interfaceOf(p), w, dvec3(v, u.y, u.z));
+    }
+  } else {
+    const double q = thinMirrorShare(p, T);
+    double v = std::min((u.x - share) / (1.0 - share), 1.0 - 1e-12);
+    const bool mirror = v < q;
+    v = mirror ? v / q : (v - q) / (1.0 - q);
+    wi = sampleReflection(p, w, dvec3(std::min(v, 1.0 - 1e-12), u.y, u.z));
+    if (!(wi.z > 0.0)) return dvec3(0.0);
+    if (mirror) wi.z = -wi.z;
+  }
   if (behind) wi.z = -wi.z;
   return wi;
 }
@@ -324,8 +380,9 @@ dvec3 openpbrSample(const OpenpbrParams& p, const dvec3& wo, const dvec3& u) {
 double openpbrPdf(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) {
   dvec3 wi = wiIn, wo = woIn;
   const double T = transmissionShare(p);
+  const bool thin = thinWalled(p);
   double interfaceDensity = 0.0, share = 0.0;
-  if (T > 0.0) {
+  if (T > 0.0 && !thin) {
     if (!offTheSurface(wi) || !offTheSurface(wo)) return 0.0;
     interfaceDensity = ggxDielectricPdf(interfaceOf(p), wi, wo);
     share = wo.z > 0.0 ? kInterfaceShare * T : 1.0;
@@ -333,12 +390,21 @@ double openpbrPdf(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) 
     wi.z = -wi.z;
     wo.z = -wo.z;
   }
+  if (thin && T > 0.0) {
+    if (!offTheSurface(wi) || !(wo.z > 0.0)) return 0.0;
+    interfaceDensity = thinInterfacePdf(p, wi, wo);
+    share = kInterfaceShare * T;
+  }
   if (!(share < 1.0)) return interfaceDensity;
-  return share * interfaceDensity + (1.0 - share) * reflectionPdf(p, wi, wo);
+  const double q = thinMirrorShare(p, T);
+  const bool through = wi.z < 0.0;
+  if (through && !(q > 0.0)) return share * interfaceDensity;
+  const double mixture = reflectionPdf(p, dvec3(wi.x, wi.y, std::abs(wi.z)), wo);
+  return share * interfaceDensity + (1.0 - share) * (through ? q : 1.0 - q) * mixture;
 }
 
 dvec3 openpbrMediumAbsorption(const OpenpbrParams& p) {
-  if (!(transmissionShare(p) > 0.0 && p.transmission_depth > 0.0)) return dvec3(0.0);
+  if (!(transmissionShare(p) > 0.0 && p.transmission_depth > 0.0) || thinWalled(p)) return dvec3(0.0);
   dvec3 sigma;
   for (int c = 0; c < 3; ++c) sigma[c] = std::min(-std::log(std::max(p.transmission_color[c], 1e-30)) / p.transmission_depth, 1e30);
   return sigma;
