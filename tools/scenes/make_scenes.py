@@ -489,8 +489,8 @@ def showcase_layered():
                 ("dusty fuzz", {"base_color": [0.1, 0.1, 0.12], "specular_roughness": 0.2, "fuzz_weight": 0.8,
                                 "fuzz_color": [0.85, 0.8, 0.7], "fuzz_roughness": 1.0}),
                 ("thin film over dielectric", {"base_color": [0.03, 0.03, 0.04], "specular_roughness": 0.15,
-                                               "thin_film_weight": 1.0, "thin_film_thickness": 0.45,
-                                               "thin_film_ior": 1.45}),
+                                               "thin_film_weight": 1.0, "thin_film_thickness": 0.35,
+                                               "thin_film_ior": 2.0}),
                 ("thin film over metal", dict(gold, specular_roughness=0.2, thin_film_weight=1.0,
                                               thin_film_thickness=0.3, thin_film_ior=1.8))]),
         (1.2, [("coloured glass", {"specular_roughness": 0.0, "transmission_weight": 1.0,
@@ -510,7 +510,7 @@ def showcase_layered():
                 raylab = dict({"model": "openpbr"}, **params)
             preview = raylab.get("base_color", [0.9, 0.9, 0.9])
             g.sphere(name, [(i - 1.5) * 1.3, radius, z], radius, g.material(name, raylab, preview))
-    g.camera("camera", [0.0, 3.6, 7.0], [0.0, 0.3, -0.3], 36.0)
+    g.camera("camera", [0.0, 2.9, 5.6], [0.0, 0.35, -0.3], 38.0)
     g.environment("environments/%s.exr" % SHOWCASE_HDRI, strength=0.5)
     return g
 
