@@ -319,10 +319,23 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
            where + " (KHR_materials_ior)");
   setParam(record, "specular_weight", glm::vec3(input.specular), where + " (KHR_materials_specular)");
   setParam(record, "specular_color", glm::min(input.specularColor, glm::vec3(1.0f)), where + " (KHR_materials_specular)");
-  setParam(record, "coat_weight", glm::vec3(input.clearcoat), where + " (KHR_materials_clearcoat)");
-  setParam(record, "coat_roughness", glm::vec3(input.clearcoatRoughness), where + " (KHR_materials_clearcoat)");
-  setParam(record, "coat_ior", glm::vec3(1.5f), where + " (KHR_materials_clearcoat)");
-  setParam(record, "coat_darkening", glm::vec3(0.0f), where + " (KHR_materials_clearcoat)");
+  if (input.hasCoat) {
+    const std::string coat = where + " (KHR_materials_coat)";
+    setParam(record, "coat_weight", glm::vec3(input.coat), coat);
+    setParam(record, "coat_roughness", glm::vec3(input.coatRoughness), coat);
+    setParam(record, "coat_ior", glm::vec3(indexWithin(input.coatIor, record, "coat_ior", coat)), coat);
+    setParam(record, "coat_color", input.coatColor, coat);
+    setParam(record, "coat_darkening", glm::vec3(input.coatDarkening), coat);
+  } else {
+    setParam(record, "coat_weight", glm::vec3(input.clearcoat), where + " (KHR_materials_clearcoat)");
+    setParam(record, "coat_roughness", glm::vec3(input.clearcoatRoughness), where + " (KHR_materials_clearcoat)");
+    setParam(record, "coat_ior", glm::vec3(1.5f), where + " (KHR_materials_clearcoat)");
+    setParam(record, "coat_darkening", glm::vec3(0.0f), where + " (KHR_materials_clearcoat)");
+  }
+  if (input.diffuseRoughness > 0.0f) {
+    setParam(record, "base_diffuse_roughness", glm::vec3(input.diffuseRoughness),
+             where + " (KHR_materials_diffuse_roughness)");
+  }
   const std::string film = where + " (KHR_materials_iridescence)";
   const ParamInfo& thickness = *findParam(modelInfo(record.model), "thin_film_thickness");
   const ParamInfo& filmIor = *findParam(modelInfo(record.model), "thin_film_ior");
@@ -354,11 +367,18 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
       setParam(record, "transmission_color", input.baseColor, through);
     }
   }
-  const std::string sheen = where + " (KHR_materials_sheen)";
-  const float sheenWeight = std::max({input.sheenColor.r, input.sheenColor.g, input.sheenColor.b});
-  setParam(record, "fuzz_weight", glm::vec3(sheenWeight), sheen);
-  if (sheenWeight > 0.0f) setParam(record, "fuzz_color", input.sheenColor / sheenWeight, sheen);
-  setParam(record, "fuzz_roughness", glm::vec3(input.sheenRoughness), sheen);
+  if (input.hasFuzz) {
+    const std::string fuzz = where + " (KHR_materials_fuzz)";
+    setParam(record, "fuzz_weight", glm::vec3(input.fuzz), fuzz);
+    setParam(record, "fuzz_color", input.fuzzColor, fuzz);
+    setParam(record, "fuzz_roughness", glm::vec3(input.fuzzRoughness), fuzz);
+  } else {
+    const std::string sheen = where + " (KHR_materials_sheen)";
+    const float sheenWeight = std::max({input.sheenColor.r, input.sheenColor.g, input.sheenColor.b});
+    setParam(record, "fuzz_weight", glm::vec3(sheenWeight), sheen);
+    if (sheenWeight > 0.0f) setParam(record, "fuzz_color", input.sheenColor / sheenWeight, sheen);
+    setParam(record, "fuzz_roughness", glm::vec3(input.sheenRoughness), sheen);
+  }
   return record;
 }
 
@@ -366,7 +386,8 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
 
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where) {
   const bool sheen = input.sheenColor != glm::vec3(0.0f);
-  const bool layered = input.clearcoat > 0.0f || input.iridescence > 0.0f || sheen;
+  const bool layered = input.clearcoat > 0.0f || input.iridescence > 0.0f || sheen || (input.hasCoat && input.coat > 0.0f) ||
+                       (input.hasFuzz && input.fuzz > 0.0f) || input.diffuseRoughness > 0.0f;
   const bool volume = input.volumeThickness > 0.0f && std::isfinite(input.attenuationDistance);
   if (input.transmission >= 1.0f && !volume && !layered) {
     // Glass: smooth up to a roughness of 0.001, rough (ggx_dielectric, alpha = roughness^2 as glTF's own BRDF)
@@ -553,6 +574,49 @@ void convertMaterials(Document& document, Scene& scene) {
         }
       }
       if (volume->contains("thicknessTexture")) document.ignore(name + ".thicknessTexture (only whether there is a volume matters)");
+    }
+    const auto readColour = [&](const json& owner, const char* key, const std::string& name, glm::vec3& colour) {
+      if (const json* value = findPath(owner, {key})) {
+        for (int c = 0; c < 3; ++c) {
+          colour[c] = checkedFactor((*value)[std::size_t(c)].get<double>(), 0.0, 1.0, where,
+                                    name + "." + key + "[" + std::to_string(c) + "]");
+        }
+      }
+    };
+    const auto readFactor = [&](const json& owner, const char* key, const std::string& name, double lo, double hi,
+                                float& factor) {
+      if (const json* value = findPath(owner, {key})) factor = checkedFactor(value->get<double>(), lo, hi, where, name + "." + key);
+    };
+    if (const json* coat = findPath(materialJson, {"extensions", "KHR_materials_coat"})) {
+      const std::string name = "KHR_materials_coat";
+      input.hasCoat = true;
+      readFactor(*coat, "coatFactor", name, 0.0, 1.0, input.coat);
+      readFactor(*coat, "coatRoughnessFactor", name, 0.0, 1.0, input.coatRoughness);
+      readFactor(*coat, "coatIor", name, 1.0, kMaxEta, input.coatIor);
+      readFactor(*coat, "coatDarkeningFactor", name, 0.0, 1.0, input.coatDarkening);
+      readColour(*coat, "coatColorFactor", name, input.coatColor);
+      for (const auto& [key, value] : coat->items()) {
+        if (key.size() > 7 && key.compare(key.size() - 7, 7, "Texture") == 0) {
+          document.ignore(name + "." + key + " (its factor applies alone)");
+        }
+      }
+    }
+    if (const json* fuzz = findPath(materialJson, {"extensions", "KHR_materials_fuzz"})) {
+      const std::string name = "KHR_materials_fuzz";
+      input.hasFuzz = true;
+      readFactor(*fuzz, "fuzzFactor", name, 0.0, 1.0, input.fuzz);
+      readFactor(*fuzz, "fuzzRoughnessFactor", name, 0.0, 1.0, input.fuzzRoughness);
+      readColour(*fuzz, "fuzzColorFactor", name, input.fuzzColor);
+      for (const char* texture : {"fuzzTexture", "fuzzColorTexture", "fuzzRoughnessTexture"}) {
+        if (fuzz->contains(texture)) document.ignore(name + "." + texture + " (its factor applies alone)");
+      }
+    }
+    if (const json* diffuse = findPath(materialJson, {"extensions", "KHR_materials_diffuse_roughness"})) {
+      const std::string name = "KHR_materials_diffuse_roughness";
+      readFactor(*diffuse, "diffuseRoughnessFactor", name, 0.0, 1.0, input.diffuseRoughness);
+      if (diffuse->contains("diffuseRoughnessTexture")) {
+        document.ignore(name + ".diffuseRoughnessTexture (its factor applies alone)");
+      }
     }
     if (const json* sheen = findPath(materialJson, {"extensions", "KHR_materials_sheen"})) {
       const std::string name = "KHR_materials_sheen";

@@ -33,6 +33,15 @@ struct MetallicRoughness {
   float volumeThickness = 0.0f;         // KHR_materials_volume.thicknessFactor (0: thin-walled, no volume)
   float attenuationDistance = std::numeric_limits<float>::infinity();  // KHR_materials_volume
   glm::vec3 attenuationColor{1.0f};     // KHR_materials_volume.attenuationColor
+  // The OpenPBR-aligned drafts, which name openpbr's own parameters: KHR_materials_coat (it replaces the clear coat
+  // where both appear), KHR_materials_fuzz (it replaces the sheen), KHR_materials_diffuse_roughness.
+  bool hasCoat = false;
+  float coat = 0.0f, coatRoughness = 0.0f, coatIor = 1.5f, coatDarkening = 1.0f;
+  glm::vec3 coatColor{1.0f};
+  bool hasFuzz = false;
+  float fuzz = 0.0f, fuzzRoughness = 0.5f;
+  glm::vec3 fuzzColor{1.0f};
+  float diffuseRoughness = 0.0f;
   glm::vec3 sheenColor{0.0f};           // KHR_materials_sheen.sheenColorFactor
   float sheenRoughness = 0.0f;          // KHR_materials_sheen.sheenRoughnessFactor
 };

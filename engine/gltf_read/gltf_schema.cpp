@@ -77,6 +77,12 @@ const Shape kSheen{{numbers("sheenColorFactor", 3), object("sheenColorTexture", 
                     number("sheenRoughnessFactor"), object("sheenRoughnessTexture", kTextureInfo)}};
 const Shape kVolume{{number("thicknessFactor"), object("thicknessTexture", kTextureInfo), number("attenuationDistance"),
                      numbers("attenuationColor", 3)}};
+const Shape kCoat{{number("coatFactor"), number("coatRoughnessFactor"), number("coatIor"), number("coatDarkeningFactor"),
+                   numbers("coatColorFactor", 3)}};
+const Shape kFuzz{{number("fuzzFactor"), object("fuzzTexture", kTextureInfo), numbers("fuzzColorFactor", 3),
+                   object("fuzzColorTexture", kTextureInfo), number("fuzzRoughnessFactor"),
+                   object("fuzzRoughnessTexture", kTextureInfo)}};
+const Shape kDiffuseRoughness{{number("diffuseRoughnessFactor"), object("diffuseRoughnessTexture", kTextureInfo)}};
 const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                        object("normalTexture", kNormalTextureInfo), object("occlusionTexture", kOcclusionTextureInfo),
                        object("emissiveTexture", kTextureInfo), numbers("emissiveFactor", 3), string("alphaMode"),
@@ -85,7 +91,9 @@ const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                        object("KHR_materials_transmission", kTransmission), object("KHR_materials_specular", kSpecular),
                        object("KHR_materials_clearcoat", kClearcoat),
                        object("KHR_materials_iridescence", kIridescence), object("KHR_materials_sheen", kSheen),
-                       object("KHR_materials_volume", kVolume)}};
+                       object("KHR_materials_volume", kVolume), object("KHR_materials_coat", kCoat),
+                       object("KHR_materials_fuzz", kFuzz),
+                       object("KHR_materials_diffuse_roughness", kDiffuseRoughness)}};
 const Shape kPrimitive{{required(indexMap("attributes")), index("indices"), index("material"), index("mode"),
                         indexMaps("targets")}};
 const Shape kMesh{{string("name"), required(objects("primitives", kPrimitive)), numbers("weights")}};

@@ -27,6 +27,7 @@ const std::map<std::string, Expected> kExpected = {
     {"showcase", {10, 3, 2}},
     {"showcase_hdri", {10, 0, 2}},  // lit by its environment image only: no default light
     {"showcase_modern", {21, 0, 2}},  // likewise
+    {"showcase_layered", {12, 0, 2}},  // likewise
     {"sweep_ashikhmin_shirley_nv", {8, 1, 0}},
     {"sweep_blinnphong_s", {8, 1, 0}},
     {"sweep_cooktorrance_eta", {8, 1, 0}},

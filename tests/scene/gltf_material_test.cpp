@@ -475,6 +475,39 @@ TEST(GltfMaterial, KhrMaterialsSheenIsOpenPbrsFuzz) {
   }
 }
 
+// The OpenPBR-aligned drafts name openpbr's own parameters: KHR_materials_coat (over the clear coat where both
+// appear), KHR_materials_fuzz (over the sheen), KHR_materials_diffuse_roughness.
+TEST(GltfMaterial, TheOpenPbrAlignedDraftsMapOntoTheirOwnParameters) {
+  WarningCapture warnings;
+  const Scene scene = loadMaterial(
+      {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
+       {"extensions", {{"KHR_materials_coat", {{"coatFactor", 0.8}, {"coatRoughnessFactor", 0.2}, {"coatIor", 1.4},
+                                               {"coatColorFactor", {0.9, 0.8, 0.7}}, {"coatDarkeningFactor", 0.5}}},
+                       {"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}}},
+                       {"KHR_materials_fuzz", {{"fuzzFactor", 0.6}, {"fuzzColorFactor", {0.2, 0.4, 0.6}},
+                                               {"fuzzRoughnessFactor", 0.7}, {"fuzzTexture", {{"index", 0}}}}},
+                       {"KHR_materials_sheen", {{"sheenColorFactor", {1.0, 1.0, 1.0}}}},
+                       {"KHR_materials_diffuse_roughness", {{"diffuseRoughnessFactor", 0.9}}}}}});
+  const gpu::MaterialRecord& r = scene.materials[0].record;
+  EXPECT_EQ(r.model, modelId("openpbr"));
+  EXPECT_FLOAT_EQ(getParam(r, "coat_weight").x, 0.8f) << "the draft coat, not the clear coat";
+  EXPECT_FLOAT_EQ(getParam(r, "coat_roughness").x, 0.2f);
+  EXPECT_FLOAT_EQ(getParam(r, "coat_ior").x, 1.4f);
+  EXPECT_FLOAT_EQ(getParam(r, "coat_darkening").x, 0.5f);
+  expectNear(getParam(r, "coat_color"), {0.9f, 0.8f, 0.7f}, "coat colour");
+  EXPECT_FLOAT_EQ(getParam(r, "fuzz_weight").x, 0.6f) << "the fuzz, not the sheen";
+  expectNear(getParam(r, "fuzz_color"), {0.2f, 0.4f, 0.6f}, "fuzz colour");
+  EXPECT_FLOAT_EQ(getParam(r, "fuzz_roughness").x, 0.7f);
+  EXPECT_FLOAT_EQ(getParam(r, "base_diffuse_roughness").x, 0.9f);
+  EXPECT_EQ(warnings.count("fuzzTexture"), 1) << "its texture is not yet read, and says so";
+  for (const json& bad : {json{{"KHR_materials_coat", {{"coatFactor", 2.0}}}},
+                          json{{"KHR_materials_fuzz", {{"fuzzColorFactor", {0.5, -0.1, 0.5}}}}},
+                          json{{"KHR_materials_diffuse_roughness", {{"diffuseRoughnessFactor", "rough"}}}}}) {
+    const std::string error = materialError({{"name", "bad draft"}, {"extensions", bad}});
+    EXPECT_NE(error.find("KHR_materials_"), std::string::npos) << error;
+  }
+}
+
 // glTF 3.9.3: the emissive texture is multiplied by emissiveFactor, whose default is zero.
 TEST(GltfMaterial, AnEmissiveTextureMultipliesTheFactorAndIsSkippedUnderAZeroOne) {
   GltfBuilder lit = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
