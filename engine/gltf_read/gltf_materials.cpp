@@ -332,6 +332,15 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
     setParam(record, "coat_ior", glm::vec3(1.5f), where + " (KHR_materials_clearcoat)");
     setParam(record, "coat_darkening", glm::vec3(0.0f), where + " (KHR_materials_clearcoat)");
   }
+  // KHR_materials_anisotropy stretches GGX along the tangent to alpha_t = mix(alpha, 1, strength^2), alpha_b = alpha
+  // (alpha = roughness^2); openpbr's anisotropy a sets the ratio alpha_b / alpha_t = 1 - a: the same ratio, so the
+  // same shape of highlight, of a slightly different size (docs/gltf.md).
+  if (input.anisotropy > 0.0f) {
+    const float alpha = std::max(input.roughness * input.roughness, 1e-3f);
+    const float alphaT = alpha + (1.0f - alpha) * input.anisotropy * input.anisotropy;
+    setParam(record, "specular_roughness_anisotropy", glm::vec3(std::clamp(1.0f - alpha / alphaT, 0.0f, 1.0f)),
+             where + " (KHR_materials_anisotropy)");
+  }
   if (input.diffuseRoughness > 0.0f) {
     setParam(record, "base_diffuse_roughness", glm::vec3(input.diffuseRoughness),
              where + " (KHR_materials_diffuse_roughness)");
@@ -387,7 +396,8 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where) {
   const bool sheen = input.sheenColor != glm::vec3(0.0f);
   const bool layered = input.clearcoat > 0.0f || input.iridescence > 0.0f || sheen || (input.hasCoat && input.coat > 0.0f) ||
-                       (input.hasFuzz && input.fuzz > 0.0f) || input.diffuseRoughness > 0.0f;
+                       (input.hasFuzz && input.fuzz > 0.0f) || input.diffuseRoughness > 0.0f ||
+                       input.anisotropy > 0.0f;
   const bool volume = input.volumeThickness > 0.0f && std::isfinite(input.attenuationDistance);
   if (input.transmission >= 1.0f && !volume && !layered) {
     // Glass: smooth up to a roughness of 0.001, rough (ggx_dielectric, alpha = roughness^2 as glTF's own BRDF)
@@ -610,6 +620,15 @@ void convertMaterials(Document& document, Scene& scene) {
       for (const char* texture : {"fuzzTexture", "fuzzColorTexture", "fuzzRoughnessTexture"}) {
         if (fuzz->contains(texture)) document.ignore(name + "." + texture + " (its factor applies alone)");
       }
+    }
+    if (const json* anisotropy = findPath(materialJson, {"extensions", "KHR_materials_anisotropy"})) {
+      const std::string name = "KHR_materials_anisotropy";
+      readFactor(*anisotropy, "anisotropyStrength", name, 0.0, 1.0, input.anisotropy);
+      float rotation = 0.0f;
+      readFactor(*anisotropy, "anisotropyRotation", name, -std::numeric_limits<float>::max(),
+                 std::numeric_limits<float>::max(), rotation);
+      if (rotation != 0.0f) document.ignore(name + ".anisotropyRotation (the highlight stretches along the tangent)");
+      if (anisotropy->contains("anisotropyTexture")) document.ignore(name + ".anisotropyTexture (its strength applies alone)");
     }
     if (const json* diffuse = findPath(materialJson, {"extensions", "KHR_materials_diffuse_roughness"})) {
       const std::string name = "KHR_materials_diffuse_roughness";

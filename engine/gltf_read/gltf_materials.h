@@ -42,6 +42,7 @@ struct MetallicRoughness {
   float fuzz = 0.0f, fuzzRoughness = 0.5f;
   glm::vec3 fuzzColor{1.0f};
   float diffuseRoughness = 0.0f;
+  float anisotropy = 0.0f;              // KHR_materials_anisotropy.anisotropyStrength
   glm::vec3 sheenColor{0.0f};           // KHR_materials_sheen.sheenColorFactor
   float sheenRoughness = 0.0f;          // KHR_materials_sheen.sheenRoughnessFactor
 };

@@ -126,11 +126,11 @@ TEST(GltfFile, WrongJsonTypesAreErrorsNamingTheirPath) {
 
 TEST(GltfFile, RequiredExtensionsRaylabLacksAreErrorsAndUsedOnesAWarning) {
   GltfBuilder b = quadScene();
-  b.doc()["extensionsUsed"] = {"KHR_materials_anisotropy", "KHR_materials_ior", "KHR_texture_transform",
+  b.doc()["extensionsUsed"] = {"KHR_materials_dispersion", "KHR_materials_ior", "KHR_texture_transform",
                                 "KHR_materials_clearcoat"};
   WarningCapture warnings;
   b.load();
-  EXPECT_EQ(warnings.count("the extension KHR_materials_anisotropy"), 1);
+  EXPECT_EQ(warnings.count("the extension KHR_materials_dispersion"), 1);
   EXPECT_EQ(warnings.count("KHR_materials_clearcoat"), 0) << "raylab reads KHR_materials_clearcoat";
   EXPECT_EQ(warnings.count("KHR_materials_ior"), 0) << "raylab reads KHR_materials_ior";
   EXPECT_EQ(warnings.count("KHR_texture_transform"), 0) << "raylab reads KHR_texture_transform";

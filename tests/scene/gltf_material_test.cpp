@@ -500,6 +500,14 @@ TEST(GltfMaterial, TheOpenPbrAlignedDraftsMapOntoTheirOwnParameters) {
   EXPECT_FLOAT_EQ(getParam(r, "fuzz_roughness").x, 0.7f);
   EXPECT_FLOAT_EQ(getParam(r, "base_diffuse_roughness").x, 0.9f);
   EXPECT_EQ(warnings.count("fuzzTexture"), 1) << "its texture is not yet read, and says so";
+  // KHR_materials_anisotropy: the ratio alpha_b / alpha_t of glTF's stretch, mix(alpha, 1, s^2) against alpha.
+  const Scene brushed = loadMaterial({{"pbrMetallicRoughness", {{"metallicFactor", 1.0}, {"roughnessFactor", 0.5}}},
+                                      {"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.6},
+                                                                                    {"anisotropyRotation", 0.3}}}}}});
+  const gpu::MaterialRecord& b = brushed.materials[0].record;
+  EXPECT_EQ(b.model, modelId("openpbr"));
+  EXPECT_NEAR(getParam(b, "specular_roughness_anisotropy").x, 1.0f - 0.25f / (0.25f + 0.75f * 0.36f), 1e-6f);
+  EXPECT_EQ(warnings.count("anisotropyRotation"), 1) << "the rotation is not yet applied, and says so";
   for (const json& bad : {json{{"KHR_materials_coat", {{"coatFactor", 2.0}}}},
                           json{{"KHR_materials_fuzz", {{"fuzzColorFactor", {0.5, -0.1, 0.5}}}}},
                           json{{"KHR_materials_diffuse_roughness", {{"diffuseRoughnessFactor", "rough"}}}}}) {
