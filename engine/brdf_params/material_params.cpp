@@ -211,6 +211,27 @@ void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 valu
   }
   if (param == &kDelta) record.delta = value.x;
   else writeSlot(record, *param, value);
+  if (param->role == "emission_luminance" || param->role == "emission_color") {
+    const ParamInfo& luminance = *findRole(model, "emission_luminance");
+    const ParamInfo& colour = *findRole(model, "emission_color");
+    record.emission = readSlot(record, luminance).x * readSlot(record, colour);
+  }
+}
+
+bool hasOwnEmission(const ModelInfo& model) {
+  return findRole(model, "emission_luminance") != nullptr && findRole(model, "emission_color") != nullptr;
+}
+
+void setEmission(gpu::MaterialRecord& record, glm::vec3 radiance, const std::string& where) {
+  const ModelInfo& model = modelInfo(record.model);
+  if (!hasOwnEmission(model)) {
+    record.emission = radiance;
+    return;
+  }
+  const float luminance = std::max({radiance.x, radiance.y, radiance.z, 0.0f});
+  const ParamInfo& colour = *findRole(model, "emission_color");
+  if (luminance > 0.0f) setParam(record, colour.name, glm::clamp(radiance / luminance, 0.0f, 1.0f), where);
+  setParam(record, findRole(model, "emission_luminance")->name, glm::vec3(luminance), where);
 }
 
 glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name) {

@@ -105,6 +105,12 @@ std::string_view paramLayer(const ModelInfo& model, const ParamInfo& param);
 // the accepted range when the name is unknown for this model, the value is not finite or out of range.
 // A file parameter takes only the id of a file already loaded (measured_library.h); paths go through setFileParam.
 void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 value, const std::string& where);
+// A model with its own emission (parameters of roles emission_luminance and emission_color: openpbr's) emits
+// luminance x colour: setParam keeps record.emission, which the kernels and the light list read, equal to it.
+bool hasOwnEmission(const ModelInfo& model);
+// Sets record.emission, and for a model with its own emission its parameters to match (the luminance the largest
+// channel, the colour the rest), so that the parameters stay the one source of it.
+void setEmission(gpu::MaterialRecord& record, glm::vec3 radiance, const std::string& where);
 // The current value of a parameter (RGB parameters return three channels, scalars a splat).
 glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name);
 

@@ -703,14 +703,19 @@ void convertMaterials(Document& document, Scene& scene) {
     }
     if (const json* info = use({"normalTexture"})) uses.refs[gpu::kTextureNormal] = convertUse(info, "normalTexture");
     if (const json* info = use({"occlusionTexture"})) convertUse(info, "occlusionTexture");
-    record.emission = emittedRadiance(material, materialJson, where);
+    // glTF's emissive factor and strength; a model with its own emission (openpbr) takes it as its parameters unless
+    // extras.raylab gave those (then the factor must be absent or black).
+    const glm::vec3 emissive = emittedRadiance(material, materialJson, where);
+    if (!hasOwnEmission(modelInfo(record.model)) || glm::any(glm::greaterThan(emissive, glm::vec3(0.0f)))) {
+      setEmission(record, emissive, where + " (emissiveFactor)");
+    }
     // The factor multiplies the texture (glTF 2.0 3.9.3); with the factor's default of zero the texture emits
     // nothing and is not uploaded.
     if (const json* info = use({"emissiveTexture"}); info && glm::any(glm::greaterThan(record.emission, glm::vec3(0.0f)))) {
       uses.refs[gpu::kTextureEmissive] = convertUse(info, "emissiveTexture");
       // Without its texels (a source raylab cannot decode, reported) the factor alone would light the whole
       // surface, labels as bright as their background: such a material emits nothing.
-      if (uses.refs[gpu::kTextureEmissive].texture < 0) record.emission = glm::vec3(0.0f);
+      if (uses.refs[gpu::kTextureEmissive].texture < 0) setEmission(record, glm::vec3(0.0f), where);
     }
     const bool textured = std::any_of(std::begin(uses.refs), std::end(uses.refs),
                                       [](const gpu::TextureRef& ref) { return ref.texture >= 0; });

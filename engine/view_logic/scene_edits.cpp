@@ -80,7 +80,7 @@ void switchModel(gpu::MaterialRecord& record, std::uint32_t model) {
   gpu::MaterialRecord next = defaultRecord(model);
   next.delta = record.delta;
   next.textures = record.textures;
-  next.emission = record.emission;
+  setEmission(next, record.emission, "switchModel");  // a model with its own emission takes it as its parameters
   if (a.diffuse) carry(next, "diffuse", *a.diffuse);
   if (a.specular) carry(next, "specular", *a.specular);
   if (a.eta) carry(next, "eta", glm::vec3(*a.eta));

@@ -211,6 +211,26 @@ TEST(MaterialTable, OnlyALayeredModelsParametersHaveLayers) {
 }
 
 // A model's `feature:` lines take kSpecFeatures bits above the integrators' fixed ones, each its own.
+// openpbr's emission parameters are the material's emission: setting either keeps record.emission (what the
+// kernels and the light list read) equal to luminance x colour, and setEmission writes them back from a radiance.
+TEST(MaterialTable, AModelsOwnEmissionParametersAreTheMaterialsEmission) {
+  const ModelInfo& openpbr = *findModel("openpbr");
+  ASSERT_TRUE(hasOwnEmission(openpbr));
+  EXPECT_FALSE(hasOwnEmission(*findModel("lambert")));
+  gpu::MaterialRecord record = defaultRecord(openpbr.id);
+  EXPECT_EQ(record.emission, glm::vec3(0.0f));
+  setParam(record, "emission_color", glm::vec3(1.0f, 0.5f, 0.25f), "test");
+  setParam(record, "emission_luminance", glm::vec3(4.0f), "test");
+  EXPECT_EQ(record.emission, glm::vec3(4.0f, 2.0f, 1.0f));
+  setEmission(record, glm::vec3(0.5f, 2.0f, 1.0f), "test");
+  EXPECT_FLOAT_EQ(getParam(record, "emission_luminance").x, 2.0f);
+  EXPECT_EQ(getParam(record, "emission_color"), glm::vec3(0.25f, 1.0f, 0.5f));
+  EXPECT_EQ(record.emission, glm::vec3(0.5f, 2.0f, 1.0f));
+  gpu::MaterialRecord lambert = defaultRecord(findModel("lambert")->id);
+  setEmission(lambert, glm::vec3(3.0f), "test");
+  EXPECT_EQ(lambert.emission, glm::vec3(3.0f)) << "a model without emission parameters keeps the radiance itself";
+}
+
 TEST(MaterialTable, ModelFeaturesHaveTheirOwnBitsAboveTheFixedFeatures) {
   std::uint32_t seen = 0;
   for (const ModelInfo& model : allModels()) {

@@ -123,6 +123,15 @@ TEST(CompareSpecTest, ModelSwitchesCarryOverWhatMeansTheSameThing) {
   setParam(invisible, "eta", glm::vec3(1.0f), "t");
   switchModel(invisible, modelId("ggx_dielectric"));
   EXPECT_EQ(getParam(invisible, "eta").x, 1.001f) << "clamped into rough glass's range";
+  // An emitter stays one: openpbr takes the emission as its own parameters, and gives it back.
+  gpu::MaterialRecord lamp = defaultRecord(modelId("lambert"));
+  lamp.emission = glm::vec3(2.0f, 1.0f, 0.5f);
+  switchModel(lamp, modelId("openpbr"));
+  EXPECT_FLOAT_EQ(getParam(lamp, "emission_luminance").x, 2.0f);
+  EXPECT_EQ(getParam(lamp, "emission_color"), glm::vec3(1.0f, 0.5f, 0.25f));
+  EXPECT_EQ(lamp.emission, glm::vec3(2.0f, 1.0f, 0.5f));
+  switchModel(lamp, modelId("lambert"));
+  EXPECT_EQ(lamp.emission, glm::vec3(2.0f, 1.0f, 0.5f));
   // Every switch leaves a record whose every parameter is in range, whatever came before.
   for (const ModelInfo& from : allModels()) {
     for (const ModelInfo& to : allModels()) {

@@ -15,11 +15,11 @@ import os
 import re
 import sys
 
-MAX_PARAM_FLOATS = 40  # gpu::kMaxMaterialParams (shaders/shared/scene_records.h)
+MAX_PARAM_FLOATS = 48  # gpu::kMaxMaterialParams (shaders/shared/scene_records.h)
 LOBES = {"reflection": 1, "transmission": 2, "diffuse": 4, "glossy": 8, "specular": 16}
 ROLES = {"diffuse", "specular", "eta", "transmittance", "slope", "slope_x", "slope_y", "exponent", "mirror_exponent",
          "exponent_x", "exponent_y", "lobe_x", "lobe_y", "file", "network", "roughness", "metallic", "specular_weight",
-         "specular_tint"}
+         "specular_tint", "emission_luminance", "emission_color"}
 ROW = re.compile(r"^//\s*\|\s*`?(\w+)`?\s*\|\s*\[([-0-9.e]+),\s*([-0-9.e]+)\]\s*\|\s*([-0-9.e]+)\s*\|"
                  r"\s*([^|]*)\|\s*([^|]*?)\s*\|\s*$")
 
