@@ -345,18 +345,22 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
     setParam(record, "base_diffuse_roughness", glm::vec3(input.diffuseRoughness),
              where + " (KHR_materials_diffuse_roughness)");
   }
-  const std::string film = where + " (KHR_materials_iridescence)";
-  const ParamInfo& thickness = *findParam(modelInfo(record.model), "thin_film_thickness");
-  const ParamInfo& filmIor = *findParam(modelInfo(record.model), "thin_film_ior");
-  const float micrometres = input.iridescenceThicknessNm / 1000.0f;
-  if (micrometres > thickness.max || input.iridescenceIor > filmIor.max) {
-    warn(film + ": the film's thickness " + formatNumber(input.iridescenceThicknessNm) + " nm and index " +
-         formatNumber(input.iridescenceIor) + " are used up to openpbr's " + formatNumber(1000.0f * thickness.max) +
-         " nm and " + formatNumber(filmIor.max));
+  // A layer's parameters are set only where the layer is: at its neutral value a layer is none, and the material
+  // keeps openpbr's defaults for it.
+  if (input.iridescence > 0.0f) {
+    const std::string film = where + " (KHR_materials_iridescence)";
+    const ParamInfo& thickness = *findParam(modelInfo(record.model), "thin_film_thickness");
+    const ParamInfo& filmIor = *findParam(modelInfo(record.model), "thin_film_ior");
+    const float micrometres = input.iridescenceThicknessNm / 1000.0f;
+    if (micrometres > thickness.max || input.iridescenceIor > filmIor.max) {
+      warn(film + ": the film's thickness " + formatNumber(input.iridescenceThicknessNm) + " nm and index " +
+           formatNumber(input.iridescenceIor) + " are used up to openpbr's " + formatNumber(1000.0f * thickness.max) +
+           " nm and " + formatNumber(filmIor.max));
+    }
+    setParam(record, "thin_film_weight", glm::vec3(input.iridescence), film);
+    setParam(record, "thin_film_thickness", glm::vec3(std::min(micrometres, thickness.max)), film);
+    setParam(record, "thin_film_ior", glm::vec3(std::clamp(input.iridescenceIor, filmIor.min, filmIor.max)), film);
   }
-  setParam(record, "thin_film_weight", glm::vec3(input.iridescence), film);
-  setParam(record, "thin_film_thickness", glm::vec3(std::min(micrometres, thickness.max)), film);
-  setParam(record, "thin_film_ior", glm::vec3(std::clamp(input.iridescenceIor, filmIor.min, filmIor.max)), film);
   // KHR_materials_transmission and KHR_materials_volume onto the translucent base: a finite attenuation distance is
   // the volume (transmission_depth, transmission_color = attenuationColor); without one, glTF tints what passes by
   // the base colour, which is openpbr's tint at the surface (depth 0).
@@ -376,16 +380,16 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
       setParam(record, "transmission_color", input.baseColor, through);
     }
   }
-  if (input.hasFuzz) {
+  if (input.hasFuzz && input.fuzz > 0.0f) {
     const std::string fuzz = where + " (KHR_materials_fuzz)";
     setParam(record, "fuzz_weight", glm::vec3(input.fuzz), fuzz);
     setParam(record, "fuzz_color", input.fuzzColor, fuzz);
     setParam(record, "fuzz_roughness", glm::vec3(input.fuzzRoughness), fuzz);
-  } else {
+  } else if (const float sheenWeight = std::max({input.sheenColor.r, input.sheenColor.g, input.sheenColor.b});
+             !input.hasFuzz && sheenWeight > 0.0f) {
     const std::string sheen = where + " (KHR_materials_sheen)";
-    const float sheenWeight = std::max({input.sheenColor.r, input.sheenColor.g, input.sheenColor.b});
     setParam(record, "fuzz_weight", glm::vec3(sheenWeight), sheen);
-    if (sheenWeight > 0.0f) setParam(record, "fuzz_color", input.sheenColor / sheenWeight, sheen);
+    setParam(record, "fuzz_color", input.sheenColor / sheenWeight, sheen);
     setParam(record, "fuzz_roughness", glm::vec3(input.sheenRoughness), sheen);
   }
   return record;

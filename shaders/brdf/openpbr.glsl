@@ -1,4 +1,5 @@
-// OpenPBR Surface 1.1.1: a metal and a glossy-diffuse dielectric mixed by metalness, under a coat and a fuzz.
+// OpenPBR Surface 1.1.1: a metal and a glossy-diffuse (or subsurface, or translucent) dielectric mixed by metalness,
+// under a thin film, a coat and a fuzz; solid or a thin wall; emitting.
 // lobes: reflection transmission diffuse glossy
 // feature: coat coat_weight
 // feature: thin_film thin_film_weight

@@ -516,6 +516,41 @@ TEST(GltfMaterial, TheOpenPbrAlignedDraftsMapOntoTheirOwnParameters) {
   }
 }
 
+// Each layered extension at its neutral value is no layer: beside a clear coat (which makes the material openpbr
+// either way), adding it leaves every parameter as without it. The non-neutral answers are tested above (the
+// mapping) and in tests/cpu/openpbr_test.cpp, fuzz_test.cpp and the path integrator's Beer-Lambert test (the
+// result).
+TEST(GltfMaterial, EveryLayeredExtensionAtItsNeutralValueIsNoLayer) {
+  const json base = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.6, 0.3, 0.2, 1.0}}, {"metallicFactor", 0.0},
+                                               {"roughnessFactor", 0.4}}}};
+  const auto withExtensions = [&](const json& extensions) {
+    json material = base;
+    material["extensions"] = extensions;
+    material["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0}};
+    return loadMaterial(material).materials[0].record;
+  };
+  const gpu::MaterialRecord without = withExtensions(json::object());
+  ASSERT_EQ(without.model, modelId("openpbr"));
+  const std::vector<std::pair<std::string, json>> neutral = {
+      {"KHR_materials_sheen", {{"sheenColorFactor", {0.0, 0.0, 0.0}}, {"sheenRoughnessFactor", 0.5}}},
+      {"KHR_materials_iridescence", {{"iridescenceFactor", 0.0}}},
+      {"KHR_materials_transmission", {{"transmissionFactor", 0.0}}},
+      {"KHR_materials_volume", {{"thicknessFactor", 0.0}, {"attenuationDistance", 1.0}}},
+      {"KHR_materials_anisotropy", {{"anisotropyStrength", 0.0}}},
+      {"KHR_materials_fuzz", {{"fuzzFactor", 0.0}}},
+      {"KHR_materials_diffuse_roughness", {{"diffuseRoughnessFactor", 0.0}}},
+  };
+  const ModelInfo& openpbr = modelInfo(without.model);
+  for (const auto& [name, values] : neutral) {
+    const gpu::MaterialRecord with = withExtensions(json{{name, values}});
+    ASSERT_EQ(with.model, without.model) << name;
+    for (const ParamInfo& p : openpbr.params) {
+      EXPECT_EQ(getParam(with, p.name), getParam(without, p.name)) << name << ": " << p.name;
+    }
+    EXPECT_EQ(with.emission, without.emission) << name;
+  }
+}
+
 // glTF 3.9.3: the emissive texture is multiplied by emissiveFactor, whose default is zero.
 TEST(GltfMaterial, AnEmissiveTextureMultipliesTheFactorAndIsSkippedUnderAZeroOne) {
   GltfBuilder lit = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
