@@ -2,9 +2,10 @@
 // albedo scaling, as the specification's sections write each piece (docs/brdfs.md, "openpbr"): the F82-tint
 // metal with Kulla & Conty's multiple scattering, the glossy-diffuse dielectric (GGX reflection over EON scaled by
 // 1 - E_spec(wo)), the metalness mix, the coat (its reflection, view-dependent absorption, roughening and
-// darkening), the thin film, and the fuzz over all (Zeltner et al.'s LTC, reference/fuzz.h). The directional
-// albedos E come from the build-time table (reference/albedo_tables.h); the rest is written here in double from the
-// formulas, not from the GLSL.
+// darkening), the thin film, the fuzz over all (Zeltner et al.'s LTC, reference/fuzz.h), the translucent base
+// (refraction through the base's interface; two-sided), the subsurface in its short-radius limit and thin walls.
+// The directional albedos E come from the build-time table (reference/albedo_tables.h); the rest is written here in
+// double from the formulas, not from the GLSL.
 #include <algorithm>
 #include <cmath>
 #include <complex>
