@@ -122,6 +122,18 @@ def image_diff(python: Path, source: Path, raylab: Path, work: Path) -> None:
             check(figures["mean_abs"] > 1e-3 and 0.0 < figures["flip"] < 1.0, f"two models look alike: {figures}")
 
 
+def layered_cost(python: Path, source: Path, raylab: Path, work: Path) -> None:
+    # Its renders compile openpbr's every-layer kernel (about 40 s cold): here its help and its refusal of bad
+    # options, which need no render.
+    result = subprocess.run([str(python), str(source / "tools" / "layered_cost.py"), "--help"], capture_output=True,
+                            text=True)
+    check(result.returncode == 0 and "showcase_layered" in result.stdout, f"layered_cost.py --help: {result.stderr}")
+    result = subprocess.run([str(python), str(source / "tools" / "layered_cost.py"), "--spp", "1", "--raylab",
+                             str(raylab)], capture_output=True, text=True)
+    check(result.returncode == 1 and "--spp must be 2 or more" in result.stderr,
+          f"layered_cost.py --spp 1: exit {result.returncode}, {result.stderr}")
+
+
 def main() -> None:
     raylab, source, work = (Path(arg).resolve() for arg in sys.argv[1:4])
     python = source / ".venv" / "bin" / "python"
@@ -135,6 +147,7 @@ def main() -> None:
     speed_vs_error(python, source, raylab, work)
     sampling_study(python, source, raylab, work)
     image_diff(python, source, raylab, work)
+    layered_cost(python, source, raylab, work)
     print("python_tools_test: passed")
 
 
