@@ -571,24 +571,7 @@ void convertMaterials(Document& document, Scene& scene) {
       }
     }
 
-    if (const json* volume = findPath(materialJson, {"extensions", "KHR_materials_volume"})) {
-      const std::string name = "KHR_materials_volume";
-      const double kLargest = std::numeric_limits<float>::max();
-      if (const json* factor = findPath(*volume, {"thicknessFactor"})) {
-        input.volumeThickness = checkedFactor(factor->get<double>(), 0.0, kLargest, where, name + ".thicknessFactor");
-      }
-      if (const json* distance = findPath(*volume, {"attenuationDistance"})) {
-        input.attenuationDistance =
-            checkedFactor(distance->get<double>(), 1e-30, kLargest, where, name + ".attenuationDistance");
-      }
-      if (const json* colour = findPath(*volume, {"attenuationColor"})) {
-        for (int c = 0; c < 3; ++c) {
-          input.attenuationColor[c] = checkedFactor((*colour)[std::size_t(c)].get<double>(), 0.0, 1.0, where,
-                                                    name + ".attenuationColor[" + std::to_string(c) + "]");
-        }
-      }
-      if (volume->contains("thicknessTexture")) document.ignore(name + ".thicknessTexture (only whether there is a volume matters)");
-    }
+    // The layered extensions' factors, each checked against its range; messages name the extension and the key.
     const auto readColour = [&](const json& owner, const char* key, const std::string& name, glm::vec3& colour) {
       if (const json* value = findPath(owner, {key})) {
         for (int c = 0; c < 3; ++c) {
@@ -601,6 +584,14 @@ void convertMaterials(Document& document, Scene& scene) {
                                 float& factor) {
       if (const json* value = findPath(owner, {key})) factor = checkedFactor(value->get<double>(), lo, hi, where, name + "." + key);
     };
+    if (const json* volume = findPath(materialJson, {"extensions", "KHR_materials_volume"})) {
+      const std::string name = "KHR_materials_volume";
+      const double kLargest = std::numeric_limits<float>::max();
+      readFactor(*volume, "thicknessFactor", name, 0.0, kLargest, input.volumeThickness);
+      readFactor(*volume, "attenuationDistance", name, 1e-30, kLargest, input.attenuationDistance);
+      readColour(*volume, "attenuationColor", name, input.attenuationColor);
+      if (volume->contains("thicknessTexture")) document.ignore(name + ".thicknessTexture (only whether there is a volume matters)");
+    }
     if (const json* coat = findPath(materialJson, {"extensions", "KHR_materials_coat"})) {
       const std::string name = "KHR_materials_coat";
       input.hasCoat = true;
@@ -643,15 +634,8 @@ void convertMaterials(Document& document, Scene& scene) {
     }
     if (const json* sheen = findPath(materialJson, {"extensions", "KHR_materials_sheen"})) {
       const std::string name = "KHR_materials_sheen";
-      if (const json* colour = findPath(*sheen, {"sheenColorFactor"})) {
-        for (int c = 0; c < 3; ++c) {
-          input.sheenColor[c] = checkedFactor((*colour)[std::size_t(c)].get<double>(), 0.0, 1.0, where,
-                                              name + ".sheenColorFactor[" + std::to_string(c) + "]");
-        }
-      }
-      if (const json* factor = findPath(*sheen, {"sheenRoughnessFactor"})) {
-        input.sheenRoughness = checkedFactor(factor->get<double>(), 0.0, 1.0, where, name + ".sheenRoughnessFactor");
-      }
+      readColour(*sheen, "sheenColorFactor", name, input.sheenColor);
+      readFactor(*sheen, "sheenRoughnessFactor", name, 0.0, 1.0, input.sheenRoughness);
       for (const char* texture : {"sheenColorTexture", "sheenRoughnessTexture"}) {
         if (sheen->contains(texture)) document.ignore(name + "." + texture + " (its factor applies alone)");
       }

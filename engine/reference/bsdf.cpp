@@ -14,6 +14,10 @@ bool aboveHorizon(const dvec3& wi, const dvec3& wo) {
          std::isfinite(wo.x) && std::isfinite(wo.y) && std::isfinite(wo.z);
 }
 
+bool finiteAndOffTheSurface(const dvec3& w) {
+  return w.z != 0.0 && std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z);
+}
+
 dvec3 eval(const Material& material, const dvec3& wi, const dvec3& wo) {
   return evalLobes(material, wi, wo).sum();
 }
@@ -36,10 +40,6 @@ namespace {
 // A delta BSDF has neither f nor a density (its directions come from deltaEvent).
 bool hasDensity(const Material& material) {
   return (lobeFlags(material) & (gpu::kLobeDiffuse | gpu::kLobeGlossy)) != 0;
-}
-
-bool finiteAndOffTheSurface(const dvec3& w) {
-  return w.z != 0.0 && std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z);
 }
 
 }  // namespace

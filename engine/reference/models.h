@@ -36,6 +36,8 @@ struct SpecularLobe {
 
 // The one-sidedness guard of the contract: both directions strictly above the horizon. NaN fails it.
 bool aboveHorizon(const dvec3& wi, const dvec3& wo);
+// A two-sided model's guard: w finite and off the surface (on either side). NaN fails it.
+bool finiteAndOffTheSurface(const dvec3& w);
 
 // The mixture of the shared brief (docs/brdfs.md, "Sampling"): sum(rho_s) / (sum(rho_d) + sum(rho_s)), 0.5
 // when both are 0.

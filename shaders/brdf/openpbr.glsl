@@ -94,6 +94,14 @@ float openpbrBaseRoughness(float specularRoughness, float coatWeight, float coat
   return mix(specularRoughness, sqrt(sqrt(min(1.0, r2 * r2 + 2.0 * c2 * c2))), coatWeight);
 }
 
+// The coat's weight where a scene compiles a coat, else the constant 0: the coat's code then folds away.
+float openpbrCoat(float coatWeight) { return featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0; }
+
+// The base's GGX widths, its roughness roughened by a coat of weight C.
+vec2 openpbrBaseAlphas(float specularRoughness, float specularAnisotropy, float C, float coatRoughness) {
+  return openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
+}
+
 // eps = (eta' - 1) / (eta' + 1) = sqrt(F0) of the base dielectric seen from the coat's mix of media, specular_weight
 // applied (OpenPBR, "Dielectric base"); an index below 1 is taken as its inverse, which has the same F0.
 float openpbrSpecularEps(float specularWeight, float specularIor, float coatWeight, float coatIor) {
@@ -261,7 +269,7 @@ vec3 openpbrReflection(float baseWeight, vec3 baseColor, float metalness, float 
   wo = liftOffHorizon(wo);
   precise const vec3 h = wi + wo;
   // A scene without a coat compiles none: C is then the constant 0, and the coat's code folds away.
-  const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0, M = metalness;
+  const float C = openpbrCoat(coatWeight), M = metalness;
 
   // The base substrate: the glossy-diffuse dielectric and the metal.
   const float r = openpbrBaseRoughness(specularRoughness, C, coatRoughness);
@@ -337,13 +345,12 @@ float openpbrReflectionPdf(float baseWeight, vec3 baseColor, float metalness, fl
   if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
-  coatWeight = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;  // as in openpbrReflection
+  coatWeight = openpbrCoat(coatWeight);  // as in openpbrReflection
   fuzzWeight = featureEnabled(kOpenpbrFeatureFuzz) ? fuzzWeight : 0.0;
   const vec3 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
                                           coatIor, fuzzWeight, fuzzColor);
   precise const vec3 h = wi + wo;
-  const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, coatWeight, coatRoughness),
-                                   specularAnisotropy);
+  const vec2 alpha = openpbrBaseAlphas(specularRoughness, specularAnisotropy, coatWeight, coatRoughness);
   float specular = (1.0 - p.y - p.z) * ggxReflectionPdf(h, wo, alpha.x, alpha.y);
   if (p.y > 0.0) {
     const vec2 alphaCoat = openpbrAlphas(coatRoughness, coatAnisotropy);
@@ -359,7 +366,7 @@ vec3 openpbrReflectionDirection(float baseWeight, vec3 baseColor, float metalnes
                                 float coatRoughness, float coatAnisotropy, float coatIor, float fuzzWeight,
                                 vec3 fuzzColor, float fuzzRoughness, vec3 wo, vec3 u) {
   if (!(wo.z > 0.0)) return vec3(0.0);
-  coatWeight = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;  // as in openpbrReflection
+  coatWeight = openpbrCoat(coatWeight);  // as in openpbrReflection
   fuzzWeight = featureEnabled(kOpenpbrFeatureFuzz) ? fuzzWeight : 0.0;
   const vec3 p = openpbrLobeProbabilities(baseWeight, baseColor, metalness, specularWeight, specularIor, coatWeight,
                                           coatIor, fuzzWeight, fuzzColor);
@@ -371,8 +378,7 @@ vec3 openpbrReflectionDirection(float baseWeight, vec3 baseColor, float metalnes
   if (u.x < p.x) {
     const bool coat = u.y < p.y;
     const vec2 alpha = coat ? openpbrAlphas(coatRoughness, coatAnisotropy)
-                            : openpbrAlphas(openpbrBaseRoughness(specularRoughness, coatWeight, coatRoughness),
-                                            specularAnisotropy);
+                            : openpbrBaseAlphas(specularRoughness, specularAnisotropy, coatWeight, coatRoughness);
     const float v = coat ? u.y / p.y : (u.y - p.y - p.z) / (1.0 - p.y - p.z);
     return reflectAbout(wo, sampleGgxVisibleNormal(liftOffHorizon(wo), alpha.x, alpha.y, vec2(min(v, 0.99999994), u.z)));
   }
@@ -422,7 +428,7 @@ float openpbrThinMirrorShare(float metalness, float subsurfaceWeight, float T, b
 vec3 openpbrLayersPassed(vec3 w, float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy,
                          float coatIor, float fuzzWeight, float fuzzRoughness) {
   vec3 passed = vec3(1.0);
-  const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
+  const float C = openpbrCoat(coatWeight);
   if (C > 0.0) {
     const float epsCoat = (coatIor - 1.0) / (coatIor + 1.0);
     const float loss = openpbrDielectricLoss(w.z, openpbrProjectedAlpha(openpbrAlphas(coatRoughness, coatAnisotropy), w),
@@ -453,11 +459,11 @@ vec3 openpbrThinTransmission(float metalness, float specularWeight, float specul
                              float specularIor, float coatWeight, vec3 coatColor, float coatRoughness,
                              float coatAnisotropy, float coatIor, float fuzzWeight, float fuzzRoughness, float T,
                              vec3 transmissionColor, float subsurfaceWeight, vec3 subsurfaceColor, vec3 wi, vec3 wo) {
-  const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
+  const float C = openpbrCoat(coatWeight);
   wo = liftOffHorizon(wo);
   const vec3 mirrored = liftOffHorizon(vec3(wi.xy, -wi.z));
   precise const vec3 h = mirrored + wo;
-  const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
+  const vec2 alpha = openpbrBaseAlphas(specularRoughness, specularAnisotropy, C, coatRoughness);
   const float eps = openpbrSpecularEps(specularWeight, specularIor, C, coatIor);
   const vec3 straight = T * transmissionColor * (1.0 - openpbrFresnel(openpbrCosineToHalfVector(wo, h), eps)) *
                         openpbrMicrofacet(mirrored, wo, h, alpha);
@@ -472,12 +478,12 @@ vec3 openpbrThinTransmission(float metalness, float specularWeight, float specul
 float openpbrThinInterfacePdf(float specularWeight, float specularRoughness, float specularAnisotropy,
                               float specularIor, float coatWeight, float coatRoughness, float coatIor, vec3 wi,
                               vec3 wo) {
-  const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
+  const float C = openpbrCoat(coatWeight);
   wo = liftOffHorizon(wo);
   const bool through = wi.z < 0.0;
   const vec3 w = liftOffHorizon(vec3(wi.xy, abs(wi.z)));
   precise const vec3 h = w + wo;
-  const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
+  const vec2 alpha = openpbrBaseAlphas(specularRoughness, specularAnisotropy, C, coatRoughness);
   const float F = openpbrFresnel(openpbrCosineToHalfVector(wo, h), openpbrSpecularEps(specularWeight, specularIor, C, coatIor));
   return (through ? 1.0 - F : F) * ggxReflectionPdf(h, wo, alpha.x, alpha.y);
 }
@@ -493,8 +499,8 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
   const bool thin = openpbrThinWalled(thinWalled);
   if (T > 0.0 && !thin && !(wi.z > 0.0 && wo.z > 0.0)) {
     if (!(abs(wi.z) > 0.0 && abs(wo.z) > 0.0)) return vec3(0.0);  // on the surface, or NaN
-    const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
-    const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
+    const float C = openpbrCoat(coatWeight);
+    const vec2 alpha = openpbrBaseAlphas(specularRoughness, specularAnisotropy, C, coatRoughness);
     const vec3 tint = transmissionDepth > 0.0 ? vec3(1.0) : transmissionColor;
     vec3 f = T * ggxDielectricEval(alpha.x, alpha.y, openpbrTransmissionEta(specularIor), tint, wi, wo);
     if (wi.z * wo.z < 0.0) {
@@ -532,8 +538,8 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
   float interfaceDensity = 0.0, share = 0.0;
   if (T > 0.0 && !thin) {
     if (!(abs(wi.z) > 0.0 && abs(wo.z) > 0.0)) return 0.0;
-    const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
-    const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
+    const float C = openpbrCoat(coatWeight);
+    const vec2 alpha = openpbrBaseAlphas(specularRoughness, specularAnisotropy, C, coatRoughness);
     interfaceDensity = ggxDielectricPdf(alpha.x, alpha.y, openpbrTransmissionEta(specularIor), vec3(1.0), wi, wo);
     share = wo.z > 0.0 ? kOpenpbrInterfaceShare * T : 1.0;
   } else if (wo.z < 0.0) {
@@ -575,8 +581,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
   const float share = T > 0.0 ? (w.z > 0.0 ? kOpenpbrInterfaceShare * T : 1.0) : 0.0;
   vec3 wi;
   if (u.x < share) {
-    const float C = featureEnabled(kOpenpbrFeatureCoat) ? coatWeight : 0.0;
-    const vec2 alpha = openpbrAlphas(openpbrBaseRoughness(specularRoughness, C, coatRoughness), specularAnisotropy);
+    const float C = openpbrCoat(coatWeight);
+    const vec2 alpha = openpbrBaseAlphas(specularRoughness, specularAnisotropy, C, coatRoughness);
     const float v = min(u.x / share, 0.99999994);
     if (thin) {
       const vec3 m = sampleGgxVisibleNormal(liftOffHorizon(w), alpha.x, alpha.y, u.yz);

@@ -322,8 +322,6 @@ double thinInterfacePdf(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo
   return (wi.z < 0.0 ? 1.0 - F : F) * ggxReflectionPdf(w + wo, wo, alpha.t, alpha.b);
 }
 
-bool offTheSurface(const dvec3& w) { return w.z != 0.0 && std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z); }
-
 }  // namespace
 
 Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) {
@@ -331,7 +329,7 @@ Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) 
   const double T = transmissionShare(p);
   const bool thin = thinWalled(p);
   if (T > 0.0 && !thin && !(wi.z > 0.0 && wo.z > 0.0)) {
-    if (!offTheSurface(wi) || !offTheSurface(wo)) return {};
+    if (!finiteAndOffTheSurface(wi) || !finiteAndOffTheSurface(wo)) return {};
     dvec3 f = T * ggxDielectricEval(interfaceOf(p), wi, wo).sum();
     if (wi.z * wo.z < 0.0) f *= layersPassed(p, wi.z > 0.0 ? wi : wo);
     return {dvec3(0.0), f};
@@ -341,7 +339,7 @@ Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) 
     wo.z = -wo.z;
   }
   if (thin && wi.z < 0.0 && wo.z > 0.0) {
-    if (!offTheSurface(wi) || !offTheSurface(wo)) return {};
+    if (!finiteAndOffTheSurface(wi) || !finiteAndOffTheSurface(wo)) return {};
     return {dvec3(0.0), thinTransmission(p, T, wi, wo)};
   }
   return reflectionLobes(p, wi, wo, diffuseAlbedoOf(p, T));
@@ -384,7 +382,7 @@ double openpbrPdf(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) 
   const bool thin = thinWalled(p);
   double interfaceDensity = 0.0, share = 0.0;
   if (T > 0.0 && !thin) {
-    if (!offTheSurface(wi) || !offTheSurface(wo)) return 0.0;
+    if (!finiteAndOffTheSurface(wi) || !finiteAndOffTheSurface(wo)) return 0.0;
     interfaceDensity = ggxDielectricPdf(interfaceOf(p), wi, wo);
     share = wo.z > 0.0 ? kInterfaceShare * T : 1.0;
   } else if (wo.z < 0.0) {
@@ -392,7 +390,7 @@ double openpbrPdf(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) 
     wo.z = -wo.z;
   }
   if (thin && T > 0.0) {
-    if (!offTheSurface(wi) || !(wo.z > 0.0)) return 0.0;
+    if (!finiteAndOffTheSurface(wi) || !(wo.z > 0.0)) return 0.0;
     interfaceDensity = thinInterfacePdf(p, wi, wo);
     share = kInterfaceShare * T;
   }
