@@ -44,6 +44,7 @@ int run(int argc, char** argv) {
     }
   }
   if (out.empty() || walks < 1000) throw raylab::Error("raylab_fuzz_table: needs --out FILE and --walks of 1000 or more");
+  raylab::checkOutputPath(out, "--out");  // before the minutes of walks, not after
 
   std::vector<raylab::reference::FuzzLtcFit> fits(kSize * kSize);
   std::atomic<int> next{0}, done{0};
