@@ -229,6 +229,10 @@ std::string fileKindText(std::string_view role) {
   return role == "network" ? "a neural BRDF .h5 file (Keras weights, its .json beside it)" : "a MERL .binary file";
 }
 
+void checkFileKind(const MeasuredFile& file, std::string_view role, const std::string& where) {
+  if (file.network.has_value() != (role == "network")) checkFileKind(file.path, role, where);
+}
+
 void checkFileKind(const std::string& path, std::string_view role, const std::string& where) {
   const bool network = isNbrdfPath(path);
   if (network != (role == "network")) {

@@ -49,6 +49,9 @@ std::string fileKindText(std::string_view role);
 // Throws Error, naming `where`, unless the file at `path` is of the kind `role` accepts (a file's kind is its
 // extension's: loadMeasured reads a `.h5` as a network, anything else as MERL).
 void checkFileKind(const std::string& path, std::string_view role, const std::string& where);
+// The same for a file already read: its kind is what was read, so the per-evaluation check of the reference models
+// costs a comparison, not a parse of the path (that parse was a sixth of a measured material's sampling test).
+void checkFileKind(const MeasuredFile& file, std::string_view role, const std::string& where);
 
 // While one is alive on a thread, loadMeasured counts the distinct files loaded there and refuses, before reading
 // it, a MERL file beyond kMaxMeasuredFilesPerScene or any file beyond kMaxFilesPerScene: a scene's loader and a

@@ -10,7 +10,7 @@ namespace {
 
 std::shared_ptr<const MeasuredFile> fileOf(const MeasuredParams& p) {
   std::shared_ptr<const MeasuredFile> file = measuredFile(std::uint32_t(p.file));
-  checkFileKind(file->path, "file", "measured");
+  checkFileKind(*file, "file", "measured");
   return file;
 }
 

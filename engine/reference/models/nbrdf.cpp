@@ -10,7 +10,7 @@ namespace {
 
 std::shared_ptr<const MeasuredFile> fileOf(const NbrdfParams& p) {
   std::shared_ptr<const MeasuredFile> file = measuredFile(std::uint32_t(p.file));
-  checkFileKind(file->path, "network", "nbrdf");
+  checkFileKind(*file, "network", "nbrdf");
   return file;
 }
 
