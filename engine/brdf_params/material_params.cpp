@@ -234,6 +234,13 @@ void setEmission(gpu::MaterialRecord& record, glm::vec3 radiance, const std::str
   setParam(record, findRole(model, "emission_luminance")->name, glm::vec3(luminance), where);
 }
 
+bool hasOpacity(const ModelInfo& model) { return findRole(model, "opacity") != nullptr; }
+
+float opacityOf(const gpu::MaterialRecord& record) {
+  const ParamInfo* opacity = findRole(modelInfo(record.model), "opacity");
+  return opacity == nullptr ? 1.0f : readSlot(record, *opacity).x;
+}
+
 glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name) {
   const ParamInfo* param = findParam(modelInfo(record.model), name);
   if (param == nullptr) {

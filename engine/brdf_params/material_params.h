@@ -111,6 +111,11 @@ bool hasOwnEmission(const ModelInfo& model);
 // Sets record.emission, and for a model with its own emission its parameters to match (the luminance the largest
 // channel, the colour the rest), so that the parameters stay the one source of it.
 void setEmission(gpu::MaterialRecord& record, glm::vec3 radiance, const std::string& where);
+// The coverage of a surface of this material (its parameter of role opacity: openpbr's geometry_opacity), 1 for a
+// model without one. Below 1 a ray passes the surface with probability 1 - opacity (kernel/alpha.glsl).
+float opacityOf(const gpu::MaterialRecord& record);
+// Whether a material of this model can be partly transparent by its own parameters (it has a role opacity).
+bool hasOpacity(const ModelInfo& model);
 // The current value of a parameter (RGB parameters return three channels, scalars a splat).
 glm::vec3 getParam(const gpu::MaterialRecord& record, std::string_view name);
 

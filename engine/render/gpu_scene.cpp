@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "brdf_params/material_params.h"
 #include "brdf_tables/brdf_tables.h"
 #include "scene/environment_tables.h"
 #include "scene/spatial_order.h"
@@ -173,10 +174,10 @@ void checkDeviceLimits(const Device& device, const Scene& scene) {
 }  // namespace
 
 namespace {
-void fillGpuScene(const Device& device, const Scene& scene, bool spatialOrder, GpuScene& gpuScene);
+void fillGpuScene(const Device& device, const Scene& scene, const SceneUpload& upload, GpuScene& gpuScene);
 }  // namespace
 
-GpuScene uploadScene(const Device& device, const Scene& scene, bool spatialOrder) {
+GpuScene uploadScene(const Device& device, const Scene& scene, const SceneUpload& upload) {
   checkDeviceLimits(device, scene);
   for (const MeshInstance& instance : scene.instances) {
     if (instance.mesh >= scene.meshes.size()) throw Error("an instance refers to a mesh that does not exist");
@@ -204,7 +205,7 @@ GpuScene uploadScene(const Device& device, const Scene& scene, bool spatialOrder
   // The GpuScene owns what is created into it: a failure at any step releases everything made before it.
   GpuScene gpuScene;
   try {
-    fillGpuScene(device, scene, spatialOrder, gpuScene);
+    fillGpuScene(device, scene, upload, gpuScene);
   } catch (...) {
     destroyGpuScene(device, gpuScene);
     throw;
@@ -238,11 +239,11 @@ void recordSceneIds(const Scene& original, const OrderedGeometry& geometry, GpuS
   }
 }
 
-void fillGpuScene(const Device& device, const Scene& original, bool spatialOrder, GpuScene& gpuScene) {
+void fillGpuScene(const Device& device, const Scene& original, const SceneUpload& upload, GpuScene& gpuScene) {
   const Stopwatch clock;
   // Geometry, light records and primitive ids come from the primitives in spatial order (lavapipe's builder splits
   // at the midpoint of the submitted order); the images from the scene itself.
-  const OrderedGeometry geometry = spatiallyOrderedGeometry(original, spatialOrder);
+  const OrderedGeometry geometry = spatiallyOrderedGeometry(original, upload.spatialOrder);
   const Scene& scene = geometry.scene;
   const PackedMeshes packed = packMeshes(scene);
   gpuScene.positions = createBufferWithData<glm::vec3>(device, packed.positions, kStorage | kAsInputUsage,
@@ -270,10 +271,14 @@ void fillGpuScene(const Device& device, const Scene& original, bool spatialOrder
   // One BLAS per mesh, plus one BLAS holding every sphere.
   std::vector<BlasInput> blasInputs;
   std::vector<std::uint32_t> meshBlas(scene.meshes.size(), UINT32_MAX);
-  // A mesh any of whose instances is alpha-tested or blended is non-opaque geometry.
+  // A mesh any of whose instances is alpha-tested or blended, or may be partly transparent (a model with an opacity,
+  // or any material of an editable scene), is non-opaque geometry.
   std::vector<bool> meshOpaque(scene.meshes.size(), true);
   for (const MeshInstance& instance : scene.instances) {
-    if (hasAlpha(original, scene.materials[instance.material].record)) meshOpaque[instance.mesh] = false;
+    const gpu::MaterialRecord& record = scene.materials[instance.material].record;
+    if (upload.materialsEditable || hasAlpha(original, record) || hasOpacity(modelInfo(record.model))) {
+      meshOpaque[instance.mesh] = false;
+    }
   }
   for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
     const Mesh& mesh = scene.meshes[i];

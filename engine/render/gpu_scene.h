@@ -53,9 +53,17 @@ struct GpuScene {
   double accelerationBuildSeconds = 0.0;  // BLAS + TLAS builds, uploads of their inputs included
 };
 
-// `spatialOrder` false submits the primitives in the scene's own order (only `raylab bench rays --submitted-order`
-// does, to measure what the order is worth).
-GpuScene uploadScene(const Device& device, const Scene& scene, bool spatialOrder = true);
+struct SceneUpload {
+  // False submits the primitives in the scene's own order (only `raylab bench rays --submitted-order` does, to
+  // measure what the order is worth).
+  bool spatialOrder = true;
+  // The viewer's: any material may become partly transparent by a later edit (a model switched to openpbr, its
+  // geometry_opacity lowered), so every mesh is non-opaque geometry. That costs nothing while no material is
+  // transparent: the kernel without the alpha feature traces with the opaque ray flag.
+  bool materialsEditable = false;
+};
+
+GpuScene uploadScene(const Device& device, const Scene& scene, const SceneUpload& upload = {});
 // The materials' records as the device sees them, and the measured files they use (brdf_tables/brdf_tables.h).
 DeviceMaterials deviceMaterialsOf(std::span<const Material> materials);
 void destroyGpuScene(const Device& device, GpuScene& gpuScene);

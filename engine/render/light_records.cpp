@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "brdf_params/material_params.h"
 #include "image/image.h"
 #include "scene/camera_pivot.h"
 #include "scene/texture_lookup.h"
@@ -88,11 +89,11 @@ void addTriangleLights(const Scene& scene, const EmitterSurfaces& surfaces, std:
     record.p0 = glm::vec3(instance.transform * glm::vec4(mesh.positions[mesh.indices[i]], 1.0f));
     record.p1 = glm::vec3(instance.transform * glm::vec4(mesh.positions[mesh.indices[i + 1]], 1.0f));
     record.p2 = glm::vec3(instance.transform * glm::vec4(mesh.positions[mesh.indices[i + 2]], 1.0f));
-    record.radiance = material.emission;
+    record.radiance = material.emission * opacityOf(material);  // next event sees the coverage, kernel/emission.glsl
     record.area = 0.5f * glm::length(glm::cross(record.p1 - record.p0, record.p2 - record.p0));
     record.texturedInstance = gpu::kNoInstance;
     record.primitive = static_cast<std::uint32_t>(i / 3);
-    glm::dvec3 meanRadiance(material.emission);
+    glm::dvec3 meanRadiance(record.radiance);
     if (texture != nullptr) {
       record.texturedInstance = surfaces.instanceRecords.at(instanceIndex);
       meanRadiance *= meanEmissiveTexel(surfaces.textures, *texture, mesh, i);
@@ -130,11 +131,11 @@ void addSphereLights(const Scene& scene, const EmitterSurfaces& surfaces, SceneL
     record.kind = gpu::kLightSphere;
     record.p0 = sphere.center;
     record.p1 = glm::vec3(sphere.radius, 0.0f, 0.0f);
-    record.radiance = material.emission;
+    record.radiance = material.emission * opacityOf(material);  // next event sees the coverage, kernel/emission.glsl
     record.area = float(4.0 * kPi * double(sphere.radius) * sphere.radius);
     record.texturedInstance = gpu::kNoInstance;
     record.primitive = static_cast<std::uint32_t>(i);
-    glm::dvec3 meanRadiance(material.emission);
+    glm::dvec3 meanRadiance(record.radiance);
     if (const gpu::TextureRef* texture = emissiveTexture(scene, material)) {
       record.texturedInstance = surfaces.sphereInstanceRecord;
       meanRadiance *= meanEmissiveTexelOnSphere(surfaces.textures, *texture);

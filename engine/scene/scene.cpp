@@ -36,6 +36,7 @@ gpu::MaterialTextures noMaterialTextures() {
 }
 
 bool hasAlpha(const Scene& scene, const gpu::MaterialRecord& record) {
+  if (opacityOf(record) < 1.0f) return true;
   return record.textures >= 0 && std::size_t(record.textures) < scene.materialTextures.size() &&
          scene.materialTextures[std::size_t(record.textures)].alphaMode != gpu::kAlphaOpaque;
 }

@@ -105,7 +105,8 @@ gpu::TextureRef noTextureRef();
 gpu::TextureRef textureRef(int texture);
 // A MaterialTextures record with no texture in any use, opaque.
 gpu::MaterialTextures noMaterialTextures();
-// True when the material is alpha-tested or blended: its meshes are non-opaque geometry.
+// True when the material is alpha-tested or blended, or its model's opacity (openpbr's geometry_opacity) is below 1:
+// its meshes are non-opaque geometry, and the kernel needs the alpha feature.
 bool hasAlpha(const Scene& scene, const gpu::MaterialRecord& record);
 
 // True when some mesh instance or sphere has a material with emission > 0 (the path integrator's emitters).

@@ -78,7 +78,7 @@ void setUp(Viewer& v) {
   openWindowAndDevice(v);
   while (framebufferExtent(v.window).width == 0 || framebufferExtent(v.window).height == 0) glfwWaitEvents();
 
-  v.gpuScene = uploadScene(v.device, v.scene);
+  v.gpuScene = uploadScene(v.device, v.scene, {.materialsEditable = true});
   v.swapchain = createSwapchain(v.device, v.window.surface, framebufferExtent(v.window));
   if (!v.options.windowCapture.empty() && !(v.swapchain.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT)) {
     throw Error("--capture-window: this window system does not let raylab read the window's images back");

@@ -44,6 +44,7 @@
 // | geometry_thin_walled          | [0, 1]   | 0       |                   | 1: a thin shell (leaf, paper, bubble); 0: a solid |
 // | emission_luminance            | [0, 1000000] | 0   | emission_luminance | emitted luminance in nits (raylab's radiance unit) |
 // | emission_color                | [0, 1]   | 1       | rgb emission_color | the emission's colour                    |
+// | geometry_opacity              | [0, 1]   | 1       | opacity           | coverage: 0 a hole, 1 solid; between, the chance a ray meets the surface |
 // Portsmouth, Hoffman, Pharr, Kutz, Leidl et al., "OpenPBR Surface", Academy Software Foundation, v1.1.1, 2026,
 // section "Reduction to a mixture of lobes", with non-reciprocal albedo scaling (docs/brdfs.md, "openpbr"):
 //   f = C f_coat + lerp(1, T (1 - E_coat(wo)), C) lerp(1, Delta, C delta) lerp(f_dielectric, f_metal, M),
@@ -64,6 +65,8 @@
 // Delta = (1 - K) / (1 - E_b K), K = lerp(F_coat(cos_o), 1 - (1 - E_F) / coat_ior^2, r_b).
 // Emission (emission_luminance x emission_color) is not part of f: the host keeps the material's emission equal to
 // it (brdf_params, setParam), which the integrators and the light list read as every emitter's.
+// Opacity (geometry_opacity) is not part of f either: it is coverage, the chance a ray meets the surface at all,
+// decided in the traversal (kernel/alpha.glsl) so that shadow rays see it too.
 // Fuzz (OpenPBR, "Fuzz", after Zeltner et al. 2022; fuzz.glsl): F fuzz_color f_fuzz + (1 - F E_fuzz(wo)) f_below,
 // F = fuzz_weight: the fuzz reflects E_fuzz of the light and passes the rest, untinted, to the coated base.
 // Sampled as a mixture fixed per material: the cosine lobe, or GGX visible normals of the coat or of the base, or
@@ -494,7 +497,8 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
                  float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
                  vec3 transmissionColor, float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor,
-                 float thinWalled, float emissionLuminance, vec3 emissionColor, vec3 wi, vec3 wo) {
+                 float thinWalled, float emissionLuminance, vec3 emissionColor, float geometryOpacity, vec3 wi,
+                 vec3 wo) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
   const bool thin = openpbrThinWalled(thinWalled);
   if (T > 0.0 && !thin && !(wi.z > 0.0 && wo.z > 0.0)) {
@@ -532,7 +536,8 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
                  float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
                  vec3 transmissionColor, float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor,
-                 float thinWalled, float emissionLuminance, vec3 emissionColor, vec3 wi, vec3 wo) {
+                 float thinWalled, float emissionLuminance, vec3 emissionColor, float geometryOpacity, vec3 wi,
+                 vec3 wo) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
   const bool thin = openpbrThinWalled(thinWalled);
   float interfaceDensity = 0.0, share = 0.0;
@@ -572,7 +577,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                          float thinFilmThickness, float thinFilmIor, float fuzzWeight, vec3 fuzzColor,
                          float fuzzRoughness, float transmissionWeight, vec3 transmissionColor,
                          float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor, float thinWalled,
-                         float emissionLuminance, vec3 emissionColor, vec3 wo, vec3 u) {
+                         float emissionLuminance, vec3 emissionColor, float geometryOpacity,
+                         vec3 wo, vec3 u) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
   const bool thin = openpbrThinWalled(thinWalled);
   // An opaque surface or a thin wall seen from behind is sampled mirrored to the front, and mirrored back.
@@ -611,7 +617,7 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                                coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
                                fuzzWeight, fuzzColor, fuzzRoughness, transmissionWeight, transmissionColor,
                                transmissionDepth, subsurfaceWeight, subsurfaceColor, thinWalled, emissionLuminance,
-                               emissionColor, wi, wo);
+                               emissionColor, geometryOpacity, wi, wo);
   if (!(pdf > 0.0)) return noSample();
   return BsdfSample(wi,
                     openpbrEval(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
@@ -619,7 +625,7 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                                 coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight,
                                 thinFilmThickness, thinFilmIor, fuzzWeight, fuzzColor, fuzzRoughness,
                                 transmissionWeight, transmissionColor, transmissionDepth, subsurfaceWeight,
-                                subsurfaceColor, thinWalled, emissionLuminance, emissionColor, wi, wo),
+                                subsurfaceColor, thinWalled, emissionLuminance, emissionColor, geometryOpacity, wi, wo),
                     pdf);
 }
 

@@ -7,6 +7,7 @@
 
 #include "common/specialization.glsl"
 #include "kernel/textures.glsl"
+#include "generated/model_opacity.glsl"
 
 vec3 emittedRadiance(MaterialRecord material, vec2 uv0, vec2 uv1) {
   vec3 radiance = material.emission;
@@ -15,6 +16,14 @@ vec3 emittedRadiance(MaterialRecord material, vec2 uv0, vec2 uv1) {
     if (emissive.texture >= 0) radiance *= sampleTextureRef(emissive, uv0, uv1, true).rgb;
   }
   return radiance;
+}
+
+// The radiance next event estimation carries from a point of a partly covered emitter (openpbr's geometry_opacity):
+// L_e times the coverage. Its shadow ray stops short of the emitter and never draws the emitter's own coverage coin,
+// where a ray that reaches the emitter meets it with that probability; both then see coverage x L_e on average.
+// Untextured emitters carry it in their light record (engine/render/light_records.cpp).
+vec3 coveredEmittedRadiance(MaterialRecord material, vec2 uv0, vec2 uv1) {
+  return emittedRadiance(material, uv0, uv1) * (featureEnabled(kFeatureAlpha) ? modelOpacity(material) : 1.0);
 }
 
 #endif

@@ -53,7 +53,15 @@ void keepSplit(inout Payload p, inout Pending pending[kMaxPending], inout uint p
 Payload startSample(uvec2 pixel, uint sampleIndex) {
   Payload p;
   p.path.rng = rngCreate(pixel, sampleIndex, params.seed);
-  const vec2 offset = (params.flags & kFrameJitter) != 0u ? rngNext2(p.path.rng) : vec2(0.5);
+  vec2 offset = vec2(0.5);
+  if ((params.flags & kFrameJitter) != 0u) {
+    offset = rngNext2(p.path.rng);
+  } else if (featureEnabled(kFeatureAlpha)) {
+    // Pixel centres to a thousandth of a pixel: the coverage coins of stochastic transparency are keyed by the ray
+    // (kernel/alpha.glsl), so every sample of a pixel must trace a ray of its own bits, as must the shadow rays
+    // from its first hit; at the exact centre each pixel would draw one coin for all its samples.
+    offset += (rngNext2(p.path.rng) - 0.5) * 1e-3;
+  }
   p.path.origin = params.cameraOrigin;
   p.path.direction = primaryDirection(pixel, offset);
   p.path.radiance = vec3(0.0);

@@ -42,7 +42,7 @@ LightSample sphereLightSample(LightRecord light, vec3 x, vec3 u) {
     const vec3 normal = (x + (b - sqrt(h2)) * s.wi - light.p0) / r;
     const SphereRecord sphere = spheres[instances[light.texturedInstance].firstSphere + light.primitive];
     const vec2 uv = sphereUv(normal);
-    s.radiance = emittedRadiance(materials[sphere.material], uv, uv);
+    s.radiance = coveredEmittedRadiance(materials[sphere.material], uv, uv);
   }
   s.pdf = 1.0 / (kTwoPiSphereLight * oneMinusCosMax);
   s.delta = false;

@@ -31,7 +31,7 @@ LightSample triangleLightSample(LightRecord light, vec3 x, vec3 u) {
     const InstanceRecord instance = instances[light.texturedInstance];
     vec2 uv0, uv1;
     triangleUvsAt(instance, light.primitive, b, uv0, uv1);
-    s.radiance = emittedRadiance(materials[instance.material], uv0, uv1);
+    s.radiance = coveredEmittedRadiance(materials[instance.material], uv0, uv1);
   }
   s.pdf = d2 / (light.area * cosL);
   s.delta = false;

@@ -190,6 +190,10 @@ TEST(BrdfCliTest, MalformedRowsAreReportedWithLineAndFieldAndTheOthersWritten) {
         {file + ":8: field 'n'", "length"},
         {file + ":9: field 'wo'", "only glass"},
         {file + ":10:", "7 fields"},
+        // openpbr's layers as any model's parameters: the weight, a negative depth, NaN.
+        {file + ":11: field 'params'", "coat_weight = 1.5 is outside [0, 1]"},
+        {file + ":12: field 'params'", "transmission_depth = -1 is outside [0, 1000]"},
+        {file + ":13: field 'params'", "thin_film_weight"},
     };
     for (const auto& [where, what] : expected) {
       const std::size_t at = result.output.find(where);
@@ -199,7 +203,7 @@ TEST(BrdfCliTest, MalformedRowsAreReportedWithLineAndFieldAndTheOthersWritten) {
         EXPECT_NE(line.find(what), std::string::npos) << line;
       }
     }
-    EXPECT_NE(result.output.find("2 rows (8 malformed)"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("2 rows (11 malformed)"), std::string::npos) << result.output;
     const std::map<std::string, std::string> values = readValues(out);
     EXPECT_EQ(values.size(), 1u + 6u) << backend;
     EXPECT_TRUE(values.count("good-first/f")) << backend;

@@ -93,6 +93,11 @@ TEST(CliTest, BadModelParametersNameTheMaterialParameterAndRangeAndWriteNothing)
       {"phong=ggx_conductor:metal=Unobtainium", "metal 'Unobtainium' is not one of ggx_conductor's (Ag, Al, Au, Cr, Cu)"},
       {"phong=gltf_pbr:ior=4", "'phong' (gltf_pbr): ior = 4 is outside [1, 3]"},
       {"phong=eon:r=2", "'phong' (eon): r = 2 is outside [0, 1]"},
+      {"phong=openpbr:coat_weight=1.5", "'phong' (openpbr): coat_weight = 1.5 is outside [0, 1]"},
+      {"phong=openpbr:fuzz_weight=-0.1", "'phong' (openpbr): fuzz_weight = -0.1 is outside [0, 1]"},
+      {"phong=openpbr:transmission_depth=-1", "'phong' (openpbr): transmission_depth = -1 is outside [0, 1000]"},
+      {"phong=openpbr:thin_film_weight=nan", "'phong' (openpbr): thin_film_weight: expected a number, got 'nan'"},
+      {"phong=openpbr:geometry_opacity=2", "'phong' (openpbr): geometry_opacity = 2 is outside [0, 1]"},
   };
   for (const Case& c : cases) {
     const CommandResult result =

@@ -77,6 +77,12 @@ std::vector<FurnaceCase> furnaceCases() {
       // environment, so the image is its albedo (reflection plus transmission) too.
       {"openpbr smooth translucent", material("openpbr", {{"base_color", 1.0f}, {"specular_roughness", 0.0f},
                                                            {"transmission_weight", 1.0f}}), 16},
+      // Invariance under opacity: a ray passes the half-covered sphere's near side, its far side (from inside) or
+      // both with probability 1/2 each time, and every way out sees white; the shadow rays and the light list see
+      // the same coverage (kernel/alpha.glsl).
+      {"openpbr diffuse + coat, opacity 0.5", material("openpbr", {{"base_color", 1.0f}, {"coat_weight", 1.0f},
+                                                                    {"coat_roughness", 0.2f}, {"geometry_opacity", 0.5f}}),
+       16},
   };
 }
 
@@ -180,6 +186,53 @@ TEST_F(PathIntegratorTest, BeerLambertAttenuatesLightThroughATranslucentSphere) 
     // Each sample is nearly deterministic (F ~ 2.5e-7, a GGX lobe 0.001 wide): the bound is the interface's
     // single-scattering loss at roughness 0 and the float hit points, not noise.
     EXPECT_LT(worst, 5e-3) << "transmission_depth " << depth;
+  }
+}
+
+// geometry_opacity is coverage: a ray meets each surface it crosses with probability `opacity`, decided anew at each
+// crossing. A black openpbr surface (no diffuse, no specular, no emission) of opacity 0.3 under a uniform white sky
+// therefore shows the sky with probability 0.7 through a plane and 0.7^2 = 0.49 through a sphere, whose far side is
+// a second crossing (one coin for both sides would show 0.7). Pooled over the surface's pixels, the mean must match
+// to |z| < 4 (a false alarm once in 16,000 runs); renderImage checks the pipeline backend bit for bit. At pixel
+// centres (the settings here): each sample's coins are its own (kernel/raygen.glsl), or pixels would be 0 or 1.
+TEST_F(PathIntegratorTest, GeometryOpacityIsTheChanceARayMeetsEachSurfaceItCrosses) {
+  constexpr std::uint32_t kSize = 32, kSpp = 64;
+  constexpr float kOpacity = 0.3f;
+  const gpu::MaterialRecord black = material("openpbr", {{"base_color", 0.0f}, {"specular_weight", 0.0f},
+                                                         {"geometry_opacity", kOpacity}});
+  Scene plane;
+  plane.materials.push_back({"black plane", black});
+  plane.meshes.push_back(makeGroundPlane(50.0f, 0.0f));
+  plane.instances.push_back({0, glm::mat4(1.0f), 0});
+  plane.background = glm::vec3(1.0f);
+  plane.camera.position = {0.0f, 2.0f, 3.0f};
+  plane.camera.target = {0.0f, 0.0f, 0.0f};
+  const Scene sphere = furnace(black, glm::vec3(1.0f));
+  for (const auto& [scene, expected] : {std::pair<const Scene*, double>{&plane, 1.0 - kOpacity}, std::pair<const Scene*, double>{&sphere, std::pow(1.0 - kOpacity, 2.0)}}) {
+    EXPECT_NE(featuresOf(*scene).features & gpu::kFeatureAlpha, 0u) << "opacity below 1 compiles the alpha test";
+    const Image image = renderImage(device(), *scene, pathSettings(kSize, 4, *scene), kSpp);
+    const gpu::FrameParams params = frameFor(*scene, kSize, kSize);
+    double sum = 0.0, sumSquares = 0.0;
+    int count = 0;
+    for (std::uint32_t y = 0; y < kSize; ++y) {
+      for (std::uint32_t x = 0; x < kSize; ++x) {
+        const Ray ray = pixelCenterRay(params, x, y);
+        double line = 0.0;
+        const bool covered = scene == &sphere ? hitSphere(ray, glm::dvec3(0.0), 1.0, &line) && line < 0.9
+                                              : ray.direction.y < -0.05;  // well inside the plane's edge of view
+        if (!covered) continue;
+        const double d = double(image.at(x, y).g) - expected;
+        sum += d;
+        sumSquares += d * d;
+        ++count;
+      }
+    }
+    ASSERT_GT(count, 100);
+    const double mean = sum / count;
+    const double z = mean / std::sqrt(std::max(sumSquares / count - mean * mean, 1e-14) / count);
+    std::printf("opacity %.1f, %s: mean %.4f, expected %.4f (z = %.2f over %d pixels)\n", kOpacity,
+                scene == &sphere ? "sphere" : "plane", mean + expected, expected, z, count);
+    EXPECT_LT(std::abs(z), 4.0) << (scene == &sphere ? "sphere" : "plane") << ": mean " << mean + expected;
   }
 }
 

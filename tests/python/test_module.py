@@ -137,6 +137,13 @@ def test_bad_input_raises_with_the_command_lines_messages(source_dir, work):
     assert scene.material("red plastic")["m"] == pytest.approx(0.2), "a refused edit changed the material"
     with pytest.raises(ValueError, match="alpha_x"):
         scene.set_material("red plastic", model="ward", beta=2.0)
+    # openpbr's layers: an out-of-range weight, a negative volume depth, NaN (a NumPy one too); none is applied.
+    for bad in ({"coat_weight": 1.5}, {"transmission_depth": -1.0}, {"fuzz_weight": float("nan")},
+                {"geometry_opacity": np.float32(2.0)}, {"thin_film_weight": np.nan}):
+        name = next(iter(bad))
+        with pytest.raises(ValueError, match=name):
+            scene.set_material("red plastic", model="openpbr", **bad)
+        assert scene.material("red plastic")["model"] == "cooktorrance", f"a refused {name} changed the material"
     with pytest.raises(ValueError, match="lambert, phong"):
         raylab.brdf.eval("wardish", wi=[0, 0, 1], wo=[0, 0, 1])
     with pytest.raises(ValueError, match="finite"):

@@ -387,6 +387,14 @@ TEST(ScriptTest, CheckFollowsModelSwitchesAndNamesTheLine) {
   EXPECT_EQ(getParam(metal.materials[0].record, "eta"), getParam(gold, "eta"));
   EXPECT_EQ(getParam(metal.materials[0].record, "k"), getParam(gold, "k"));
   expectError("at 1 model ball ggx_conductor\nat 2 set material ball metal Unobtainium\n", "Unobtainium");
+  // openpbr's layers: an out-of-range weight, a negative volume depth, NaN, each naming the line and parameter.
+  expectError("at 1 model ball openpbr\nat 2 set material ball coat_weight 1.5\n", "coat_weight = 1.5 is outside [0, 1]");
+  expectError("at 1 model ball openpbr\nat 2 set material ball transmission_depth -1\n", "transmission_depth = -1");
+  expectError("at 1 model ball openpbr\nat 2 set material ball fuzz_weight nan\n", "b:2");
+  expectError("at 1 model ball openpbr\nat 2 set material ball geometry_opacity 2\n", "geometry_opacity");
+  // transmission_depth 0 is the specification's "no volume", not an error.
+  EXPECT_NO_THROW(checkScript(parseScript("at 1 model ball openpbr\nat 2 set material ball transmission_depth 0\n", "d"),
+                              scene));
 }
 
 // One bound on what emits light, checked before the window opens: a strength that would make strength x the

@@ -2,7 +2,7 @@
 # the order of registration. raylab_generate_brdf_registry() runs tools/cmake/brdf_registry.py at build time
 # over every registered model's GLSL table and sets:
 #   RAYLAB_BRDF_GLSL_INCLUDES   -I directories for glslangValidator (the generated dispatch and model folders)
-#   RAYLAB_BRDF_GLSL_DISPATCH   the generated GLSL dispatch, a dependency of every kernel
+#   RAYLAB_BRDF_GLSL_DISPATCH   the generated GLSL (the dispatch, the opacity), a dependency of every kernel
 #   RAYLAB_BRDF_TABLE_SOURCES   the C++ model table, for the parameter library
 #   RAYLAB_BRDF_REFERENCE_SOURCES  the models' reference files and the generated reference dispatch
 #   RAYLAB_BRDF_REFERENCE_INCLUDE  where the generated reference header lives
@@ -33,7 +33,8 @@ function(raylab_generate_brdf_registry)
   get_property(referenceFiles GLOBAL PROPERTY RAYLAB_BRDF_REFERENCE_FILES)
   list(REMOVE_DUPLICATES glslRoots)
   set(out ${PROJECT_BINARY_DIR}/brdf_registry)
-  set(outputs ${out}/glsl/generated/bsdf_models.glsl ${out}/cpp/brdf_model_table.cpp
+  set(outputs ${out}/glsl/generated/bsdf_models.glsl ${out}/glsl/generated/model_opacity.glsl
+              ${out}/cpp/brdf_model_table.cpp
               ${out}/cpp/generated/reference_params.h ${out}/cpp/reference_dispatch.cpp)
   set(script ${PROJECT_SOURCE_DIR}/tools/cmake/brdf_registry.py)
   add_custom_command(
@@ -48,7 +49,8 @@ function(raylab_generate_brdf_registry)
     list(APPEND includes -I${root})
   endforeach()
   set(RAYLAB_BRDF_GLSL_INCLUDES ${includes} PARENT_SCOPE)
-  set(RAYLAB_BRDF_GLSL_DISPATCH ${out}/glsl/generated/bsdf_models.glsl PARENT_SCOPE)
+  set(RAYLAB_BRDF_GLSL_DISPATCH ${out}/glsl/generated/bsdf_models.glsl ${out}/glsl/generated/model_opacity.glsl
+      PARENT_SCOPE)
   set(RAYLAB_BRDF_TABLE_SOURCES ${out}/cpp/brdf_model_table.cpp PARENT_SCOPE)
   set(RAYLAB_BRDF_REFERENCE_SOURCES ${referenceFiles} ${out}/cpp/reference_dispatch.cpp
       ${out}/cpp/generated/reference_params.h PARENT_SCOPE)

@@ -278,7 +278,7 @@ int benchRays(const RaysOptions& o) {
     if (!only.empty() && only != info.key) continue;
     Scene scene = makeBenchScene(info.kind);
     if (o.shuffle) shuffleTriangles(scene, 12345);
-    GpuScene gpuScene = uploadScene(gpu.device, scene, !o.submittedOrder);
+    GpuScene gpuScene = uploadScene(gpu.device, scene, {.spatialOrder = !o.submittedOrder});
     EmbreeTracer embreeOne = createEmbreeTracer(scene, 1);
     EmbreeTracer embreeAll = createEmbreeTracer(scene, cores);
     builds.push_back({scene.name, gpuScene.accelerationBuildSeconds, embreeAll.buildSeconds});
