@@ -395,6 +395,42 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
   return record;
 }
 
+// The ratified layered extensions' textures (their text's channels: kernel/hit_common.glsl), each scaling the openpbr
+// parameter its factor sets. The drafts' textures (KHR_materials_coat, _fuzz, _diffuse_roughness) are not read yet.
+struct LayerTexture {
+  const char* extension;
+  const char* key;
+  const char* param;
+  std::uint32_t use;  // gpu::kTexture...
+};
+constexpr LayerTexture kLayerTextures[] = {
+    {"KHR_materials_clearcoat", "clearcoatTexture", "coat_weight", gpu::kTextureCoat},
+    {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", "coat_roughness", gpu::kTextureCoatRoughness},
+    {"KHR_materials_sheen", "sheenColorTexture", "fuzz_color", gpu::kTextureSheenColor},
+    {"KHR_materials_sheen", "sheenRoughnessTexture", "fuzz_roughness", gpu::kTextureSheenRoughness},
+    {"KHR_materials_iridescence", "iridescenceTexture", "thin_film_weight", gpu::kTextureIridescence},
+    {"KHR_materials_iridescence", "iridescenceThicknessTexture", "thin_film_thickness", gpu::kTextureIridescenceThickness},
+    {"KHR_materials_transmission", "transmissionTexture", "transmission_weight", gpu::kTextureTransmission},
+};
+
+// A layer texture scales its layer's parameters, which are set only where the layer is (mapOntoOpenPbr): a texture
+// of an absent layer (factor 0) has nothing to scale.
+bool layerPresent(const gpu::MaterialRecord& record, const LayerTexture& layer) {
+  const char* weight = layer.use == gpu::kTextureCoat || layer.use == gpu::kTextureCoatRoughness ? "coat_weight"
+                       : layer.use == gpu::kTextureSheenColor || layer.use == gpu::kTextureSheenRoughness ? "fuzz_weight"
+                       : layer.use == gpu::kTextureTransmission ? "transmission_weight"
+                                                                : "thin_film_weight";
+  return getParam(record, weight).x > 0.0f;
+}
+
+// iridescenceThicknessTexture's G runs the film from the minimum (G = 0) to the maximum (G = 1) thickness, which
+// the parameter holds: the floor of the scale is minimum / maximum.
+float thicknessFloor(const MetallicRoughness& input) {
+  return input.iridescenceThicknessNm > 0.0f
+             ? std::clamp(input.iridescenceThicknessMinimumNm / input.iridescenceThicknessNm, 0.0f, 1.0f)
+             : 0.0f;
+}
+
 }  // namespace
 
 gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const std::string& where) {
@@ -518,9 +554,6 @@ void convertMaterials(Document& document, Scene& scene) {
       input.transmission =
           checkedFactor(transmission->get<double>(), 0.0, 1.0, where, "KHR_materials_transmission.transmissionFactor");
     }
-    if (findPath(materialJson, {"extensions", "KHR_materials_transmission", "transmissionTexture"})) {
-      document.ignore("transmission textures");
-    }
     if (const json* factor = findPath(materialJson, {"extensions", "KHR_materials_specular", "specularFactor"})) {
       input.specular = checkedFactor(factor->get<double>(), 0.0, 1.0, where, "KHR_materials_specular.specularFactor");
     }
@@ -541,9 +574,8 @@ void convertMaterials(Document& document, Scene& scene) {
       if (const json* factor = findPath(*coat, {"clearcoatRoughnessFactor"})) {
         input.clearcoatRoughness = checkedFactor(factor->get<double>(), 0.0, 1.0, where, name + ".clearcoatRoughnessFactor");
       }
-      for (const char* texture : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}) {
-        if (coat->contains(texture)) document.ignore(std::string(name) + "." + texture + " (its factor applies alone)");
-      }
+      // The coat shares the base's shading normal (kernel/hit_common.glsl): its own normal map is not applied.
+      if (coat->contains("clearcoatNormalTexture")) document.ignore(name + ".clearcoatNormalTexture (the coat takes the base's normal)");
     }
     if (const json* film = findPath(materialJson, {"extensions", "KHR_materials_iridescence"})) {
       const std::string name = "KHR_materials_iridescence";
@@ -557,17 +589,12 @@ void convertMaterials(Document& document, Scene& scene) {
       // Without a thickness texture the film is iridescenceThicknessMaximum thick (the extension's text); the
       // minimum only matters with one.
       if (const json* value = findPath(*film, {"iridescenceThicknessMinimum"})) {
-        checkedFactor(value->get<double>(), 0.0, kLargest, where, name + ".iridescenceThicknessMinimum");
+        input.iridescenceThicknessMinimumNm =
+            checkedFactor(value->get<double>(), 0.0, kLargest, where, name + ".iridescenceThicknessMinimum");
       }
       if (const json* value = findPath(*film, {"iridescenceThicknessMaximum"})) {
         input.iridescenceThicknessNm =
             checkedFactor(value->get<double>(), 0.0, kLargest, where, name + ".iridescenceThicknessMaximum");
-      }
-      if (film->contains("iridescenceTexture")) {
-        document.ignore(name + ".iridescenceTexture (its factor applies alone)");
-      }
-      if (film->contains("iridescenceThicknessTexture")) {
-        document.ignore(name + ".iridescenceThicknessTexture (the film is iridescenceThicknessMaximum thick)");
       }
     }
 
@@ -636,9 +663,6 @@ void convertMaterials(Document& document, Scene& scene) {
       const std::string name = "KHR_materials_sheen";
       readColour(*sheen, "sheenColorFactor", name, input.sheenColor);
       readFactor(*sheen, "sheenRoughnessFactor", name, 0.0, 1.0, input.sheenRoughness);
-      for (const char* texture : {"sheenColorTexture", "sheenRoughnessTexture"}) {
-        if (sheen->contains(texture)) document.ignore(name + "." + texture + " (its factor applies alone)");
-      }
     }
 
     gpu::MaterialRecord record = mapMetallicRoughness(input, where);
@@ -688,6 +712,24 @@ void convertMaterials(Document& document, Scene& scene) {
       if ((record.textureParams >> 24u) != gpu::kNoTextureParam) {
         uses.refs[gpu::kTextureSpecularColor] = convertUse(info, "KHR_materials_specular.specularColorTexture");
       }
+    }
+    // The layered extensions' textures, onto the openpbr parameters their factors set (layerTextures below).
+    for (const LayerTexture& layer : kLayerTextures) {
+      const json* info = use({"extensions", layer.extension, layer.key});
+      if (info == nullptr) continue;
+      const std::string property = std::string(layer.extension) + "." + layer.key;
+      const ParamInfo* param = findParam(modelInfo(record.model), layer.param);
+      if (param == nullptr || !layerPresent(record, layer)) {
+        document.ignore(property + " (" +
+                        (param == nullptr ? "the material's model has no " + std::string(layer.param) : "its layer is absent") +
+                        ")");
+        continue;
+      }
+      gpu::TextureRef ref = convertUse(info, property);
+      ref.param = param->slot;
+      ref.scale = layer.use == gpu::kTextureIridescenceThickness ? thicknessFloor(input) : 0.0f;
+      uses.refs[layer.use] = ref;
+      uses.layerModel = record.model;
     }
     if (const json* info = use({"normalTexture"})) uses.refs[gpu::kTextureNormal] = convertUse(info, "normalTexture");
     if (const json* info = use({"occlusionTexture"})) convertUse(info, "occlusionTexture");

@@ -29,7 +29,8 @@ struct MetallicRoughness {
   float clearcoatRoughness = 0.0f;      // KHR_materials_clearcoat.clearcoatRoughnessFactor
   float iridescence = 0.0f;             // KHR_materials_iridescence.iridescenceFactor
   float iridescenceIor = 1.3f;          // KHR_materials_iridescence.iridescenceIor
-  float iridescenceThicknessNm = 400.0f;  // KHR_materials_iridescence.iridescenceThicknessMaximum (no texture read)
+  float iridescenceThicknessNm = 400.0f;  // KHR_materials_iridescence.iridescenceThicknessMaximum
+  float iridescenceThicknessMinimumNm = 100.0f;  // its minimum: where iridescenceThicknessTexture's G is 0
   float volumeThickness = 0.0f;         // KHR_materials_volume.thicknessFactor (0: thin-walled, no volume)
   float attenuationDistance = std::numeric_limits<float>::infinity();  // KHR_materials_volume
   glm::vec3 attenuationColor{1.0f};     // KHR_materials_volume.attenuationColor

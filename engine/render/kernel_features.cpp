@@ -14,7 +14,10 @@ KernelFeatures featuresOf(const Scene& scene) {
     f.models |= 1u << material.record.model;
     if (isDeltaOnly(material.record.model)) f.features |= gpu::kFeatureDeltaBsdf;
     if (material.record.delta > 0.0f) f.features |= gpu::kFeatureMirror;
-    if (material.record.textures >= 0) f.features |= gpu::kFeatureTextures;
+    if (material.record.textures >= 0) {
+      f.features |= gpu::kFeatureTextures;
+      if (hasLayerTextures(scene, material.record)) f.features |= gpu::kFeatureLayerTextures;
+    }
     if (hasAlpha(scene, material.record)) f.features |= gpu::kFeatureAlpha;
     for (const ModelFeature& feature : modelInfo(material.record.model).features) {
       if (getParam(material.record, feature.param).x > 0.0f) f.features |= feature.bit;
@@ -56,6 +59,7 @@ std::string describe(const KernelFeatures& features) {
   constexpr Named kNames[] = {{gpu::kFeatureDeltaBsdf, "glass"},
                               {gpu::kFeatureMirror, "mirror reflection"},
                               {gpu::kFeatureTextures, "textures"},
+                              {gpu::kFeatureLayerTextures, "layer textures"},
                               {gpu::kFeatureAlpha, "alpha"},
                               {gpu::kFeatureEnvironment, "environment image"}};
   std::string list;

@@ -32,7 +32,18 @@ gpu::MaterialTextures noMaterialTextures() {
   textures.alphaMode = gpu::kAlphaOpaque;
   textures.alpha = 1.0f;
   textures.alphaCutoff = 0.5f;
+  textures.layerModel = gpu::kNoParam;  // no model: no layer textures
   return textures;
+}
+
+bool hasLayerTextures(const Scene& scene, const gpu::MaterialRecord& record) {
+  if (record.textures < 0 || std::size_t(record.textures) >= scene.materialTextures.size()) return false;
+  const gpu::MaterialTextures& uses = scene.materialTextures[std::size_t(record.textures)];
+  if (uses.layerModel != record.model) return false;
+  for (std::uint32_t use = gpu::kFirstLayerTexture; use < gpu::kTextureUses; ++use) {
+    if (uses.refs[use].texture >= 0) return true;
+  }
+  return false;
 }
 
 bool hasAlpha(const Scene& scene, const gpu::MaterialRecord& record) {

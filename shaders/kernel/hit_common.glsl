@@ -4,6 +4,8 @@
 #ifndef RAYLAB_KERNEL_HIT_COMMON_GLSL
 #define RAYLAB_KERNEL_HIT_COMMON_GLSL
 
+#extension GL_EXT_control_flow_attributes : require
+
 #include "brdf/bsdf.glsl"
 #include "common/ray_offset.glsl"
 #include "common/specialization.glsl"
@@ -38,7 +40,8 @@ void applyNormalMap(inout Surface s, TextureRef ref) {
 // The material's textures (MaterialTextures): the base colour multiplies the model's diffuse colour (the
 // parameter of its `diffuse` role), the metallic-roughness texture's G and B its roughness and metallic
 // parameters (roles `roughness`, `metallic`), KHR_materials_specular's textures its A and RGB the specular
-// strength and colour (roles `specular_weight`, `specular_tint`), and the normal map bends the shading normal.
+// strength and colour (roles `specular_weight`, `specular_tint`), the layered extensions' textures the layer
+// parameters they name (kTextureCoat...), and the normal map bends the shading normal.
 // The emissive texture is read where emission is (kernel/emission.glsl).
 void applyTextures(inout MaterialRecord material, inout Surface s) {
   if (!featureEnabled(kFeatureTextures) || material.textures < 0) return;
@@ -71,6 +74,25 @@ void applyTextures(inout MaterialRecord material, inout Surface s) {
     material.params[tintSlot] *= texel.r;
     material.params[tintSlot + 1u] *= texel.g;
     material.params[tintSlot + 2u] *= texel.b;
+  }
+  if (featureEnabled(kFeatureLayerTextures) && uses.layerModel == material.model) {
+    // One texture read in a loop the driver keeps rolled: seven inlined reads tripled the kernel's compile time.
+    [[dont_unroll]] for (uint use = kFirstLayerTexture; use < kTextureUses; ++use) {
+      const TextureRef layer = uses.refs[use];
+      if (layer.texture < 0) continue;
+      const vec4 texel = sampleTextureRef(layer, s.uv, s.uv1, use == kTextureSheenColor);
+      if (use == kTextureSheenColor) {
+        material.params[layer.param] *= texel.r;
+        material.params[layer.param + 1u] *= texel.g;
+        material.params[layer.param + 2u] *= texel.b;
+        continue;
+      }
+      // Each extension's channel: R for weights, G for roughness and thickness, A for the sheen's roughness.
+      const float t = use == kTextureCoatRoughness || use == kTextureIridescenceThickness ? texel.g
+                      : use == kTextureSheenRoughness                                    ? texel.a
+                                                                                         : texel.r;
+      material.params[layer.param] *= layer.scale + (1.0 - layer.scale) * t;
+    }
   }
   const TextureRef normal = uses.refs[kTextureNormal];
   if (normal.texture >= 0) applyNormalMap(s, normal);

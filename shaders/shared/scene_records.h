@@ -98,8 +98,8 @@ RL_CHECK_SIZE(TextureRecord, 16);
 struct TextureRef {
   int texture;    // TextureRecord index; -1: none
   uint texCoord;  // 0: TEXCOORD_0, 1: TEXCOORD_1
-  float scale;    // the normal map's scale of its x and y; 1 for the others
-  uint reserved;
+  float scale;    // the normal map's scale of its x and y; a layer texture's floor (below); 1 for the others
+  uint param;     // a layer texture's parameter slot (MaterialTextures.layerModel's); unused by the others
   vec3 row0;
   vec3 row1;
 };
@@ -112,7 +112,18 @@ RL_CONST uint kTextureNormal = 2;             // linear; tangent-space normal, 2
 RL_CONST uint kTextureEmissive = 3;           // sRGB; multiplies the emitted radiance
 RL_CONST uint kTextureSpecular = 4;           // linear; A scales the specular_weight role (KHR_materials_specular)
 RL_CONST uint kTextureSpecularColor = 5;      // sRGB; RGB scales the specular_tint role (KHR_materials_specular)
-RL_CONST uint kTextureUses = 6;
+// The layer textures of glTF's layered extensions, each scaling one parameter of the model they were read for
+// (openpbr): the parameter at slot `param` becomes param x (scale + (1 - scale) texel), scale being 0 but for the
+// film's thickness, which runs from iridescenceThicknessMinimum (scale = minimum / maximum) to the maximum.
+RL_CONST uint kTextureCoat = 6;                 // linear; R scales the coat's weight (clearcoatTexture)
+RL_CONST uint kTextureCoatRoughness = 7;        // linear; G its roughness (clearcoatRoughnessTexture)
+RL_CONST uint kTextureSheenColor = 8;           // sRGB; RGB the fuzz's colour (sheenColorTexture)
+RL_CONST uint kTextureSheenRoughness = 9;       // linear; A the fuzz's roughness (sheenRoughnessTexture)
+RL_CONST uint kTextureIridescence = 10;         // linear; R the thin film's weight (iridescenceTexture)
+RL_CONST uint kTextureIridescenceThickness = 11;  // linear; G the film's thickness (iridescenceThicknessTexture)
+RL_CONST uint kTextureTransmission = 12;        // linear; R the transmission weight (transmissionTexture)
+RL_CONST uint kFirstLayerTexture = 6;
+RL_CONST uint kTextureUses = 13;
 
 // MaterialTextures.alphaMode (glTF alphaMode). Opaque surfaces are opaque geometry: traversal never asks.
 RL_CONST uint kAlphaOpaque = 0;
@@ -124,9 +135,10 @@ struct MaterialTextures {
   uint alphaMode;
   float alpha;        // baseColorFactor's alpha; the base-colour texture's alpha multiplies it
   float alphaCutoff;  // kAlphaMask only
-  uint reserved;
+  uint layerModel;    // the model whose slots the layer textures name (kNoParam: none); they apply to it only (a
+                      // material switched to another model in the viewer reads them again when switched back)
 };
-RL_CHECK_SIZE(MaterialTextures, 256);
+RL_CHECK_SIZE(MaterialTextures, 536);
 
 // One light for next event estimation, of any kind (generated/light_kinds.h, from shaders/lights/lights.cmake):
 // punctual lights, emitting triangles and spheres in world space, the environment. What p0, p1, p2 and radiance

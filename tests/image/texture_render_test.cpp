@@ -197,6 +197,69 @@ TEST_F(TextureRenderTest, SpecularTexturesScaleTheDielectricsStrengthAndColour) 
   EXPECT_GT(difference, 1.0);
 }
 
+// The layered extensions' textures (glTF's clearcoat, sheen, iridescence and transmission on openpbr): each scales
+// its parameter by its channel, R the weights, G the coat's roughness and the film's thickness (from the floor
+// minimum / maximum up), A the fuzz's roughness, the sRGB RGB the fuzz's colour; the same render as white texels with
+// the parameters scaled on the host. On another model (a material switched away in the viewer) they read nothing.
+TEST_F(TextureRenderTest, LayerTexturesScaleTheLayersParameters) {
+  gpu::MaterialRecord record = defaultRecord(modelId("openpbr"));
+  const std::vector<std::pair<const char*, float>> layers = {
+      {"coat_weight", 0.9f}, {"coat_roughness", 0.4f}, {"fuzz_weight", 0.8f}, {"fuzz_roughness", 0.6f},
+      {"thin_film_weight", 0.7f}, {"thin_film_thickness", 0.5f}, {"transmission_weight", 0.6f}};
+  for (const auto& [name, value] : layers) setParam(record, name, glm::vec3(value), "test");
+  setParam(record, "fuzz_color", glm::vec3(1.0f, 0.8f, 0.6f), "test");
+  const std::uint8_t texel[4] = {200, 100, 50, 90};
+  constexpr float kThicknessFloor = 0.25f;
+  Scene textured = quadScene(record, gpu::kTextureCoat, solidTexture({texel[0], texel[1], texel[2], texel[3]}),
+                             texturedQuad());
+  gpu::MaterialTextures& uses = textured.materialTextures[0];
+  const auto layer = [&](std::uint32_t use, const char* param) {
+    uses.refs[use] = textureRef(0);
+    uses.refs[use].param = findParam(modelInfo(record.model), param)->slot;
+    uses.refs[use].scale = use == gpu::kTextureIridescenceThickness ? kThicknessFloor : 0.0f;
+  };
+  layer(gpu::kTextureCoat, "coat_weight");
+  layer(gpu::kTextureCoatRoughness, "coat_roughness");
+  layer(gpu::kTextureSheenColor, "fuzz_color");
+  layer(gpu::kTextureSheenRoughness, "fuzz_roughness");
+  layer(gpu::kTextureIridescence, "thin_film_weight");
+  layer(gpu::kTextureIridescenceThickness, "thin_film_thickness");
+  layer(gpu::kTextureTransmission, "transmission_weight");
+  uses.layerModel = record.model;
+  ASSERT_TRUE(hasLayerTextures(textured, textured.materials[0].record));
+  ASSERT_NE(featuresOf(textured).features & gpu::kFeatureLayerTextures, 0u);
+  Scene plain = textured;
+  plain.textures[0].rgba = {255, 255, 255, 255};
+  gpu::MaterialRecord& scaled = plain.materials[0].record;
+  const float r = texel[0] / 255.0f, g = texel[1] / 255.0f, a = texel[3] / 255.0f;
+  setParam(scaled, "coat_weight", glm::vec3(0.9f * r), "test");
+  setParam(scaled, "coat_roughness", glm::vec3(0.4f * g), "test");
+  setParam(scaled, "fuzz_roughness", glm::vec3(0.6f * a), "test");
+  setParam(scaled, "thin_film_weight", glm::vec3(0.7f * r), "test");
+  setParam(scaled, "thin_film_thickness", glm::vec3(0.5f * (kThicknessFloor + (1.0f - kThicknessFloor) * g)), "test");
+  setParam(scaled, "transmission_weight", glm::vec3(0.6f * r), "test");
+  const glm::vec3 tint(srgbToLinear(texel[0] / 255.0), srgbToLinear(texel[1] / 255.0), srgbToLinear(texel[2] / 255.0));
+  setParam(scaled, "fuzz_color", glm::vec3(1.0f, 0.8f, 0.6f) * tint, "test");
+  const Image textures = renderImage(device(), textured, settingsFor(textured, gpu::kIntegratorSlides), 1);
+  const Image host = renderImage(device(), plain, settingsFor(textured, gpu::kIntegratorSlides), 1);
+  int lit = 0;
+  for (std::size_t i = 0; i < textures.rgba.size(); ++i) {
+    EXPECT_NEAR(textures.rgba[i], host.rgba[i], 2e-5f * host.rgba[i] + 1e-7f) << "value " << i;
+    lit += i % 4 == 0 && host.rgba[i] > 0.0f;
+  }
+  EXPECT_GT(lit, 1000);
+  // And they matter: the white texels with the parameters unscaled differ; for another model they read nothing.
+  Scene unscaled = textured;
+  unscaled.textures[0].rgba = {255, 255, 255, 255};
+  const Image white = renderImage(device(), unscaled, settingsFor(textured, gpu::kIntegratorSlides), 1);
+  double difference = 0.0;
+  for (std::size_t i = 0; i < textures.rgba.size(); ++i) difference += std::abs(double(textures.rgba[i]) - double(white.rgba[i]));
+  EXPECT_GT(difference, 1.0);
+  Scene switched = textured;
+  switched.materialTextures[0].layerModel = modelId("gltf_pbr");
+  EXPECT_FALSE(hasLayerTextures(switched, switched.materials[0].record));
+}
+
 // A 2x1 texture, red then green, read by the nearest texel: TEXCOORD_1 constant at u = 0.25 reads red, and a
 // KHR_texture_transform offset of 0.5 moves it to green; on TEXCOORD_0 the quad's halves show one each.
 TEST_F(TextureRenderTest, TheUvSetAndTheTransformChooseTheTexel) {

@@ -405,9 +405,28 @@ TEST(GltfMaterial, KhrMaterialsClearcoatIsOpenPbrsCoat) {
   GltfBuilder textured = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
   textured.doc()["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0},
                                                                               {"clearcoatTexture", {{"index", 0}}}};
+  textured.doc()["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatRoughnessTexture"] = {{"index", 0}};
+  textured.doc()["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatNormalTexture"] = {{"index", 0}};
   WarningCapture textureWarnings;
-  textured.load();
-  EXPECT_EQ(textureWarnings.count("KHR_materials_clearcoat.clearcoatTexture"), 1) << "said, not silently dropped";
+  const Scene coatTextures = textured.load();
+  // The coat's textures scale coat_weight (R) and coat_roughness (G) of the openpbr material they were read for;
+  // its normal map is not applied, and says so.
+  const gpu::MaterialRecord& coated = coatTextures.materials[0].record;
+  ASSERT_GE(coated.textures, 0);
+  const gpu::MaterialTextures& uses = coatTextures.materialTextures[std::size_t(coated.textures)];
+  EXPECT_EQ(uses.layerModel, coated.model);
+  EXPECT_GE(uses.refs[gpu::kTextureCoat].texture, 0);
+  EXPECT_EQ(uses.refs[gpu::kTextureCoat].param, findParam(modelInfo(coated.model), "coat_weight")->slot);
+  EXPECT_EQ(uses.refs[gpu::kTextureCoatRoughness].param, findParam(modelInfo(coated.model), "coat_roughness")->slot);
+  EXPECT_TRUE(hasLayerTextures(coatTextures, coated));
+  EXPECT_EQ(textureWarnings.count("clearcoatTexture"), 0) << "read";
+  EXPECT_EQ(textureWarnings.count("clearcoatNormalTexture"), 1) << "said, not silently dropped";
+  // Without a coat (factor 0: glTF's own BRDF) the textures have nothing to scale: said, and nothing read.
+  textured.doc()["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatFactor"] = 0.0;
+  WarningCapture absentWarnings;
+  const Scene absent = textured.load();
+  EXPECT_FALSE(hasLayerTextures(absent, absent.materials[0].record));
+  EXPECT_EQ(absentWarnings.count("clearcoatRoughnessTexture (the material's model has no coat_roughness)"), 1);
 
   for (const json& bad : {json{{"clearcoatFactor", 1.5}}, json{{"clearcoatRoughnessFactor", -0.1}},
                           json{{"clearcoatFactor", "1"}}}) {
@@ -464,9 +483,17 @@ TEST(GltfMaterial, KhrMaterialsSheenIsOpenPbrsFuzz) {
   EXPECT_EQ(warnings.count("KHR_materials_sheen"), 0) << "read, not ignored";
   const Scene none = loadMaterial({{"extensions", {{"KHR_materials_sheen", {{"sheenRoughnessFactor", 0.5}}}}}});
   EXPECT_EQ(none.materials[0].record.model, modelId("gltf_pbr"));
-  const Scene textured = loadMaterial({{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {1.0, 1.0, 1.0}},
-                                                                              {"sheenColorTexture", {{"index", 0}}}}}}}});
-  EXPECT_EQ(warnings.count("sheenColorTexture"), 1) << "its texture is not yet read, and says so";
+  // The sheen's colour texture (sRGB RGB) scales fuzz_color, its roughness texture (A) fuzz_roughness.
+  GltfBuilder sheenTextured = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+  sheenTextured.doc()["materials"][0]["extensions"]["KHR_materials_sheen"] = {
+      {"sheenColorFactor", {1.0, 1.0, 1.0}}, {"sheenColorTexture", {{"index", 0}}}, {"sheenRoughnessTexture", {{"index", 0}}}};
+  const Scene textured = sheenTextured.load();
+  const gpu::MaterialRecord& fuzzy = textured.materials[0].record;
+  ASSERT_GE(fuzzy.textures, 0);
+  const gpu::MaterialTextures& sheenUses = textured.materialTextures[std::size_t(fuzzy.textures)];
+  EXPECT_EQ(sheenUses.refs[gpu::kTextureSheenColor].param, findParam(modelInfo(fuzzy.model), "fuzz_color")->slot);
+  EXPECT_EQ(sheenUses.refs[gpu::kTextureSheenRoughness].param, findParam(modelInfo(fuzzy.model), "fuzz_roughness")->slot);
+  EXPECT_EQ(warnings.count("sheenColorTexture"), 0) << "read";
   for (const json& bad : {json{{"sheenColorFactor", {1.5, 0.0, 0.0}}}, json{{"sheenRoughnessFactor", -0.1}},
                           json{{"sheenColorFactor", {0.5, 0.5}}}, json{{"sheenRoughnessFactor", "1"}}}) {
     const std::string error = materialError({{"name", "bad sheen"}, {"extensions", {{"KHR_materials_sheen", bad}}}});
