@@ -6,6 +6,7 @@
 // test runs one of them: kernel variants are what this test's time goes to.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -164,6 +165,27 @@ TEST_F(TextureRenderTest, AMetallicRoughnessTextureScalesTheFactorsByItsGreenAnd
   }
 }
 
+// `textured` (textures on its material) renders as `plain`, the same scene with white texels and its parameters
+// scaled on the host, to 2e-5 relative, on the slides integrator; and the textures matter: the white texels with the
+// parameters unscaled render differently.
+void expectTexturesActAsHostScaling(const Device& device, const Scene& textured, const Scene& plain) {
+  const RenderSettings settings = settingsFor(textured, gpu::kIntegratorSlides);  // one kernel variant for all three
+  const Image a = renderImage(device, textured, settings, 1);
+  const Image b = renderImage(device, plain, settings, 1);
+  int lit = 0;
+  for (std::size_t i = 0; i < a.rgba.size(); ++i) {
+    EXPECT_NEAR(a.rgba[i], b.rgba[i], 2e-5f * b.rgba[i] + 1e-7f) << "value " << i;
+    lit += i % 4 == 0 && b.rgba[i] > 0.0f;
+  }
+  EXPECT_GT(lit, 1000);
+  Scene unscaled = textured;
+  for (Texture& texture : unscaled.textures) std::fill(texture.rgba.begin(), texture.rgba.end(), std::uint8_t(255));
+  const Image c = renderImage(device, unscaled, settings, 1);
+  double difference = 0.0;
+  for (std::size_t i = 0; i < a.rgba.size(); ++i) difference += std::abs(double(a.rgba[i]) - double(c.rgba[i]));
+  EXPECT_GT(difference, 1.0);
+}
+
 // KHR_materials_specular's textures: A scales `specular`, the sRGB-decoded RGB `specular_color`; the same render
 // as white texels with the parameters scaled on the host.
 TEST_F(TextureRenderTest, SpecularTexturesScaleTheDielectricsStrengthAndColour) {
@@ -180,21 +202,7 @@ TEST_F(TextureRenderTest, SpecularTexturesScaleTheDielectricsStrengthAndColour) 
   setParam(plain.materials[0].record, "specular", glm::vec3(float(texel[3]) / 255.0f), "test");
   const glm::vec3 tint(srgbToLinear(texel[0] / 255.0), srgbToLinear(texel[1] / 255.0), srgbToLinear(texel[2] / 255.0));
   setParam(plain.materials[0].record, "specular_color", glm::vec3(4.0f, 2.0f, 1.0f) * tint, "test");
-  const Image a = renderImage(device(), textured, settingsFor(textured, gpu::kIntegratorSlides), 1);
-  const Image b = renderImage(device(), plain, settingsFor(plain, gpu::kIntegratorSlides), 1);
-  int lit = 0;
-  for (std::size_t i = 0; i < a.rgba.size(); ++i) {
-    EXPECT_NEAR(a.rgba[i], b.rgba[i], 2e-5f * b.rgba[i] + 1e-7f) << "value " << i;
-    lit += i % 4 == 0 && b.rgba[i] > 0.0f;
-  }
-  EXPECT_GT(lit, 1000);
-  // And the textures matter: the white-texel render with the factors unscaled differs.
-  Scene unscaled = textured;
-  unscaled.textures[0].rgba = {255, 255, 255, 255};
-  const Image c = renderImage(device(), unscaled, settingsFor(unscaled, gpu::kIntegratorSlides), 1);
-  double difference = 0.0;
-  for (std::size_t i = 0; i < a.rgba.size(); ++i) difference += std::abs(double(a.rgba[i]) - double(c.rgba[i]));
-  EXPECT_GT(difference, 1.0);
+  expectTexturesActAsHostScaling(device(), textured, plain);
 }
 
 // The layered extensions' textures (glTF's clearcoat, sheen, iridescence and transmission on openpbr): each scales
@@ -240,21 +248,8 @@ TEST_F(TextureRenderTest, LayerTexturesScaleTheLayersParameters) {
   setParam(scaled, "transmission_weight", glm::vec3(0.6f * r), "test");
   const glm::vec3 tint(srgbToLinear(texel[0] / 255.0), srgbToLinear(texel[1] / 255.0), srgbToLinear(texel[2] / 255.0));
   setParam(scaled, "fuzz_color", glm::vec3(1.0f, 0.8f, 0.6f) * tint, "test");
-  const Image textures = renderImage(device(), textured, settingsFor(textured, gpu::kIntegratorSlides), 1);
-  const Image host = renderImage(device(), plain, settingsFor(textured, gpu::kIntegratorSlides), 1);
-  int lit = 0;
-  for (std::size_t i = 0; i < textures.rgba.size(); ++i) {
-    EXPECT_NEAR(textures.rgba[i], host.rgba[i], 2e-5f * host.rgba[i] + 1e-7f) << "value " << i;
-    lit += i % 4 == 0 && host.rgba[i] > 0.0f;
-  }
-  EXPECT_GT(lit, 1000);
-  // And they matter: the white texels with the parameters unscaled differ; for another model they read nothing.
-  Scene unscaled = textured;
-  unscaled.textures[0].rgba = {255, 255, 255, 255};
-  const Image white = renderImage(device(), unscaled, settingsFor(textured, gpu::kIntegratorSlides), 1);
-  double difference = 0.0;
-  for (std::size_t i = 0; i < textures.rgba.size(); ++i) difference += std::abs(double(textures.rgba[i]) - double(white.rgba[i]));
-  EXPECT_GT(difference, 1.0);
+  expectTexturesActAsHostScaling(device(), textured, plain);
+  // For another model (a material switched away in the viewer) they read nothing.
   Scene switched = textured;
   switched.materialTextures[0].layerModel = modelId("gltf_pbr");
   EXPECT_FALSE(hasLayerTextures(switched, switched.materials[0].record));
