@@ -413,7 +413,7 @@ constexpr LayerTexture kLayerTextures[] = {
     {"KHR_materials_transmission", "transmissionTexture", "transmission_weight", gpu::kTextureTransmission},
 };
 
-// A layer texture scales its layer's parameters, which are set only where the layer is (mapOntoOpenPbr): a texture
+// A layer texture scales its layer's parameters, which are set only where the layer is (mapLayered): a texture
 // of an absent layer (factor 0) has nothing to scale.
 bool layerPresent(const gpu::MaterialRecord& record, const LayerTexture& layer) {
   const char* weight = layer.use == gpu::kTextureCoat || layer.use == gpu::kTextureCoatRoughness ? "coat_weight"
@@ -713,7 +713,7 @@ void convertMaterials(Document& document, Scene& scene) {
         uses.refs[gpu::kTextureSpecularColor] = convertUse(info, "KHR_materials_specular.specularColorTexture");
       }
     }
-    // The layered extensions' textures, onto the openpbr parameters their factors set (layerTextures below).
+    // The layered extensions' textures, onto the openpbr parameters their factors set (kLayerTextures).
     for (const LayerTexture& layer : kLayerTextures) {
       const json* info = use({"extensions", layer.extension, layer.key});
       if (info == nullptr) continue;
