@@ -15,7 +15,8 @@ messages. raylab.farm spreads studies over a Dask cluster (docs/farm.md).
 from ._raylab import (Cancelled, Renderer, Scene, __version__, brdf, devices, limits, read_exr,  # noqa: F401
                       read_png, render_options, write_exr, write_png)
 from ._raylab import _fail_at_creation  # noqa: F401  (a test hook: tests/python/test_renderer_churn.py)
+from .denoise import denoise  # noqa: F401  (Open Image Denoise through pyoidn, imported at its first call)
 
-__all__ = ["Cancelled", "Renderer", "Scene", "__version__", "brdf", "devices", "limits", "read_exr", "read_png",
+__all__ = ["Cancelled", "Renderer", "Scene", "__version__", "brdf", "denoise", "devices", "limits", "read_exr", "read_png",
            "render_options",
            "write_exr", "write_png"]

@@ -32,7 +32,7 @@ def test_the_pages_have_their_examples(source_dir):
     by_page = {}
     for page, *_ in found:
         by_page[page] = by_page.get(page, 0) + 1
-    assert by_page.get("docs/python.md") == 3 and by_page.get("docs/farm.md") == 2 and by_page.get("README.md") == 1
+    assert by_page.get("docs/python.md") == 4 and by_page.get("docs/farm.md") == 2 and by_page.get("README.md") == 1
     skipped = [(page, reason) for page, _, _, _, reason in found if reason]
     assert skipped == [("docs/farm.md", "needs a Slurm cluster")], skipped
 
@@ -51,6 +51,7 @@ def test_every_example_runs_as_a_script_and_prints_what_its_page_says(source_dir
         if promised is not None:
             assert result.stdout.strip() == promised, f"{page} example {index}"
         ran += 1
-    assert ran == 5
+    assert ran == 6
     assert (work / "out" / "ward_sweep.png").stat().st_size > 0  # docs/python.md's sheet
+    assert (work / "out" / "denoised.png").stat().st_size > 0  # docs/python.md's denoising
     assert len(list((work / "out").glob("ct_m*.exr"))) == 4  # docs/farm.md's renders
