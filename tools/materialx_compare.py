@@ -40,7 +40,8 @@ CASE_HEADER = 6  # wi, wo
 # where raylab implements the node itself (openpbr is OpenPBR's names in both, gltf_pbr glTF's), else the mapping
 # raylab's glTF reader makes (docs/gltf.md: KHR_materials_clearcoat and _sheen onto openpbr). `bound`: what --check
 # holds it to, ("shape", median, p90) of the relative difference where they agree, or ("energy", tolerance) on the
-# ratio of the sums where the lobes are known to differ in shape (docs/brdfs.md, "Against MaterialX", says why).
+# ratio of the sums where the lobes are known to differ in shape, or where MaterialX is wrong (a film over a metal
+# below the Airy minimum): docs/brdfs.md, "Against MaterialX", says which and why.
 def row(label, node, params, bound, raylab_model=None, raylab_params=None):
     model = raylab_model or {"open_pbr_surface": "openpbr", "gltf_pbr": "gltf_pbr"}[node]
     return {"label": label, "node": node, "params": params, "bound": bound, "model": model,
