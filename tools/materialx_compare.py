@@ -199,12 +199,11 @@ def directions():
 
 
 def value_of(setting, default):
+    """A parameter's floats: the row's value, else MaterialX's default (a tuple, or MaterialX's Color3 / Vector3)."""
     if setting is None:
         setting = default
     if setting is None:  # gltf_pbr's attenuation_distance: no default, meaning no attenuation
         setting = 1e30
-    if isinstance(setting, (tuple, list)):
-        return [float(x) for x in setting]
     if hasattr(setting, "__len__") and not isinstance(setting, str):
         return [float(x) for x in setting]
     if isinstance(setting, bool):
