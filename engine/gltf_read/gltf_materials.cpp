@@ -401,27 +401,20 @@ struct LayerTexture {
   const char* extension;
   const char* key;
   const char* param;
-  std::uint32_t use;  // gpu::kTexture...
+  const char* layerWeight;  // the weight that says whether the layer is there at all
+  std::uint32_t use;        // gpu::kTexture...
 };
 constexpr LayerTexture kLayerTextures[] = {
-    {"KHR_materials_clearcoat", "clearcoatTexture", "coat_weight", gpu::kTextureCoat},
-    {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", "coat_roughness", gpu::kTextureCoatRoughness},
-    {"KHR_materials_sheen", "sheenColorTexture", "fuzz_color", gpu::kTextureSheenColor},
-    {"KHR_materials_sheen", "sheenRoughnessTexture", "fuzz_roughness", gpu::kTextureSheenRoughness},
-    {"KHR_materials_iridescence", "iridescenceTexture", "thin_film_weight", gpu::kTextureIridescence},
-    {"KHR_materials_iridescence", "iridescenceThicknessTexture", "thin_film_thickness", gpu::kTextureIridescenceThickness},
-    {"KHR_materials_transmission", "transmissionTexture", "transmission_weight", gpu::kTextureTransmission},
+    {"KHR_materials_clearcoat", "clearcoatTexture", "coat_weight", "coat_weight", gpu::kTextureCoat},
+    {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", "coat_roughness", "coat_weight", gpu::kTextureCoatRoughness},
+    {"KHR_materials_sheen", "sheenColorTexture", "fuzz_color", "fuzz_weight", gpu::kTextureSheenColor},
+    {"KHR_materials_sheen", "sheenRoughnessTexture", "fuzz_roughness", "fuzz_weight", gpu::kTextureSheenRoughness},
+    {"KHR_materials_iridescence", "iridescenceTexture", "thin_film_weight", "thin_film_weight", gpu::kTextureIridescence},
+    {"KHR_materials_iridescence", "iridescenceThicknessTexture", "thin_film_thickness", "thin_film_weight",
+     gpu::kTextureIridescenceThickness},
+    {"KHR_materials_transmission", "transmissionTexture", "transmission_weight", "transmission_weight",
+     gpu::kTextureTransmission},
 };
-
-// A layer texture scales its layer's parameters, which are set only where the layer is (mapLayered): a texture
-// of an absent layer (factor 0) has nothing to scale.
-bool layerPresent(const gpu::MaterialRecord& record, const LayerTexture& layer) {
-  const char* weight = layer.use == gpu::kTextureCoat || layer.use == gpu::kTextureCoatRoughness ? "coat_weight"
-                       : layer.use == gpu::kTextureSheenColor || layer.use == gpu::kTextureSheenRoughness ? "fuzz_weight"
-                       : layer.use == gpu::kTextureTransmission ? "transmission_weight"
-                                                                : "thin_film_weight";
-  return getParam(record, weight).x > 0.0f;
-}
 
 // iridescenceThicknessTexture's G runs the film from the minimum (G = 0) to the maximum (G = 1) thickness, which
 // the parameter holds: the floor of the scale is minimum / maximum.
@@ -719,7 +712,8 @@ void convertMaterials(Document& document, Scene& scene) {
       if (info == nullptr) continue;
       const std::string property = std::string(layer.extension) + "." + layer.key;
       const ParamInfo* param = findParam(modelInfo(record.model), layer.param);
-      if (param == nullptr || !layerPresent(record, layer)) {
+      // A layer's parameters are set only where the layer is (mapLayered): an absent layer has nothing to scale.
+      if (param == nullptr || !(getParam(record, layer.layerWeight).x > 0.0f)) {
         document.ignore(property + " (" +
                         (param == nullptr ? "the material's model has no " + std::string(layer.param) : "its layer is absent") +
                         ")");
