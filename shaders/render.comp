@@ -15,6 +15,7 @@ layout(local_size_x = kRenderWorkgroupSize, local_size_y = kRenderWorkgroupSize)
 
 layout(push_constant, scalar) uniform Push { FrameParams params; };
 layout(set = 0, binding = kBindingAccumulation, scalar) buffer Accumulation { vec4 accumulation[]; };
+layout(set = 0, binding = kBindingAovs, scalar) buffer Aovs { vec4 aovs[]; };
 layout(set = 0, binding = kBindingRayStats, scalar) buffer Stats { RayStats stats; };
 
 #include "kernel/query_segment.glsl"

@@ -17,6 +17,7 @@ layout(local_size_x = kRenderWorkgroupSize, local_size_y = kRenderWorkgroupSize)
 
 layout(push_constant, scalar) uniform Push { FrameParams params; };
 layout(set = 0, binding = kBindingAccumulation, scalar) buffer Accumulation { vec4 accumulation[]; };
+layout(set = 0, binding = kBindingAovs, scalar) buffer Aovs { vec4 aovs[]; };
 layout(set = 0, binding = kBindingRayStats, scalar) buffer Stats { RayStats stats; };
 layout(set = 0, binding = kBindingHeatmap, scalar) buffer Heatmap { float clockTicks[]; };
 

@@ -24,11 +24,13 @@ layout(push_constant, scalar) uniform Push {
   WaveParams wave;
 };
 layout(set = 0, binding = kBindingAccumulation, scalar) buffer Accumulation { vec4 accumulation[]; };
+layout(set = 0, binding = kBindingAovs, scalar) buffer Aovs { vec4 aovs[]; };
 layout(set = 0, binding = kBindingRayStats, scalar) buffer Stats { RayStats stats; };
 layout(set = 0, binding = kBindingPathStates, scalar) buffer PathStates { PathState states[]; };
 layout(set = 0, binding = kBindingPathResults, scalar) buffer PathResults { vec4 results[]; };
 layout(set = 0, binding = kBindingPathQueues, scalar) buffer PathQueues { uint queues[]; };
 layout(set = 0, binding = kBindingWaveControl, scalar) buffer Control { WaveControl control; };
+layout(set = 0, binding = kBindingPathAovs, scalar) buffer PathAovs { vec4 pathAovs[]; };
 
 #include "kernel/query_segment.glsl"
 #include "kernel/raygen.glsl"
@@ -64,6 +66,11 @@ void segment(uint i, inout uvec3 rays, inout uint laneSegments) {
     p.path.segments += 1u;
     traceSegment(p);
     laneSegments += 1u;
+    // The first segment met the first hit: its auxiliary values wait beside the path's result.
+    if (first && featureEnabled(kFeatureAovs)) {
+      pathAovs[2u * slot] = vec4(p.aovAlbedo, 0.0);
+      pathAovs[2u * slot + 1u] = vec4(p.aovNormal, 0.0);
+    }
     if (p.done) {
       results[slot] = vec4(p.path.radiance, 0.0);
       rays += uvec3(1u, p.path.shadowRays, p.path.segments - 1u);
@@ -95,11 +102,17 @@ void accumulate(uint pixelInTile, inout uint dropped) {
   if (pixelInTile * params.sampleCount >= control.slots) return;
   const uvec2 pixel = params.tileOrigin + uvec2(pixelInTile % wave.tileWidth, pixelInTile / wave.tileWidth);
   const uint index = pixel.y * params.width + pixel.x;
-  vec4 sum = accumulation[index];
+  PixelSums sums = loadPixelSums(index);
   for (uint s = 0u; s < params.sampleCount; ++s) {
-    addSample(results[pixelInTile * params.sampleCount + s].rgb, sum, dropped);
+    const uint slot = pixelInTile * params.sampleCount + s;
+    SampleValue value = SampleValue(results[slot].rgb, vec3(0.0), vec3(0.0));
+    if (featureEnabled(kFeatureAovs)) {
+      value.albedo = pathAovs[2u * slot].rgb;
+      value.normal = pathAovs[2u * slot + 1u].xyz;
+    }
+    addSample(value, sums, dropped);
   }
-  accumulation[index] = sum;
+  storePixelSums(index, sums);
 }
 
 void main() {

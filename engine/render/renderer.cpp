@@ -47,6 +47,7 @@ std::vector<DescriptorBinding> rendererBindings(Backend backend, bool heatmap) {
   std::vector<DescriptorBinding> bindings = sceneBindings();
   bindings.push_back({gpu::kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   bindings.push_back({gpu::kBindingRayStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+  bindings.push_back({gpu::kBindingAovs, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   if (backend == Backend::kQuery) {
     for (const DescriptorBinding& binding : wavefrontBindings()) bindings.push_back(binding);
   }
@@ -79,6 +80,29 @@ void prepareWavefront(const Device& device, Renderer& renderer) {
   if (renderer.wavefrontActive && !hasWavefrontBuffers(renderer.wavefront)) {
     createWavefrontBuffers(device, renderer.wavefront, renderer.trace.descriptors.set);
   }
+}
+
+// The first-hit images' buffer: 2 vec4 per pixel of the allocated size when the kernel accumulates them, else a
+// placeholder the binding points at (the kernel compiles its accesses away). Keeps its contents when its size stays.
+void sizeAuxiliaryBuffer(const Device& device, Renderer& renderer, std::uint32_t width, std::uint32_t height) {
+  const bool wanted = (renderer.kernel.features & gpu::kFeatureAovs) != 0;
+  const VkDeviceSize bytes = wanted ? VkDeviceSize(width) * height * 2 * sizeof(glm::vec4) : sizeof(glm::vec4);
+  if (renderer.aovs.handle != VK_NULL_HANDLE && renderer.aovs.size == bytes) return;
+  if (bytes > device.properties.limits.maxStorageBufferRange) {
+    throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is too large for the denoiser's albedo and normal images (32 bytes a pixel) on this device",
+                kExitUsage);
+  }
+  destroyBuffer(device, renderer.aovs);
+  renderer.aovs = createBuffer(device, bytes,
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                   VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                               MemoryUse::kDevice, "first-hit albedo and normal");
+  writeStorageBuffer(device, renderer.trace.descriptors.set, gpu::kBindingAovs, renderer.aovs.handle);
+  submitAndWait(device, [&](VkCommandBuffer cmd) {
+    vkCmdFillBuffer(cmd, renderer.aovs.handle, 0, VK_WHOLE_SIZE, 0);
+    computeBarrier(cmd);
+  });
 }
 
 }  // namespace
@@ -145,6 +169,7 @@ void fillRenderer(const Device& device, const GpuScene& gpuScene, const Scene& s
   applyCamera(params, scene.camera, settings.width, settings.height);
 
   renderer.kernel = settings.kernel.value_or(featuresOf(scene));
+  if (settings.aovs) renderer.kernel.features |= gpu::kFeatureAovs;
   checkHeatmap(device, settings);
   // The heat map clocks each pixel's lane, so it keeps every pixel's samples in the megakernel.
   renderer.schedule = settings.heatmap ? Schedule::kMegakernel : settings.schedule;
@@ -195,6 +220,11 @@ void swapRenderPipelines(const Device& device, Renderer& renderer, RenderPipelin
   renderer.wavefront.pipeline = pipelines.wavefront;
   renderer.kernel = kernel;
   prepareWavefront(device, renderer);
+  // A kernel that starts or stops accumulating the first-hit images (the viewer's denoiser switch) needs their buffer
+  // sized to match; the caller resets the accumulation after a swap.
+  if (renderer.accumulation.handle != VK_NULL_HANDLE) {
+    sizeAuxiliaryBuffer(device, renderer, renderer.allocatedWidth, renderer.allocatedHeight);
+  }
 }
 
 void setTraceExtent(Renderer& renderer, glm::uvec2 extent) {
@@ -222,6 +252,9 @@ void resizeRenderer(const Device& device, Renderer& renderer, std::uint32_t widt
                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                        MemoryUse::kDevice, "accumulation");
   writeStorageBuffer(device, renderer.trace.descriptors.set, gpu::kBindingAccumulation, renderer.accumulation.handle);
+  renderer.allocatedWidth = width;
+  renderer.allocatedHeight = height;
+  sizeAuxiliaryBuffer(device, renderer, width, height);
   if (renderer.clocksPixels) {
     destroyBuffer(device, renderer.heatmap);
     renderer.heatmap = createBuffer(device, VkDeviceSize(width) * height * sizeof(float),
@@ -243,6 +276,7 @@ void destroyRenderer(const Device& device, Renderer& renderer) {
   destroyBuffer(device, renderer.heatmap);
   destroyBuffer(device, renderer.stats);
   destroyBuffer(device, renderer.accumulation);
+  destroyBuffer(device, renderer.aovs);
   destroyWavefront(device, renderer.wavefront);
   destroyTraceKernel(device, renderer.trace);
   renderer = {};
@@ -252,6 +286,7 @@ void resetAccumulation(const Device& device, Renderer& renderer) {
   submitAndWait(device, [&](VkCommandBuffer cmd) {
     vkCmdFillBuffer(cmd, renderer.accumulation.handle, 0, VK_WHOLE_SIZE, 0);
     if (renderer.heatmap.handle != VK_NULL_HANDLE) vkCmdFillBuffer(cmd, renderer.heatmap.handle, 0, VK_WHOLE_SIZE, 0);
+    if (renderer.aovs.handle != VK_NULL_HANDLE) vkCmdFillBuffer(cmd, renderer.aovs.handle, 0, VK_WHOLE_SIZE, 0);
     computeBarrier(cmd);
   });
   renderer.samplesDone = 0;
@@ -354,6 +389,31 @@ Image readImage(const Device& device, const Renderer& renderer) {
     image.rgba[i + 3] = 1.0f;
   }
   return image;
+}
+
+bool hasAuxiliaryImages(const Renderer& renderer) { return (renderer.kernel.features & gpu::kFeatureAovs) != 0; }
+
+AuxiliaryImages readAuxiliaryImages(const Device& device, const Renderer& renderer) {
+  if (!hasAuxiliaryImages(renderer)) {
+    throw Error("readAuxiliaryImages: the renderer's kernel does not accumulate first-hit albedo and normal");
+  }
+  const std::uint32_t width = renderer.params.width, height = renderer.params.height;
+  const std::size_t pixels = std::size_t(width) * height;
+  // The traced extent is the top-left part of the allocation, rows `width` long: the kernel indexes it so.
+  std::vector<glm::vec4> counts(pixels), sums(2 * pixels);
+  downloadBuffer(device, renderer.accumulation, counts.data(), pixels * sizeof(glm::vec4));
+  downloadBuffer(device, renderer.aovs, sums.data(), 2 * pixels * sizeof(glm::vec4));
+  AuxiliaryImages images{Image(width, height), Image(width, height)};
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const float scale = counts[i].w > 0.0f ? 1.0f / counts[i].w : 0.0f;
+    const glm::vec3 albedo = glm::clamp(glm::vec3(sums[2 * i]) * scale, 0.0f, 1.0f);
+    const glm::vec3 normal = glm::vec3(sums[2 * i + 1]) * scale;
+    std::copy_n(&albedo.x, 3, &images.albedo.rgba[4 * i]);
+    std::copy_n(&normal.x, 3, &images.normal.rgba[4 * i]);
+    images.albedo.rgba[4 * i + 3] = 1.0f;
+    images.normal.rgba[4 * i + 3] = 1.0f;
+  }
+  return images;
 }
 
 PixelValue readPixel(const Device& device, const Renderer& renderer, glm::uvec2 pixel) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "denoise/denoise.h"
 #include "image/heatmap.h"
 #include "image/image.h"
 #include "render/backend.h"
@@ -34,6 +35,7 @@ struct RenderSettings {
   Backend backend = Backend::kQuery;     // chooseBackend picks it for the device
   Schedule schedule = Schedule::kAutomatic;  // the wavefront for path kernels on ray queries (usesWavefront)
   bool heatmap = false;  // clock every pixel (render_heatmap.comp: the megakernel on ray queries, needs shaderClock)
+  bool aovs = false;     // also accumulate the first-hit albedo and normal images for the denoiser (kFeatureAovs)
 };
 
 struct RayCounts {
@@ -59,6 +61,9 @@ struct Renderer {
   bool clocksPixels = false;     // settings.heatmap
   Buffer heatmap;                // float clock ticks per pixel, when clocksPixels
   Buffer accumulation;  // vec4 per pixel: radiance sum and sample count
+  std::uint32_t allocatedWidth = 0;  // the accumulation's size (resizeRenderer); the traced extent may be less
+  std::uint32_t allocatedHeight = 0;
+  Buffer aovs;          // 2 vec4 per pixel with kFeatureAovs: first-hit albedo and normal sums; else one placeholder
   Buffer stats;         // RayStats per submission, host-visible
   KernelFeatures kernel;  // what the pipeline was specialised for
   gpu::FrameParams params{};
@@ -123,6 +128,12 @@ void resetAccumulation(const Device& device, Renderer& renderer);
 
 // The mean radiance per pixel so far, alpha 1.
 Image readImage(const Device& device, const Renderer& renderer);
+
+// The first-hit albedo and normal images (kernel/aov.glsl) of the samples so far, divided by the same counts as the
+// radiance; albedo clamped to [0, 1]. Throws Error when the kernel was not made with them (RenderSettings.aovs, or
+// kFeatureAovs in the kernel features).
+AuxiliaryImages readAuxiliaryImages(const Device& device, const Renderer& renderer);
+bool hasAuxiliaryImages(const Renderer& renderer);
 
 // One pixel of the traced extent: its mean radiance and how many samples it holds (the viewer's picking).
 struct PixelValue {

@@ -83,7 +83,8 @@ std::vector<DescriptorBinding> wavefrontBindings() {
   return {{gpu::kBindingPathStates, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
           {gpu::kBindingPathResults, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
           {gpu::kBindingPathQueues, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-          {gpu::kBindingWaveControl, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+          {gpu::kBindingWaveControl, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+          {gpu::kBindingPathAovs, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
 }
 
 bool hasWavefrontBuffers(const Wavefront& wavefront) { return wavefront.control.handle != VK_NULL_HANDLE; }
@@ -94,6 +95,8 @@ void createWavefrontBuffers(const Device& device, Wavefront& wavefront, VkDescri
                                   MemoryUse::kDevice, "wavefront path states");
   wavefront.results = createBuffer(device, VkDeviceSize(kWaveCapacity) * sizeof(glm::vec4), kStorage,
                                    MemoryUse::kDevice, "wavefront path results");
+  wavefront.aovs = createBuffer(device, VkDeviceSize(kWaveCapacity) * 2 * sizeof(glm::vec4), kStorage,
+                                MemoryUse::kDevice, "wavefront first-hit albedo and normal");
   wavefront.queues = createBuffer(device, VkDeviceSize(kWaveCapacity) * 2 * sizeof(std::uint32_t), kStorage,
                                   MemoryUse::kDevice, "wavefront queues");
   wavefront.control = createBuffer(device, sizeof(gpu::WaveControl),
@@ -102,12 +105,14 @@ void createWavefrontBuffers(const Device& device, Wavefront& wavefront, VkDescri
   writeStorageBuffer(device, set, gpu::kBindingPathStates, wavefront.states.handle);
   writeStorageBuffer(device, set, gpu::kBindingPathResults, wavefront.results.handle);
   writeStorageBuffer(device, set, gpu::kBindingPathQueues, wavefront.queues.handle);
+  writeStorageBuffer(device, set, gpu::kBindingPathAovs, wavefront.aovs.handle);
   writeStorageBuffer(device, set, gpu::kBindingWaveControl, wavefront.control.handle);
 }
 
 void destroyWavefront(const Device& device, Wavefront& wavefront) {
   destroyBuffer(device, wavefront.control);
   destroyBuffer(device, wavefront.queues);
+  destroyBuffer(device, wavefront.aovs);
   destroyBuffer(device, wavefront.results);
   destroyBuffer(device, wavefront.states);
   if (wavefront.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, wavefront.pipeline, nullptr);

@@ -42,6 +42,7 @@ struct Wavefront {
   VkPipeline pipeline = VK_NULL_HANDLE;  // wavefront.comp, of the renderer's pipeline layout
   Buffer states;   // PathState per slot
   Buffer results;  // vec4 per slot
+  Buffer aovs;     // 2 vec4 per slot: the first hit's albedo and normal (kFeatureAovs)
   Buffer queues;   // two queues of slots
   Buffer control;  // WaveControl, also the indirect dispatch arguments
 };

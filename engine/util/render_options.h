@@ -59,6 +59,11 @@ inline constexpr ChoiceOption kBackendOption{
     "query: compute kernels with ray queries; pipeline: a ray-tracing pipeline (raygen, closest-hit, miss and "
     "intersection programs); auto: ray queries where the device has them"};
 
+inline constexpr std::array<std::string_view, 3> kDenoiseQualityValues = {"fast", "balanced", "high"};
+inline constexpr ChoiceOption kDenoiseQualityOption{
+    "denoise-quality", kDenoiseQualityValues, "high",
+    "Open Image Denoise's quality: high for final images, balanced or fast (about half the time) for previews"};
+
 inline constexpr CountOption kMaxDepthOption{"max-depth", 0, 64, 8,
                                              "bounces after the primary hit (mirror, glass, paths)"};
 

@@ -5,6 +5,7 @@
 #ifndef RAYLAB_KERNEL_MISS_GLSL
 #define RAYLAB_KERNEL_MISS_GLSL
 
+#include "kernel/aov.glsl"
 #include "kernel/environment.glsl"
 #include "kernel/light_sampling.glsl"
 #include "kernel/mis.glsl"
@@ -27,7 +28,9 @@ void miss(inout Payload p) {
     p.done = true;
     return;
   }
-  p.path.radiance += p.path.throughput * environmentRadiance(p.path.direction) * environmentWeight(p);
+  const vec3 seen = environmentRadiance(p.path.direction);
+  if (recordsAov(p)) recordAov(p, seen, vec3(0.0));
+  p.path.radiance += p.path.throughput * seen * environmentWeight(p);
   p.done = true;
 }
 

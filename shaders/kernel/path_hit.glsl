@@ -15,6 +15,7 @@
 #ifndef RAYLAB_KERNEL_PATH_HIT_GLSL
 #define RAYLAB_KERNEL_PATH_HIT_GLSL
 
+#include "kernel/aov.glsl"
 #include "kernel/emission.glsl"
 #include "kernel/hit_common.glsl"
 #include "kernel/next_event.glsl"
@@ -88,6 +89,7 @@ void closestHitPath(Hit hit, inout Payload p) {
   if (p.path.depth > params.maxDepth) return;  // the segment that reached here was the last one allowed
 
   if (isSpecularOnly(bsdfFlags(material))) {
+    if (recordsAov(p)) recordAov(p, vec3(1.0), facing(s.shadingNormal, wo));
     specularVertex(s, material, wo, p);
     return;
   }
@@ -109,8 +111,12 @@ void closestHitPath(Hit hit, inout Payload p) {
   }
   p.path.lastPosition = s.position;
 
-  // The continuation: the mirror with probability delta, else a sample of f_r (weight f |cos| / pdf).
+  // The continuation: the mirror with probability delta, else a sample of f_r (weight f |cos| / pdf). The sample
+  // is drawn before the choice, which wastes it on the mirror's share of paths (materials with delta > 0 only), so
+  // that the first vertex's albedo for the denoiser comes from the same one call.
   const vec4 u = rngNext4(p.path.rng);
+  const BsdfSample b = bsdfSample(material, woLocal, u.xyz);
+  if (recordsAov(p)) recordAov(p, delta + (1.0 - delta) * albedoEstimate(b.f, b.wi.z, b.pdf), facing(ns, wo));
   if (u.w < delta) {
     const vec3 viewerSide = leavingSide(ng, wo);
     const vec3 mirror = reflect(p.path.direction, dot(ns, viewerSide) > 0.0 ? ns : -ns);
@@ -118,7 +124,6 @@ void closestHitPath(Hit hit, inout Payload p) {
     if (dot(mirror, viewerSide) > 0.0) continueOrEnd(p, offsetRayOrigin(s.position, viewerSide), mirror, p.path.throughput);
     return;
   }
-  const BsdfSample b = bsdfSample(material, woLocal, u.xyz);
   if (!(b.pdf > 0.0)) return;
   const vec3 wi = toWorld(frame, b.wi);
   // A shading-normal sample on the other side of the geometric surface than its lobe meant cannot go there.

@@ -17,6 +17,9 @@ struct Payload {
   vec3 splitOrigin;
   vec3 splitDirection;
   vec3 splitThroughput;
+  // What the camera ray's first hit showed the denoiser (kernel/aov.glsl), set there with kFeatureAovs.
+  vec3 aovAlbedo;
+  vec3 aovNormal;
 };
 
 // What the traversal knows about the committed hit (OptiX: attributes and built-ins).

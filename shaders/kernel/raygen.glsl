@@ -2,7 +2,7 @@
 // a path segment by segment (no recursion), keeping glass's second continuations in a small queue. Each entry
 // point defines how one segment is traced (traceSegment: a ray query and a call of closestHitProgram or miss in
 // render.comp; traceRayEXT and the pipeline's own programs in render.rgen) and how ray counts are gathered.
-// Needs `params` (FrameParams) and `accumulation`.
+// Needs `params` (FrameParams), `accumulation` and `aovs` (the denoiser's first-hit images, kernel/aov.glsl).
 #ifndef RAYLAB_KERNEL_RAYGEN_GLSL
 #define RAYLAB_KERNEL_RAYGEN_GLSL
 
@@ -75,16 +75,53 @@ Payload startSample(uvec2 pixel, uint sampleIndex) {
   p.path.lastPosition = p.path.origin;
   p.path.lastPdf = 0.0;
   p.path.lastSpecular = 1u;
+  p.aovAlbedo = vec3(0.0);
+  p.aovNormal = vec3(0.0);
   return p;
 }
 
-// Adds a finished sample to the pixel's running sum. A NaN or Inf sample is a defect somewhere: it is dropped
-// (the pixel's count says how many it has) and counted, never spread over the image.
-void addSample(vec3 radiance, inout vec4 sum, inout uint dropped) {
-  if (any(isnan(radiance)) || any(isinf(radiance))) {
+// What one sample brings to its pixel: the radiance along its camera path, and with kFeatureAovs what its first
+// hit showed the denoiser.
+struct SampleValue {
+  vec3 radiance;
+  vec3 albedo;
+  vec3 normal;
+};
+
+// A pixel's running sums: radiance and sample count, and with kFeatureAovs the first-hit albedo and normal.
+struct PixelSums {
+  vec4 radiance;
+  vec3 albedo;
+  vec3 normal;
+};
+
+PixelSums loadPixelSums(uint index) {
+  PixelSums sums = PixelSums(accumulation[index], vec3(0.0), vec3(0.0));
+  if (featureEnabled(kFeatureAovs)) {
+    sums.albedo = aovs[2u * index].rgb;
+    sums.normal = aovs[2u * index + 1u].xyz;
+  }
+  return sums;
+}
+
+void storePixelSums(uint index, PixelSums sums) {
+  accumulation[index] = sums.radiance;
+  if (featureEnabled(kFeatureAovs)) {
+    aovs[2u * index] = vec4(sums.albedo, 0.0);
+    aovs[2u * index + 1u] = vec4(sums.normal, 0.0);
+  }
+}
+
+// Adds a finished sample to the pixel's running sums. A NaN or Inf sample is a defect somewhere: it is dropped
+// (the pixel's count says how many it has) and counted, never spread over the image; its auxiliary values go with it,
+// so that every image of the pixel divides by the same count.
+void addSample(SampleValue value, inout PixelSums sums, inout uint dropped) {
+  if (any(isnan(value.radiance)) || any(isinf(value.radiance))) {
     dropped += 1u;
   } else {
-    sum += vec4(radiance, 1.0);
+    sums.radiance += vec4(value.radiance, 1.0);
+    sums.albedo += value.albedo;
+    sums.normal += value.normal;
   }
 }
 
@@ -92,9 +129,9 @@ void addSample(vec3 radiance, inout vec4 sum, inout uint dropped) {
 // entry point may count lane utilisation there (render.comp does, with subgroup operations).
 void lanesJoin(uint segments);
 
-// One sample of `pixel`: the radiance along its camera path, every glass branch included. Adds the rays it
-// traced to `rays` (primary, shadow, secondary).
-vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
+// One sample of `pixel`: the radiance along its camera path, every glass branch included, and its first hit's
+// auxiliary values. Adds the rays it traced to `rays` (primary, shadow, secondary).
+SampleValue traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
   Payload p = startSample(pixel, sampleIndex);
   Pending pending[kMaxPending];
   uint pendingCount = 0u;
@@ -119,7 +156,7 @@ vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
   }
   lanesJoin(segments);
   rays += uvec3(1u, p.path.shadowRays, segments - 1u);
-  return p.path.radiance;
+  return SampleValue(p.path.radiance, p.aovAlbedo, p.aovNormal);
 }
 
 // Adds params.sampleCount samples to the pixel's running sum, one at a time and in order, exactly as separate
@@ -127,9 +164,9 @@ vec3 traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
 // Counts the rays traced and the samples dropped.
 void renderPixel(uvec2 pixel, inout uvec3 rays, inout uint dropped) {
   const uint index = pixel.y * params.width + pixel.x;
-  vec4 sum = accumulation[index];
-  for (uint i = 0u; i < params.sampleCount; ++i) addSample(traceSample(pixel, params.sampleIndex + i, rays), sum, dropped);
-  accumulation[index] = sum;
+  PixelSums sums = loadPixelSums(index);
+  for (uint i = 0u; i < params.sampleCount; ++i) addSample(traceSample(pixel, params.sampleIndex + i, rays), sums, dropped);
+  storePixelSums(index, sums);
 }
 
 #endif

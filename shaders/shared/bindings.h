@@ -28,6 +28,7 @@ RL_CONST uint kBindingBrdfTables = 24;
 // Per-kernel outputs.
 RL_CONST uint kBindingAccumulation = 9;  // vec4[] running sum of radiance samples per pixel
 RL_CONST uint kBindingRayStats = 10;     // RayStats, counters reset before every dispatch
+RL_CONST uint kBindingAovs = 28;         // vec4[2 per pixel]: sums of first-hit albedo and normal (kFeatureAovs)
 RL_CONST uint kBindingHeatmap = 23;      // render_heatmap.comp: float[] clock ticks per pixel, summed over samples
 RL_CONST uint kBindingProbeRays = 11;    // trace_rays.comp: ProbeRay[] in
 RL_CONST uint kBindingProbeHits = 12;    // trace_rays.comp: ProbeHit[] out

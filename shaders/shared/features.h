@@ -22,6 +22,7 @@ RL_CONST uint kFeatureTextures = 32;         // material textures
 RL_CONST uint kFeatureAlpha = 128;           // alpha-tested or stochastically transparent surfaces (non-opaque geometry)
 RL_CONST uint kFeatureEnvironment = 64;      // an environment image (else the background is uniform)
 RL_CONST uint kFeatureLayerTextures = 256;   // textures of glTF's layered extensions (MaterialTextures.layerModel)
+RL_CONST uint kFeatureAovs = 512;            // first-hit albedo and normal images for the denoiser (kernel/aov.glsl)
 // Bits 16-31: the models' own features (a model's `feature:` lines, numbered by the registry in
 // generated/bsdf_models.glsl and ModelInfo::features), such as openpbr's coat.
 RL_CONST uint kFirstModelFeatureBit = 16;

@@ -14,6 +14,7 @@ RL_CONST uint kBindingPathStates = 19;   // PathState[capacity] (path_state.h)
 RL_CONST uint kBindingPathResults = 20;  // vec4[capacity]: the radiance of each finished path
 RL_CONST uint kBindingPathQueues = 21;   // uint[2 * capacity]: two queues of live slots, read one, fill the other
 RL_CONST uint kBindingWaveControl = 22;  // WaveControl
+RL_CONST uint kBindingPathAovs = 29;     // vec4[2 * capacity]: each path's first-hit albedo and normal (kFeatureAovs)
 
 // WaveParams.mode: what one dispatch of wavefront.comp does.
 RL_CONST uint kWaveFirstSegment = 0;  // start every slot's camera path and trace its first segment

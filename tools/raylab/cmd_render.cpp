@@ -13,6 +13,7 @@
 
 #include "command_line/cli.h"
 #include "commands.h"
+#include "denoise/denoise.h"
 #include "session/gpu_session.h"
 #include "image/image.h"
 #include "render/renderer.h"
@@ -45,6 +46,8 @@ struct RenderOptions {
   bool noPng = false;
   bool stats = false;
   bool allFeatures = false;
+  bool denoise = false;
+  std::string denoiseQuality;
   // The render options' values as given; their defaults come from util/render_options.h (addChoiceOption).
   std::string fresnel;
   std::string integrator;
@@ -63,7 +66,17 @@ struct RenderReport {
   double steadyCpuSeconds = 0.0;    // the same samples in CPU time of the process (lavapipe's threads included)
   double perSampleSeconds = 0.0;
   double raysPerSecond = 0.0;
+  double denoiseSeconds = 0.0;  // with --denoise
 };
+
+// Where --denoise writes beside `path` (out/x.exr): out/x.denoised.exr, out/x.albedo.exr, ...; "" for "".
+std::string besidePath(const std::string& path, const std::string& kind) {
+  if (path.empty()) return "";
+  std::filesystem::path sibling(path);
+  const std::string extension = sibling.extension().string();
+  sibling.replace_extension("." + kind + extension);
+  return sibling.string();
+}
 
 void writeReport(const std::string& path, const RenderOptions& o, const Scene& scene, const GpuScene& gpuScene,
                  const Device& device, const Renderer& renderer, const RenderReport& r) {
@@ -105,13 +118,29 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
                                : nullptr},
       {"exr", o.exrPath},
       {"png", o.pngPath},
+      {"denoise", o.denoise ? nlohmann::ordered_json{{"quality", o.denoiseQuality},
+                                                     {"seconds", r.denoiseSeconds},
+                                                     {"exr", besidePath(o.exrPath, "denoised")},
+                                                     {"png", besidePath(o.pngPath, "denoised")},
+                                                     {"albedo", besidePath(o.exrPath, "albedo")},
+                                                     {"normal", besidePath(o.exrPath, "normal")}}
+                            : nlohmann::ordered_json(nullptr)},
   };
   writeFileAtomically(path, report.dump(2) + "\n");
 }
 
+// What a render leaves: the image, and with --denoise the denoised image and the first-hit albedo and normal the
+// denoiser read.
+struct RenderedImages {
+  Image image;
+  std::optional<Image> denoised;
+  std::optional<AuxiliaryImages> auxiliary;
+};
+
 // Writes the images, each atomically. When one fails after another was written, the message says which
 // files were written and which was not, so nothing is taken for done that is not.
-void writeImages(const RenderOptions& o, const Image& image) {
+void writeImages(const RenderOptions& o, const RenderedImages& images) {
+  const Image& image = images.image;
   std::vector<std::string> written;
   const auto attempt = [&](const std::string& path, const std::function<void()>& write) {
     if (path.empty()) return;
@@ -128,11 +157,27 @@ void writeImages(const RenderOptions& o, const Image& image) {
   };
   attempt(o.exrPath, [&] { writeExr(o.exrPath, image); });
   attempt(o.pngPath, [&] { writePng(o.pngPath, image, o.exposure, parseToneMap(o.toneMap)); });
+  if (images.denoised) {
+    const std::string denoisedExr = besidePath(o.exrPath, "denoised"), denoisedPng = besidePath(o.pngPath, "denoised");
+    attempt(denoisedExr, [&] { writeExr(denoisedExr, *images.denoised); });
+    attempt(denoisedPng, [&] { writePng(denoisedPng, *images.denoised, o.exposure, parseToneMap(o.toneMap)); });
+  }
+  if (images.auxiliary) {
+    const std::string albedo = besidePath(o.exrPath, "albedo"), normal = besidePath(o.exrPath, "normal");
+    attempt(albedo, [&] { writeExr(albedo, images.auxiliary->albedo); });
+    attempt(normal, [&] { writeExr(normal, images.auxiliary->normal); });
+  }
 }
 
 // The render the options ask for; `o` by value: defaults are filled in.
 void render(RenderOptions o) {
   o.settings.jitter = !o.noAntialiasing;
+  o.settings.aovs = o.denoise;
+  const DenoiseQuality quality = parseDenoiseQuality(o.denoiseQuality, "raylab render: --denoise-quality");
+  // The outputs --denoise adds beside --out and --png; none without it.
+  const auto denoisedOutput = [&o](const std::string& path, const char* kind) {
+    return o.denoise ? besidePath(path, kind) : std::string();
+  };
   if (!o.exrPath.empty() && o.noExr) throw Error("raylab render: --out and --no-exr contradict each other", kExitUsage);
   if (!o.pngPath.empty() && o.noPng) throw Error("raylab render: --png and --no-png contradict each other", kExitUsage);
   if (!o.exrPath.empty()) requireExtension("raylab render", "--out", o.exrPath, ".exr");
@@ -156,13 +201,30 @@ void render(RenderOptions o) {
                                          {"--png", o.pngPath},
                                          {"--report", o.reportPath},
                                          {"--heatmap", o.heatmapPath},
-                                         {"--heatmap (its .exr)", heatmapExr}});
+                                         {"--heatmap (its .exr)", heatmapExr},
+                                         {"--denoise (the denoised .exr)", denoisedOutput(o.exrPath, "denoised")},
+                                         {"--denoise (the denoised .png)", denoisedOutput(o.pngPath, "denoised")},
+                                         {"--denoise (the albedo .exr)", denoisedOutput(o.exrPath, "albedo")},
+                                         {"--denoise (the normal .exr)", denoisedOutput(o.exrPath, "normal")}});
   if (!o.exrPath.empty()) checkOutputPath(o.exrPath, "--out");
   if (!o.pngPath.empty()) checkOutputPath(o.pngPath, "--png");
   if (!o.reportPath.empty()) checkOutputPath(o.reportPath, "--report");
   if (!o.heatmapPath.empty()) {
     checkOutputPath(o.heatmapPath, "--heatmap");
     checkOutputPath(heatmapExr, "--heatmap");
+  }
+  for (const char* kind : {"denoised", "albedo", "normal"}) {
+    if (!denoisedOutput(o.exrPath, kind).empty()) checkOutputPath(denoisedOutput(o.exrPath, kind), "--denoise");
+  }
+  if (!denoisedOutput(o.pngPath, "denoised").empty()) checkOutputPath(denoisedOutput(o.pngPath, "denoised"), "--denoise");
+  if (o.denoise) {
+    // Before any work: without the library --denoise fails now (exit 2, how to install), not after the render.
+    if (o.exrPath.empty() && o.pngPath.empty()) {
+      throw Error("raylab render: --denoise writes beside the EXR or PNG, and --no-exr --no-png leave neither",
+                  kExitUsage);
+    }
+    const std::string library = loadDenoiser();
+    std::fprintf(stderr, "raylab render: denoising with Open Image Denoise from %s\n", library.c_str());
   }
 
   o.request.maxBufferBytes = deviceBufferLimit(o.device);  // an environment too large is refused from its header
@@ -213,9 +275,16 @@ void render(RenderOptions o) {
     const double steadySeconds = steadyClock.seconds();
     const double steadyCpuSeconds = steadyCpuClock.seconds();
 
-    const Image image = readImage(gpu.device, renderer);
-    checkFinite(image, "raylab render");  // before any file: none is written when one would be refused
-    writeImages(o, image);
+    RenderedImages images{readImage(gpu.device, renderer), std::nullopt, std::nullopt};
+    checkFinite(images.image, "raylab render");  // before any file: none is written when one would be refused
+    double denoiseSeconds = 0.0;
+    if (o.denoise) {
+      images.auxiliary = readAuxiliaryImages(gpu.device, renderer);
+      const Stopwatch denoiseClock;
+      images.denoised = denoise(images.image, &*images.auxiliary, quality);
+      denoiseSeconds = denoiseClock.seconds();
+    }
+    writeImages(o, images);
     if (!o.heatmapPath.empty()) {
       writeCostMap(o.heatmapPath, readCostMap(gpu.device, renderer), scene.name);
       std::printf("wrote %s\nwrote %s\n", o.heatmapPath.c_str(),
@@ -246,6 +315,10 @@ void render(RenderOptions o) {
     if (o.stats || renderer.droppedSamples > 0) {
       std::printf("dropped samples (NaN or Inf): %llu\n", static_cast<unsigned long long>(renderer.droppedSamples));
     }
+    if (o.denoise) {
+      std::printf("denoised: %s (Open Image Denoise, %s quality, with first-hit albedo and normal)\n",
+                  formatSeconds(denoiseSeconds).c_str(), o.denoiseQuality.c_str());
+    }
     std::printf("first sample: %s (kernel compilation included)\n", formatSeconds(firstSampleSeconds).c_str());
     std::printf("per sample: %s\n", formatSeconds(perSample).c_str());
     std::printf("rays: %s (primary %s, shadow %s, secondary %s), %s\n",
@@ -256,7 +329,7 @@ void render(RenderOptions o) {
     if (!o.reportPath.empty()) {
       writeReport(o.reportPath, o, scene, gpuScene, gpu.device, renderer,
                   {gpuScene.accelerationBuildSeconds, firstSampleSeconds, steadySeconds, steadyCpuSeconds, perSample,
-                   raysPerSecond});
+                   raysPerSecond, denoiseSeconds});
       std::printf("wrote %s\n", o.reportPath.c_str());
     }
   } catch (...) {
@@ -295,6 +368,11 @@ void addRenderCommand(CLI::App& raylab) {
   addText(command, "--png", o->pngPath, "FILE.png", "write the tone-mapped image here (sRGB, 8-bit; default out/<scene>.png)");
   addFlag(command, "--no-exr", o->noExr, "write no OpenEXR image");
   addFlag(command, "--no-png", o->noPng, "write no PNG image");
+  addFlag(command, "--denoise", o->denoise,
+          "also write the image denoised by Intel Open Image Denoise (from PyPI's pyoidn, loaded at run time), "
+          "guided by the first-hit albedo and normal: FILE.denoised.exr and FILE.denoised.png beside --out and "
+          "--png, and the guides as FILE.albedo.exr and FILE.normal.exr beside --out");
+  addChoiceOption(command, kDenoiseQualityOption, o->denoiseQuality);
   addText(command, "--heatmap", o->heatmapPath, "FILE.png",
           "also write the cost of every pixel (device clock ticks per sample, VK_KHR_shader_clock) in false colour, "
           "and its raw values as FILE.exr; clocks the megakernel on ray queries");
