@@ -61,7 +61,8 @@ std::string describe(const KernelFeatures& features) {
                               {gpu::kFeatureTextures, "textures"},
                               {gpu::kFeatureLayerTextures, "layer textures"},
                               {gpu::kFeatureAlpha, "alpha"},
-                              {gpu::kFeatureEnvironment, "environment image"}};
+                              {gpu::kFeatureEnvironment, "environment image"},
+                              {gpu::kFeatureAovs, "denoiser albedo and normal"}};
   std::string list;
   for (const Named& named : kNames) {
     if (features.features & named.bit) list += (list.empty() ? "" : ", ") + std::string(named.name);

@@ -8,7 +8,10 @@ which would cost about five times the denoise itself).
 """
 import numpy as np
 
-_QUALITIES = ("fast", "balanced", "high")
+from ._raylab import render_options as _render_options
+
+# Declared once in the engine (util/render_options.h, kDenoiseQualityOption).
+_QUALITIES = tuple(_render_options["denoise_quality"]["values"])
 _INSTALL = ("raylab.denoise needs Open Image Denoise from the PyPI package pyoidn: run tools/setup.sh, or "
             ".venv/bin/pip install -r tools/requirements.txt")
 
@@ -59,3 +62,18 @@ def denoise(color, albedo=None, normal=None, quality="high"):
     if not np.isfinite(result).all():
         raise RuntimeError("raylab.denoise: Open Image Denoise returned non-finite values")
     return result
+
+
+def _load():
+    """Imports pyoidn now (Renderer.render(denoise=True) calls it before rendering): RuntimeError saying how to
+    install it when it is missing."""
+    try:
+        import pyoidn  # noqa: F401
+    except ImportError:
+        raise RuntimeError(_INSTALL) from None
+
+
+def _denoised_rgba(color, albedo, normal, quality):
+    """Renderer.render(denoise=True)'s result: the denoised colour with the alpha channel the raw image has."""
+    rgb = denoise(color, albedo, normal, quality)
+    return np.concatenate([rgb, np.ones(rgb.shape[:2] + (1,), dtype=np.float32)], axis=2)

@@ -20,6 +20,8 @@
 #include "util/error.h"
 #include "util/timer.h"
 #include "render/render_choices.h"
+#include "shared/features.h"
+#include "util/render_options.h"
 
 namespace py = pybind11;
 
@@ -38,7 +40,7 @@ class PythonRenderer {
  public:
   PythonRenderer(const Scene& scene, std::uint32_t width, std::uint32_t height, const std::string& integrator,
                  const std::string& sampling, const std::string& fresnel, bool allFeatures, const std::string& backend,
-                 const std::string& schedule, std::uint32_t maxDepth, std::uint32_t seed, bool jitter,
+                 const std::string& schedule, std::uint32_t maxDepth, std::uint32_t seed, bool jitter, bool aovs,
                  std::optional<std::uint32_t> device)
       : scene_(scene) {
     const std::string where = "raylab.Renderer";
@@ -56,6 +58,7 @@ class PythonRenderer {
     settings.maxDepth = maxDepth;
     settings.seed = seed;
     settings.jitter = jitter;
+    settings.aovs = aovs;
     settings.kernel = kernelFor(scene_, kernel);
     settings.schedule = scheduleChoice;
 
@@ -79,17 +82,41 @@ class PythonRenderer {
     destroyGpuScene(context_->session.device, gpuScene_);
   }
 
-  py::array_t<float> render(std::int64_t spp, std::optional<std::uint32_t> seed) {
+  py::object render(std::int64_t spp, std::optional<std::uint32_t> seed, bool denoise,
+                    const std::string& denoiseQuality) {
     if (spp < 1 || spp > std::int64_t(kMaxSamplesPerPixel)) {
       throw Error("raylab.Renderer.render: spp must be within 1.." + std::to_string(kMaxSamplesPerPixel), kExitUsage);
     }
+    checkDenoiseQuality(denoiseQuality);
+    // Refused before the render when Open Image Denoise is missing, as `raylab render --denoise` does.
+    if (denoise) py::module_::import("raylab.denoise").attr("_load")();
     {
+      py::gil_scoped_release release;
       const std::lock_guard<std::mutex> lock(context_->queue);
+      if (denoise) accumulateAuxiliaryImages();
       if (seed) renderer_.params.seed = *seed;
       resetAccumulation(context_->session.device, renderer_);
     }
     addSamples(spp);
-    return image();
+    if (!denoise) return image();
+    const py::tuple guides = auxiliary();
+    return py::module_::import("raylab.denoise").attr("_denoised_rgba")(image(), guides[0], guides[1], denoiseQuality);
+  }
+
+  // The first-hit albedo and normal of the samples so far, float32 (height, width, 4) each.
+  py::tuple auxiliary() {
+    AuxiliaryImages images;
+    {
+      py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(context_->queue);
+      if (!hasAuxiliaryImages(renderer_)) {
+        throw Error("raylab.Renderer.auxiliary: this renderer does not accumulate them: make it with aovs=True, or "
+                    "render(..., denoise=True)",
+                    kExitUsage);
+      }
+      images = readAuxiliaryImages(context_->session.device, renderer_);
+    }
+    return py::make_tuple(arrayOf(images.albedo), arrayOf(images.normal));
   }
 
   // Python integers of any size arrive here unconverted, so that 2^32 is refused rather than wrapped.
@@ -141,6 +168,24 @@ class PythonRenderer {
   }
 
   void cancel() { cancelled_ = true; }
+
+ private:
+  static void checkDenoiseQuality(const std::string& quality) {
+    choiceIndex(kDenoiseQualityOption, quality, "raylab.Renderer.render: denoise_quality");
+  }
+
+  // Switches the kernel to the variant that also accumulates the first-hit images (once; the driver compiles it at
+  // its first dispatch). The caller holds the queue and resets the accumulation.
+  void accumulateAuxiliaryImages() {
+    if (hasAuxiliaryImages(renderer_)) return;
+    const Device& d = context_->session.device;
+    KernelFeatures kernel = renderer_.kernel;
+    kernel.features |= gpu::kFeatureAovs;
+    swapRenderPipelines(d, renderer_, createRenderPipelines(d, renderer_, kernel), kernel);
+    firstSampleSeconds_.reset();  // the next first sample includes the new kernel's compilation
+  }
+
+ public:
   std::uint32_t samples() const { return renderer_.samplesDone; }
 
   py::dict report() const {
@@ -193,17 +238,25 @@ void bindRenderer(py::module_& m) {
                              "made to the Scene afterwards need a new Renderer.")
       .def(py::init<const Scene&, std::uint32_t, std::uint32_t, const std::string&, const std::string&,
                     const std::string&, bool, const std::string&, const std::string&, std::uint32_t, std::uint32_t,
-                    bool, std::optional<std::uint32_t>>(),
+                    bool, bool, std::optional<std::uint32_t>>(),
            py::arg("scene"), py::kw_only(), py::arg("width") = 640, py::arg("height") = 360,
            py::arg("integrator") = std::string(kIntegratorOption.defaultValue),
            py::arg("sampling") = std::string(kSamplingOption.defaultValue),
            py::arg("fresnel") = std::string(kFresnelOption.defaultValue), py::arg("all_features") = false,
            py::arg("backend") = std::string(kBackendOption.defaultValue),
            py::arg("schedule") = std::string(kScheduleOption.defaultValue),
-           py::arg("max_depth") = kMaxDepthOption.defaultValue, py::arg("seed") = 0, py::arg("jitter") = true, py::arg("device") = py::none())
+           py::arg("max_depth") = kMaxDepthOption.defaultValue, py::arg("seed") = 0, py::arg("jitter") = true, py::arg("aovs") = false,
+           py::arg("device") = py::none())
       .def("render", &PythonRenderer::render, py::arg("spp") = 16, py::arg("seed") = py::none(),
+           py::arg("denoise") = false,
+           py::arg("denoise_quality") = std::string(kDenoiseQualityOption.defaultValue),
            "Clears the accumulation and renders spp samples per pixel (with `seed`, else the renderer's); returns the "
-           "mean radiance, float32 (height, width, 4), alpha 1.")
+           "mean radiance, float32 (height, width, 4), alpha 1. denoise=True returns it denoised by Open Image "
+           "Denoise (raylab.denoise, guided by the first-hit albedo and normal, which the renderer then accumulates; "
+           "image() still reads the raw mean).")
+      .def("auxiliary", &PythonRenderer::auxiliary,
+           "The first-hit albedo and normal images of the samples so far, a pair of float32 (height, width, 4): what "
+           "raylab.denoise takes as albedo and normal. Needs aovs=True or a render with denoise=True.")
       .def("add_samples", &PythonRenderer::addSamples, py::arg("n"),
            "Adds n samples per pixel to the accumulation, for progressive use; image() reads the result.")
       .def("image", &PythonRenderer::image, "The mean radiance so far, float32 (height, width, 4).")

@@ -50,6 +50,16 @@ PYBIND11_MODULE(_raylab, m) {
     entry["help"] = std::string(option->help);
     options[py::str(key(option->name))] = entry;
   }
+  {
+    // Not a Renderer option (Renderer.render and raylab.denoise take it), but declared with them.
+    py::list values;
+    for (std::string_view value : raylab::kDenoiseQualityOption.values) values.append(std::string(value));
+    py::dict entry;
+    entry["values"] = values;
+    entry["default"] = std::string(raylab::kDenoiseQualityOption.defaultValue);
+    entry["help"] = std::string(raylab::kDenoiseQualityOption.help);
+    options[py::str(key(raylab::kDenoiseQualityOption.name))] = entry;
+  }
   py::dict depth;
   depth["min"] = raylab::kMaxDepthOption.min;
   depth["max"] = raylab::kMaxDepthOption.max;

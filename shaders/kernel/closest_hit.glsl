@@ -65,15 +65,6 @@ void glassHit(Surface s, MaterialRecord material, vec3 wo, inout Payload p) {
   }
 }
 
-// The first vertex's albedo for the denoiser (kernel/aov.glsl): delta + (1 - delta) times an estimate of f_r's
-// directional albedo, from a BSDF sample on a random stream the image never draws from.
-vec3 slidesAlbedo(Payload p, MaterialRecord material, vec3 woLocal, float delta) {
-  Rng aovRng = p.path.rng;
-  rngStartVertex(aovRng, kAovRngVertex);
-  const BsdfSample b = bsdfSample(material, woLocal, rngNext4(aovRng).xyz);
-  return delta + (1.0 - delta) * albedoEstimate(b.f, b.wi.z, b.pdf);
-}
-
 void closestHit(Hit hit, inout Payload p) {
   Surface s = surfaceAt(hit);
   MaterialRecord material = materials[s.material];
@@ -95,7 +86,7 @@ void closestHit(Hit hit, inout Payload p) {
   const vec3 ng = side.ng;
   const vec3 ns = side.ns;
   const ShadingFrame frame = side.frame;
-  if (recordsAov(p)) recordAov(p, slidesAlbedo(p, material, toLocal(frame, wo), delta), facing(ns, wo));
+  if (recordsAov(p)) recordAov(p, firstHitAlbedo(p, material, toLocal(frame, wo), delta), facing(ns, wo));
 
   // Rough glass (two-sided) sees the lights on both sides of its surface.
   if (delta < 1.0) {

@@ -111,12 +111,10 @@ void closestHitPath(Hit hit, inout Payload p) {
   }
   p.path.lastPosition = s.position;
 
-  // The continuation: the mirror with probability delta, else a sample of f_r (weight f |cos| / pdf). The sample
-  // is drawn before the choice, which wastes it on the mirror's share of paths (materials with delta > 0 only), so
-  // that the first vertex's albedo for the denoiser comes from the same one call.
+  if (recordsAov(p)) recordAov(p, firstHitAlbedo(p, material, woLocal, delta), facing(ns, wo));
+
+  // The continuation: the mirror with probability delta, else a sample of f_r (weight f |cos| / pdf).
   const vec4 u = rngNext4(p.path.rng);
-  const BsdfSample b = bsdfSample(material, woLocal, u.xyz);
-  if (recordsAov(p)) recordAov(p, delta + (1.0 - delta) * albedoEstimate(b.f, b.wi.z, b.pdf), facing(ns, wo));
   if (u.w < delta) {
     const vec3 viewerSide = leavingSide(ng, wo);
     const vec3 mirror = reflect(p.path.direction, dot(ns, viewerSide) > 0.0 ? ns : -ns);
@@ -124,6 +122,7 @@ void closestHitPath(Hit hit, inout Payload p) {
     if (dot(mirror, viewerSide) > 0.0) continueOrEnd(p, offsetRayOrigin(s.position, viewerSide), mirror, p.path.throughput);
     return;
   }
+  const BsdfSample b = bsdfSample(material, woLocal, u.xyz);
   if (!(b.pdf > 0.0)) return;
   const vec3 wi = toWorld(frame, b.wi);
   // A shading-normal sample on the other side of the geometric surface than its lobe meant cannot go there.
