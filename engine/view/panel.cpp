@@ -104,7 +104,7 @@ std::string statusLine(const PanelStatus& status) {
   std::snprintf(text, sizeof text, "%u spp  %ux%u%s\n%.1f ms/frame  %s", status.spp, status.traceExtent.x,
                 status.traceExtent.y, status.preview ? " (preview)" : "", status.frameMs,
                 formatCount(status.raysPerSecond, "rays/s").c_str());
-  return text;
+  return status.denoise.empty() ? std::string(text) : std::string(text) + "\n" + status.denoise;
 }
 
 PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selection, const PanelStatus& status,
@@ -149,6 +149,8 @@ PanelEdits drawPanel(Scene& scene, ViewSettings& settings, PanelSelection& selec
     }
     ImGui::SliderFloat("target frame", &settings.targetMs, 5.0f, 1000.0f, "%.0f ms",
                        ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+    // Open Image Denoise on the still image; comparisons stay raw (docs/viewer.md, "Denoising").
+    if (ImGui::Checkbox("denoise (N)", &settings.denoise)) edits.denoise = true;
     if (ImGui::Button("reset view (R)")) edits.resetView = true;
     ImGui::SameLine();
     if (ImGui::Button("screenshot (F12)")) edits.screenshot = true;

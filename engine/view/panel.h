@@ -24,6 +24,7 @@ struct ViewSettings {
   ToneMap toneMap = ToneMap::kClamp;
   float resolutionScale = 1.0f;  // full render size over window size
   float targetMs = 50.0f;
+  bool denoise = false;  // the still image shown denoised (viewer_denoise.cpp)
 };
 
 struct PanelStatus {
@@ -35,6 +36,7 @@ struct PanelStatus {
   bool compiling = false;
   std::string device;   // "ray queries on llvmpipe (...)": the backend and the device it traces on
   std::string message;  // last screenshot, kernel error, ...
+  std::string denoise;  // whether the image shown is denoised, and at how many samples; empty when switched off
 };
 
 // Which material and light the panel's editors show.
@@ -52,6 +54,7 @@ struct PanelEdits {
   bool resolutionScale = false;
   bool resetView = false;
   bool screenshot = false;
+  bool denoise = false;  // the denoise switch was clicked: settings.denoise holds the wish
 };
 
 // Builds the panel for this ImGui frame: lists of the materials and lights, and editors for the selected

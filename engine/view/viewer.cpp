@@ -62,6 +62,7 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
   }
   if (edits.maxDepth || edits.environment) v.pending.accumulation = true;
   if (edits.integrator) switchIntegrator(v);
+  if (edits.denoise) setDenoise(v, v.settings.denoise);
   if (edits.resolutionScale) v.pending.extent = true;
   uploadSceneEdits(v, edits.materials, edits.lights);
   if (edits.screenshot) {
@@ -79,6 +80,7 @@ void drawFrame(Viewer& v, FrameSlot& slot, std::uint32_t imageIndex) {
   if (!paused) {
     plan = planFrame(v.scheduler, now, v.pending.accumulation, kind);
     v.pending.accumulation = false;
+    if (plan.reset) discardDenoised(v, true);  // before this frame's display pass reads it
     setTraceExtent(v.renderer, plan.traceExtent);
     setMaxDepth(v.renderer, v.settings.maxDepth);
     setSceneLighting(v.renderer, v.scene);
@@ -132,6 +134,7 @@ void run(Viewer& v) {
       ensureKernel(v);  // the scene may have moved on while it was building
     }
     applyScriptEvents(v);
+    updateDenoise(v);
 
     const VkExtent2D window = framebufferExtent(v.window);
     if (window.width == 0 || window.height == 0) {
@@ -150,9 +153,10 @@ void run(Viewer& v) {
     // A script's events are counted in frames: with --exit-at-limit and an event still ahead, the frames go on
     // (with nothing to trace they only display), or an image that converged first would wait for that frame forever.
     const bool scriptAhead = v.options.exitWhenConverged && v.frameIndex <= v.lastScriptFrame;
-    if (!v.automation && !traceWork && !scriptAhead && !v.window.input->activity && v.uiFramesLeft <= 0) {
+    if (!v.automation && !traceWork && !scriptAhead && !v.window.input->activity && v.uiFramesLeft <= 0 &&
+        !v.pending.display) {
       if (anyInFlight(v)) continue;  // the fence wait above paces the loop
-      glfwWaitEventsTimeout(v.build ? kBuildPollSeconds : kIdleWaitSeconds);
+      glfwWaitEventsTimeout(v.build || v.denoised.job.valid() ? kBuildPollSeconds : kIdleWaitSeconds);
       continue;
     }
 

@@ -30,6 +30,7 @@ struct ViewerOptions {
   float exposure = 0.0f;
   ToneMap toneMap = ToneMap::kClamp;
   bool panel = true;
+  bool denoise = false;  // show the still image denoised (Open Image Denoise), as the N key and the panel switch
   std::optional<CompareSpec> compare;  // open the split view with this material switched (--compare)
   std::optional<SlicePlot> target;     // a measured slice shown beside the lobe (--target), read and checked
 

@@ -25,6 +25,17 @@ std::string timestampedScreenshotPath() {
 
 void saveScreenshot(Viewer& v, const std::string& exrPath, const std::string& pngPath) {
   waitForFrames(v);
+  if (v.denoised.showing) {
+    // What is shown: the denoised image, and the files say so.
+    writeExr(exrPath, v.denoised.image);
+    writePng(pngPath, v.denoised.image, v.settings.exposure, v.settings.toneMap);
+    v.status.message = "saved " + exrPath + " (denoised at " + std::to_string(v.denoised.shownSamples) + " spp)";
+    if (!v.options.quiet) {
+      std::printf("wrote %s (denoised at %u spp)\nwrote %s (denoised at %u spp)\n", exrPath.c_str(),
+                  v.denoised.shownSamples, pngPath.c_str(), v.denoised.shownSamples);
+    }
+    return;
+  }
   const Image image = readImage(v.device, v.renderer);
   writeExr(exrPath, image);
   if (v.comparison.active) {
@@ -99,6 +110,9 @@ void applyScriptEvents(Viewer& v) {
       case ScriptAction::kSetExposure:
         v.settings.exposure = event.value.x;
         break;
+      case ScriptAction::kDenoise:
+        setDenoise(v, event.param == "on");
+        break;
       case ScriptAction::kSetMaxDepth:
         v.settings.maxDepth = static_cast<std::uint32_t>(event.value.x);
         break;
@@ -157,6 +171,7 @@ void handleHotKeys(Viewer& v, const WindowInput& input) {
       v.panelShown = !v.panelShown;
       v.pending.extent = true;  // the image takes the panel's strip, or gives it back
     }
+    if (key == GLFW_KEY_N) setDenoise(v, !v.settings.denoise);
     if (key == GLFW_KEY_F12 || key == GLFW_KEY_P) {
       const std::string path = timestampedScreenshotPath();
       saveScreenshot(v, path, screenshotPaths(path, "").png);
@@ -174,6 +189,7 @@ void updateStatus(Viewer& v) {
   const double span = v.recentRays.size() > 1 ? v.recentRays.back().first - v.recentRays.front().first : 0.0;
   v.status.raysPerSecond = span > 0.0 ? double(rays - v.recentRays.front().second) / span : 0.0;
   v.status.compiling = v.build != nullptr;
+  v.status.denoise = denoiseStatus(v);
 }
 
 }  // namespace raylab

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "shared/features.h"
 #include "util/error.h"
 #include "vk/commands.h"
 #include "vk/vk_check.h"
@@ -64,6 +65,7 @@ void openWindowAndDevice(Viewer& v) {
 KernelFeatures neededKernel(const Viewer& v) {
   KernelFeatures needed = featuresOf(v.scene);
   needed.integrator = v.integrator;
+  if (v.settings.denoise) needed.features |= gpu::kFeatureAovs;  // the denoiser's albedo and normal
   return needed;
 }
 
@@ -75,6 +77,10 @@ VkRect2D imageArea(const Viewer& v) {
 }
 
 void setUp(Viewer& v) {
+  if (v.options.denoise) {
+    loadDenoiser();  // without it --denoise exits 2 before a window opens, saying how to install it
+    v.settings.denoise = true;
+  }
   openWindowAndDevice(v);
   while (framebufferExtent(v.window).width == 0 || framebufferExtent(v.window).height == 0) glfwWaitEvents();
 
@@ -131,6 +137,7 @@ void tearDown(Viewer& v) {
   if (v.device.handle != VK_NULL_HANDLE) {
     destroyLobePlot(v.device, v.lobe);
     stopComparison(v.device, v.comparison);
+    destroyDenoisedView(v);
     destroyUi(v.device, v.ui);
     destroyDisplay(v.device, v.display);
     destroySwapchain(v.device, v.swapchain);
@@ -150,6 +157,7 @@ void updateFullExtent(Viewer& v) {
   v.pending.extent = false;
   if (full == v.scheduler.fullExtent) return;
   waitForFrames(v);
+  discardDenoised(v, false);  // rebound below
   resizeRenderer(v.device, v.renderer, full.x, full.y);
   if (v.comparison.active) resizeRenderer(v.device, v.comparison.renderer, full.x, full.y);
   resizeDisplay(v.device, v.display, full);

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <deque>
+#include <future>
 #include <memory>
 #include <string>
 
@@ -57,6 +58,20 @@ struct Pending {
   bool extent = false;       // resolution scale changed, panel shown or hidden: updateFullExtent
   bool display = true;       // the display images were cleared or the tone settings changed: the next display pass
                              // covers every tile
+};
+
+// The denoised view (viewer_denoise.cpp): the last result shown in place of the accumulation, and the job making the
+// next one.
+struct DenoisedView {
+  std::future<Image> job;          // Open Image Denoise on its own thread
+  std::uint64_t jobGeneration = 0;  // the view the job's image belongs to
+  std::uint32_t jobSamples = 0;
+  std::uint64_t generation = 0;     // bumped whenever the accumulation restarts
+  std::uint32_t nextSamples = 1;    // the samples per pixel at which the still image is denoised next
+  bool showing = false;             // the display pass reads `shown`
+  std::uint32_t shownSamples = 0;
+  Buffer shown;                     // the denoised image as an accumulation of one sample per pixel
+  Image image;                      // the same on the host, for screenshots
 };
 
 enum class KernelState {
@@ -124,6 +139,7 @@ struct Viewer {
   double lastHover = 0.0;
   LobePlot lobe;
   std::optional<SlicePlot> slicePlot;  // --target
+  DenoisedView denoised;
 };
 
 // viewer_setup.cpp
@@ -162,6 +178,21 @@ bool covers(const KernelFeatures& kernel, const KernelFeatures& needed);
 void installKernel(Viewer& v);
 void ensureKernel(Viewer& v);
 void switchIntegrator(Viewer& v);
+
+// viewer_denoise.cpp
+// True when the image shown may be denoised: the switch is on and nothing is compared.
+bool denoiseApplies(const Viewer& v);
+// Turns the denoised view on or off (a kernel with the albedo and normal images builds in the background); a missing
+// Open Image Denoise leaves it off with the reason in the status.
+void setDenoise(Viewer& v, bool on);
+// Takes a finished denoise, and starts the next when the still image reached its sample count: once per loop.
+void updateDenoise(Viewer& v);
+// The accumulation restarts: the denoised image no longer matches it. `rebind` points the display pass back at the
+// accumulation (updateFullExtent rebinds it itself).
+void discardDenoised(Viewer& v, bool rebind);
+// What the status line says about denoising; empty with the switch off.
+std::string denoiseStatus(const Viewer& v);
+void destroyDenoisedView(Viewer& v);
 
 // viewer_compare.cpp
 void startComparing(Viewer& v, const CompareSpec& spec);

@@ -136,6 +136,11 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
     }
     // Events of frame N apply before frame N is traced: at frame 0 nothing has been traced yet.
     if (event.frame == 0) throw Error(where + ": a screenshot at frame 0 would be black (nothing traced yet); use 1 or later");
+  } else if (action == "denoise") {
+    expectWords(words, 4, where, "at <frame> denoise on|off");
+    if (words[3] != "on" && words[3] != "off") throw Error(where + ": denoise is on or off, not '" + words[3] + "'");
+    event.action = ScriptAction::kDenoise;
+    event.param = words[3];
   } else if (action == "compare") {
     expectWords(words, 4, where, "at <frame> compare <material>=<model>[:k=v,...] | off");
     event.action = ScriptAction::kCompare;
@@ -257,7 +262,7 @@ ScriptEvent parseLine(const std::vector<std::string>& words, const std::string& 
     }
   } else {
     throw Error(where + ": unknown action '" + action +
-                "' (actions: orbit, pan, zoom, set, model, resize, screenshot, compare, pick, save)");
+                "' (actions: orbit, pan, zoom, set, model, resize, screenshot, compare, pick, save, denoise)");
   }
   return event;
 }
@@ -389,6 +394,7 @@ bool resetsAccumulation(const ScriptEvent& event) {
     case ScriptAction::kSetDifference:
     case ScriptAction::kPick:
     case ScriptAction::kSaveLobe:
+    case ScriptAction::kDenoise:
       return false;
     default:
       return true;

@@ -12,6 +12,7 @@
 //   at <frame> set light <name> cone <inner> <outer>    spot lights, degrees from the axis
 //   at <frame> set exposure <stops>
 //   at <frame> set max-depth <bounces>
+//   at <frame> denoise on|off                      the denoised view of the still image (as the N key)
 //   at <frame> set integrator slides|path
 //   at <frame> set environment strength <S>        the environment image's; S >= 0
 //   at <frame> set environment rotation <degrees>  about +Y
@@ -60,6 +61,7 @@ enum class ScriptAction {
   kSetDifference,  // param: "off", "absolute" or "relative"; value.x the scale when valueCount is 1
   kPick,           // value.xy: the image pixel
   kSaveLobe,       // name: the CSV file
+  kDenoise,        // param: "on" or "off"
 };
 
 struct ScriptEvent {

@@ -226,6 +226,46 @@ TEST(WindowTest, ResizingMidRunKeepsRenderingAtTheNewSize) {
   expectSameImage(view, reference, "after the resize, against raylab render");
 }
 
+// --denoise: the still image is shown denoised, the status says at how many samples, and a screenshot writes what is
+// shown and says so: after 6 frames the image denoised at 4 spp, the same as `raylab render --spp 4 --denoise
+// --denoise-quality fast` (the viewer's quality). A comparison is never denoised. Without the library, exit 2
+// before a window opens.
+TEST(WindowTest, DenoiseShowsTheDenoisedStillImageAndComparisonsStayRaw) {
+  const std::string dir = scratchDir();
+  const std::vector<std::string> common = {kMinimalScene, "--width", "160", "--height", "96", "--seed", "7"};
+  std::vector<std::string> still = common;
+  still.insert(still.end(), {"--denoise", "--frames", "6", "--screenshot", dir + "/denoised_view.exr"});
+  const CommandResult result = runView(still);
+  expectCleanRun(result);
+  EXPECT_NE(result.output.find("denoised at 4 spp (Open Image Denoise)"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("denoised_view.exr (denoised at 4 spp)"), std::string::npos) << result.output;
+  std::vector<std::string> render = {"render"};
+  render.insert(render.end(), common.begin(), common.end());
+  render.insert(render.end(), {"--spp", "4", "--denoise", "--denoise-quality", "fast", "--out",
+                               dir + "/denoised_render.exr", "--no-png"});
+  const CommandResult rendered = runRaylab(render);
+  ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
+  expectSameImage(readExr(dir + "/denoised_view.exr"), readExr(dir + "/denoised_render.denoised.exr"),
+                  "the viewer's denoised screenshot against raylab render --denoise");
+
+  std::vector<std::string> compared = common;
+  compared.insert(compared.end(),
+                  {"--denoise", "--frames", "10", "--script",
+                   writeScript("denoise_compare.txt", "at 7 compare \"red plastic=ward\"\nat 9 screenshot " + dir +
+                                                          "/compared.exr\n")});
+  const CommandResult comparing = runView(compared);
+  expectCleanRun(comparing);
+  EXPECT_NE(comparing.output.find("not denoised: comparisons show the raw images"), std::string::npos)
+      << comparing.output;
+  EXPECT_EQ(comparing.output.find("compared.exr (denoised"), std::string::npos) << comparing.output;
+
+  std::vector<std::string> missing = common;
+  missing.insert(missing.end(), {"--denoise", "--frames", "2"});
+  const CommandResult refused = runView(missing, {"RAYLAB_OIDN_LIBRARY=" + dir + "/none.so"});
+  EXPECT_EQ(refused.exitCode, 2) << refused.output;
+  EXPECT_NE(refused.output.find("pyoidn"), std::string::npos) << refused.output;
+}
+
 TEST(WindowTest, AScreenshotNamedPngWritesThePngAndTheExrBesideIt) {
   const std::string dir = scratchDir();
   const std::string png = dir + "/named.png";

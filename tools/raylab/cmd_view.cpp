@@ -139,6 +139,9 @@ void addViewCommand(CLI::App& raylab) {
            kMaxSamplesPerPixel);
   addToneOptions(command, o->viewer.exposure, o->toneMap, "the display");
   addFlag(command, "--no-panel", o->noPanel, "start with the panel hidden (F1 shows it)");
+  addFlag(command, "--denoise", o->viewer.denoise,
+          "show the still image denoised by Open Image Denoise (the N key and the panel switch it; comparisons stay "
+          "raw); exits 2 when the library (PyPI's pyoidn) is missing");
   addFlag(command, "--exit-at-limit", o->exitAtLimit,
           "exit once the still image has --spp-limit samples per pixel (after the script's last event), saving "
           "--screenshot: the interactive schedule, budgeted frames and all, for scripts and tests");
