@@ -24,7 +24,8 @@ struct AuxiliaryImages {
 
 // The denoised colour, the same size, alpha 1. `color` is HDR radiance; `aux`, when given, has images of the same
 // size. Throws Error(kExitUsage) when Open Image Denoise cannot be loaded, saying how to install it, and Error for a
-// size mismatch, a non-finite input or a failure of the library (its message). Thread-safe.
+// size mismatch, a non-finite input or a failure of the library (its message). Thread-safe: calls take turns on one
+// device, and a call of the last call's size and quality reuses its filter.
 Image denoise(const Image& color, const AuxiliaryImages* aux, DenoiseQuality quality = DenoiseQuality::kHigh);
 
 // Loads the library now: for a command to refuse --denoise before it spends time rendering. Returns its path.

@@ -117,7 +117,8 @@ void run(Viewer& v) {
   while (!windowShouldClose(v.window)) {
     if (v.automation && v.frameIndex >= *v.options.frames) break;
     reapFinishedFrames(v);
-    if (v.options.exitWhenConverged && v.frameIndex > v.lastScriptFrame && converged(v.scheduler) && !anyInFlight(v)) {
+    if (v.options.exitWhenConverged && v.frameIndex > v.lastScriptFrame && converged(v.scheduler) && !anyInFlight(v) &&
+        denoisedToTheLimit(v)) {
       break;
     }
     FrameSlot& slot = v.slots[v.frameIndex % kFramesInFlight];

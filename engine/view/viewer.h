@@ -69,11 +69,19 @@ struct ScreenshotPaths {
 };
 ScreenshotPaths screenshotPaths(const std::string& named, const std::string& pngOverride);
 
+// One denoised image the viewer showed (viewer_denoise.cpp), as the benchmark sees it.
+struct DenoiseRecord {
+  std::uint32_t spp = 0;          // of the image denoised
+  double startSeconds = 0.0;      // when its accumulation was read (since the loop started)
+  double shownSeconds = 0.0;      // when the display pass was pointed at the result
+};
+
 struct ViewerReport {
   std::string device;
   std::string driver;
   glm::uvec2 fullExtent{0};
   std::vector<FrameRecord> frames;
+  std::vector<DenoiseRecord> denoised;
   std::uint32_t spp = 0;
 };
 

@@ -66,6 +66,7 @@ struct DenoisedView {
   std::future<Image> job;          // Open Image Denoise on its own thread
   std::uint64_t jobGeneration = 0;  // the view the job's image belongs to
   std::uint32_t jobSamples = 0;
+  double jobStartSeconds = 0.0;
   std::uint64_t generation = 0;     // bumped whenever the accumulation restarts
   std::uint32_t nextSamples = 1;    // the samples per pixel at which the still image is denoised next
   bool showing = false;             // the display pass reads `shown`
@@ -190,6 +191,9 @@ void updateDenoise(Viewer& v);
 // The accumulation restarts: the denoised image no longer matches it. `rebind` points the display pass back at the
 // accumulation (updateFullExtent rebinds it itself).
 void discardDenoised(Viewer& v, bool rebind);
+// With --exit-at-limit the viewer waits for the denoised image of the converged one: true when it is shown, or when
+// nothing is denoised.
+bool denoisedToTheLimit(const Viewer& v);
 // What the status line says about denoising; empty with the switch off.
 std::string denoiseStatus(const Viewer& v);
 void destroyDenoisedView(Viewer& v);

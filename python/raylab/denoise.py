@@ -35,11 +35,12 @@ def _rgb(image, name, shape=None):
     return array
 
 
-def denoise(color, albedo=None, normal=None, quality="high"):
+def denoise(color, albedo=None, normal=None, quality=_render_options["denoise_quality"]["default"]):
     """The denoised colour, float32 (height, width, 3).
 
     color: radiance (height, width, 3 or 4), as Renderer.render() returns it. albedo, normal: the auxiliary images of
-    the same size, noise-free (both or albedo alone, as OIDN takes them). quality: "fast", "balanced" or "high".
+    the same size, noise-free (both or albedo alone, as OIDN takes them), as Renderer.auxiliary() returns them.
+    quality: "fast", "balanced" (the default, as `raylab render --denoise`) or "high".
     Raises ValueError on bad input and RuntimeError when Open Image Denoise is missing or fails.
     """
     if not isinstance(quality, str) or quality not in _QUALITIES:

@@ -37,6 +37,7 @@ struct ViewTiming {
   double meanPreviewPixels = 0.0;
   std::uint32_t minPreviewWidth = 0, maxPreviewWidth = 0;
   double stillTo16Seconds = 0.0;   // from the first unchanged frame to the frame that completed 16 spp
+  double stillToDenoisedSeconds = 0.0;  // with --denoise: from the same frame until the denoised 16 spp was shown
   double secondsPerPixelSample = 0.0;  // still frames: device trace time per pixel-sample
   double overheadSeconds = 0.0;        // shown still frames, median: device time besides tracing (display, blit, UI)
   double stillFrameSeconds = 0.0;      // still frames, median interval
@@ -71,9 +72,10 @@ void appendFramesCsv(std::string* csv, Size size, const std::vector<FrameRecord>
 }
 
 ViewTiming timeViewer(const Scene& scene, Size size, std::uint32_t warmupFrames, std::uint32_t orbitFrames,
-                      float degreesPerFrame, double targetMs, std::uint32_t spp, BackendChoice backend,
+                      float degreesPerFrame, double targetMs, std::uint32_t spp, BackendChoice backend, bool denoise,
                       std::string* csv) {
   ViewerOptions options;
+  options.denoise = denoise;
   options.backend = backend;
   options.width = size.width;
   options.height = size.height;
@@ -136,6 +138,16 @@ ViewTiming timeViewer(const Scene& scene, Size size, std::uint32_t warmupFrames,
       break;
     }
   }
+  for (const DenoiseRecord& record : report.denoised) {
+    if (record.startSeconds >= stillStart && record.spp >= spp) {
+      timing.stillToDenoisedSeconds = record.shownSeconds - stillStart;
+      break;
+    }
+  }
+  if (denoise && timing.stillToDenoisedSeconds == 0.0) {
+    throw Error("raylab bench view: the viewer ended before it showed the denoised image at " + std::to_string(spp) +
+                " spp");
+  }
   timing.secondsPerPixelSample = pixelSamples > 0.0 ? traceSeconds / pixelSamples : 0.0;
   timing.overheadSeconds = percentile(overheads, 0.5);
   timing.stillFrameSeconds = percentile(intervals, 0.5);
@@ -152,6 +164,7 @@ struct ViewBenchOptions {
   float targetMs = 50.0f;
   float degrees = 0.0f;
   bool json = false;
+  bool denoise = false;
   std::string scenePath;
   std::string csvPath;
   std::string backend{kBackendOption.defaultValue};
@@ -174,7 +187,8 @@ int benchView(const ViewBenchOptions& o) {
   std::vector<ViewTiming> timings;
   for (const Size size : {Size{640, 360}, Size{1280, 720}}) {
     timings.push_back(timeViewer(scene, size, warmupFrames, orbitFrames, degrees, targetMs, spp,
-                                 parseBackendChoice(backend, "raylab bench view: --backend"), csvPath.empty() ? nullptr : &csv));
+                                 parseBackendChoice(backend, "raylab bench view: --backend"), o.denoise,
+                                 csvPath.empty() ? nullptr : &csv));
   }
   if (!csvPath.empty()) writeFileAtomically(csvPath, csv);
   const std::string loadAfter = loadAverage();
@@ -191,6 +205,7 @@ int benchView(const ViewBenchOptions& o) {
                        {"orbit_max_ms", 1e3 * percentile(t.orbitFrameSeconds, 1.0)},
                        {"preview_mean_pixels", t.meanPreviewPixels},
                        {"still_to_spp_s", t.stillTo16Seconds},
+                       {"still_to_denoised_s", o.denoise ? nlohmann::ordered_json(t.stillToDenoisedSeconds) : nullptr},
                        {"still_frame_ms", 1e3 * t.stillFrameSeconds},
                        {"overhead_ms", 1e3 * t.overheadSeconds},
                        {"still_frames", t.stillFrames},
@@ -218,6 +233,12 @@ int benchView(const ViewBenchOptions& o) {
     std::snprintf(stillFrame, sizeof stillFrame, "%.1f (%.1f)", 1e3 * t.stillFrameSeconds, 1e3 * t.overheadSeconds);
     std::printf("%-10s %10.2f s %24s %22s %16s %22s %13.0f\n", size, t.firstFrameSeconds, orbit, preview, still,
                 stillFrame, 1e9 * t.secondsPerPixelSample);
+  }
+  for (const ViewTiming& t : timings) {
+    if (o.denoise) {
+      std::printf("%ux%u denoised at %u spp shown %.2f s after the camera stopped\n", t.size.width, t.size.height,
+                  spp, t.stillToDenoisedSeconds);
+    }
   }
   for (const ViewTiming& t : timings) {
     std::printf("%ux%u still frames: %u, %u of them shown; shown frames, device ms: display pass %.1f, blit %.1f, "
@@ -251,6 +272,8 @@ void addBenchViewCommand(CLI::App& bench) {
   addCount(command, "--spp", o->spp, "samples per pixel to reach when still", 1, 4096);
   addText(command, "--scene", o->scenePath, "FILE", "a glTF scene instead of the built-in one");
   addFlag(command, "--json", o->json, "print one JSON object instead of the table");
+  addFlag(command, "--denoise", o->denoise,
+          "with the viewer's denoised view on: also time until the denoised image at --spp is shown");
   addText(command, "--frames-csv", o->csvPath, "FILE",
           "also write every frame (size, index, phase, submit and completion time, traced size, preview, spp, "
           "pixel-samples, device seconds of tracing, display, blit and the whole frame) to FILE");
