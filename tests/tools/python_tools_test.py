@@ -134,6 +134,21 @@ def layered_cost(python: Path, source: Path, raylab: Path, work: Path) -> None:
           f"layered_cost.py --spp 1: exit {result.returncode}, {result.stderr}")
 
 
+def denoise_study(python: Path, source: Path, raylab: Path, work: Path) -> None:
+    # The Python module this build made, through the venv's raylab.pth (tools/setup.sh).
+    out = work / "denoise_study"
+    run([python, source / "tools" / "denoise_study.py", "--quick", "--out", out])
+    with open(out / "denoise_study.csv") as file:
+        rows = list(csv.DictReader(file))
+    check(len(rows) == 2, f"denoise_study.csv: {len(rows)} rows, expected 2 (1 and 4 spp)")
+    for row in rows:
+        raw, denoised = float(row["raw_relmse"]), float(row["denoised_relmse"])
+        check(0.0 < denoised < raw, f"denoised error {denoised} is not below the raw {raw} at {row['spp']} spp")
+        check(float(row["denoised_cpu_s"]) > float(row["raw_cpu_s"]) > 0.0, f"costs out of order: {row}")
+    check_png(out / "denoise_cornell_box_area.png", 10 * 1024)
+    check_png(out / "crops_cornell_box_area.png", 5 * 1024)
+
+
 def main() -> None:
     raylab, source, work = (Path(arg).resolve() for arg in sys.argv[1:4])
     python = source / ".venv" / "bin" / "python"
@@ -148,6 +163,7 @@ def main() -> None:
     sampling_study(python, source, raylab, work)
     image_diff(python, source, raylab, work)
     layered_cost(python, source, raylab, work)
+    denoise_study(python, source, raylab, work)
     print("python_tools_test: passed")
 
 

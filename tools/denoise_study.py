@@ -1,0 +1,248 @@
+#!/usr/bin/env python3
+"""Denoised against raw, at equal CPU time: how soon each committed scene reaches a given error with and without
+Open Image Denoise, and where denoising loses (docs/performance.md, "Denoising").
+
+For each scene raylab renders a reference (4096 spp by default, cached in OUT/reference/), then, in N independent
+runs (seeds 1..N), 1, 2, 4, ... spp with the first-hit albedo and normal; each image is compared with the
+reference raw and denoised (raylab.denoise, the guides given). The error is the one a user sees: every channel
+clamped at 1 in image and reference, then relMSE = mean((x - r)^2 / (r^2 + 0.01)), averaged over the runs.
+
+Cost, in CPU seconds of this process (lavapipe's and OIDN's threads included; kernel compilation excluded): raw =
+spp x the CPU time per sample of a renderer without the guides (what a user who does not denoise runs); denoised =
+spp x that of the renderer with them + the denoise itself. "Time to 1e-2" interpolates each curve log-log.
+
+Writes OUT/denoise_study.csv, OUT/summary.md (the table of docs/performance.md), OUT/run.json (machine, load),
+OUT/denoise_<scene>.png (error against CPU time) and OUT/crops_<scene>.png (raw, denoised and reference side by
+side at --crop-spp); with --docs DIR the figures are copied there.
+
+    .venv/bin/python tools/denoise_study.py --docs docs/images/denoise   # about 25 min on 2 cores
+    .venv/bin/python tools/denoise_study.py --quick                      # smoke test: one scene, 32x18, seconds
+"""
+from __future__ import annotations
+
+import argparse
+import csv
+import hashlib
+import json
+import math
+import os
+import shutil
+import sys
+import time
+from pathlib import Path
+
+from raylab_tools import REPO, ToolError, run_main, save_figure, venv_hint
+
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    import raylab
+except ImportError as missing:
+    sys.exit(f"{Path(sys.argv[0]).name}: error: {venv_hint(missing.name)}")
+
+EPSILON = 0.01
+TARGET = 1e-2  # the clamped relMSE of issue 39's targets
+REFERENCE_SEED = 1000
+SCENES = ("cornell_box_area", "cornell_box", "minimal", "showcase", "showcase_hdri", "showcase_modern",
+          "showcase_layered")
+
+
+def clamped_relmse(image: np.ndarray, reference: np.ndarray) -> float:
+    x = np.minimum(image[..., :3], 1.0).astype(np.float64)
+    r = np.minimum(reference[..., :3], 1.0).astype(np.float64)
+    return float(np.mean((x - r) ** 2 / (r * r + EPSILON)))
+
+
+def cpu_seconds(function):
+    """(result, CPU seconds of the whole process) of function()."""
+    start = time.process_time()
+    result = function()
+    return result, time.process_time() - start
+
+
+def scene_path(name: str) -> Path:
+    return REPO / "assets" / "scenes" / f"{name}.gltf"
+
+
+def reference(name: str, width: int, height: int, spp: int, out: Path) -> np.ndarray:
+    digest = hashlib.sha256(scene_path(name).read_bytes()).hexdigest()[:12]
+    cached = out / "reference" / f"{name}_{width}x{height}_{spp}spp_{digest}.exr"
+    if cached.exists():
+        return raylab.read_exr(str(cached))
+    print(f"  reference: {spp} spp", flush=True)
+    image = raylab.Renderer(raylab.Scene.load(str(scene_path(name))), width=width, height=height).render(
+        spp=spp, seed=REFERENCE_SEED)
+    raylab.write_exr(str(cached), image)
+    return image
+
+
+def per_sample_cpu(renderer, spp: int) -> float:
+    """The best of two renders' CPU seconds per sample (the kernel already compiled)."""
+    return min(cpu_seconds(lambda: renderer.render(spp=spp, seed=99))[1] for _ in range(2)) / spp
+
+
+def time_to(target: float, costs: list[float], errors: list[float]) -> float | None:
+    """Where the error curve first falls to `target`, interpolated log-log; None when it never does."""
+    for i, error in enumerate(errors):
+        if error <= target:
+            if i == 0:
+                return costs[0] if error == target else None  # already below at the first point: not measured
+            c0, c1, e0, e1 = costs[i - 1], costs[i], errors[i - 1], errors[i]
+            t = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
+            return math.exp(math.log(c0) + t * (math.log(c1) - math.log(c0)))
+    return None
+
+
+def crop_sheet(name: str, raw: np.ndarray, denoised: np.ndarray, ref: np.ndarray, spp: int, path: Path) -> None:
+    """raw | denoised | reference, tone-mapped as the PNG writer does, labelled."""
+    figure, axes = plt.subplots(1, 3, figsize=(12, 2.6), dpi=110)
+    for axis, image, title in zip(axes, (raw, denoised, ref),
+                                  (f"raw, {spp} spp", f"denoised, {spp} spp", "reference")):
+        shown = np.clip(image[..., :3], 0.0, 1.0)
+        shown = np.where(shown <= 0.0031308, 12.92 * shown, 1.055 * np.power(shown, 1 / 2.4) - 0.055)
+        axis.imshow(shown, interpolation="nearest")
+        axis.set_title(title, fontsize=9)
+        axis.axis("off")
+    figure.suptitle(name, fontsize=10)
+    figure.tight_layout()
+    save_figure(figure, path)
+    plt.close(figure)
+
+
+def study_scene(name: str, args, out: Path, rows: list[dict]) -> dict:
+    print(f"{name}:", flush=True)
+    ref = reference(name, args.width, args.height, args.reference_spp, out)
+    scene = raylab.Scene.load(str(scene_path(name)))
+    plain = raylab.Renderer(scene, width=args.width, height=args.height)
+    guided = raylab.Renderer(scene, width=args.width, height=args.height, aovs=True)
+    plain.render(spp=1)  # the kernels compile at their first dispatch: not timed
+    guided.render(spp=1)
+    raylab.denoise(guided.image(), *guided.auxiliary(), quality=args.quality)  # OIDN's first run, not timed
+    timing_spp = max(args.spp)
+    raw_per_sample = per_sample_cpu(plain, timing_spp)
+    guided_per_sample = per_sample_cpu(guided, timing_spp)
+    summary = {"scene": name, "raw_cpu_per_sample": raw_per_sample, "guided_cpu_per_sample": guided_per_sample,
+               "points": []}
+    for spp in args.spp:
+        raw_errors, denoised_errors, denoise_costs = [], [], []
+        for run in range(args.runs):
+            image = guided.render(spp=spp, seed=1 + run)
+            albedo, normal = guided.auxiliary()
+            denoised, cost = cpu_seconds(lambda: raylab.denoise(image, albedo, normal, quality=args.quality))
+            raw_errors.append(clamped_relmse(image, ref))
+            denoised_errors.append(clamped_relmse(denoised, ref))
+            denoise_costs.append(cost)
+            if run == 0 and spp == args.crop_spp:
+                crop_sheet(name, image, denoised, ref, spp, out / f"crops_{name}.png")
+        point = {"scene": name, "spp": spp,
+                 "raw_relmse": float(np.mean(raw_errors)), "raw_relmse_sd": float(np.std(raw_errors)),
+                 "denoised_relmse": float(np.mean(denoised_errors)),
+                 "denoised_relmse_sd": float(np.std(denoised_errors)),
+                 "raw_cpu_s": spp * raw_per_sample,
+                 "denoise_cpu_s": float(np.mean(denoise_costs)),
+                 "denoised_cpu_s": spp * guided_per_sample + float(np.mean(denoise_costs))}
+        print(f"  {spp:5d} spp: raw {point['raw_relmse']:.4g} ({point['raw_cpu_s']:.3f} s), denoised "
+              f"{point['denoised_relmse']:.4g} ({point['denoised_cpu_s']:.3f} s)", flush=True)
+        rows.append(point)
+        summary["points"].append(point)
+    points = summary["points"]
+    summary["raw_time_to_target"] = time_to(TARGET, [p["raw_cpu_s"] for p in points],
+                                            [p["raw_relmse"] for p in points])
+    summary["denoised_time_to_target"] = time_to(TARGET, [p["denoised_cpu_s"] for p in points],
+                                                 [p["denoised_relmse"] for p in points])
+    plot(name, points, out / f"denoise_{name}.png")
+    return summary
+
+
+def plot(name: str, points: list[dict], path: Path) -> None:
+    figure, axis = plt.subplots(figsize=(5.2, 3.6), dpi=110)
+    for key, label, marker in (("raw", "raw", "o"), ("denoised", "denoised (OIDN, albedo + normal)", "s")):
+        costs = [p[f"{key}_cpu_s"] for p in points]
+        errors = [p[f"{key}_relmse"] for p in points]
+        axis.loglog(costs, errors, marker=marker, label=label)
+        for p, c, e in zip(points, costs, errors):
+            if p["spp"] in (1, 16, 256):
+                axis.annotate(f"{p['spp']}", (c, e), fontsize=7, textcoords="offset points", xytext=(3, 3))
+    axis.axhline(TARGET, color="grey", linestyle=":", linewidth=1)
+    axis.set_xlabel("CPU seconds (spp x cost per sample, + the denoise)")
+    axis.set_ylabel("relMSE, clamped at 1")
+    axis.set_title(name, fontsize=10)
+    axis.legend(fontsize=8)
+    axis.grid(True, which="both", linewidth=0.3)
+    figure.tight_layout()
+    save_figure(figure, path)
+    plt.close(figure)
+
+
+def seconds(value: float | None) -> str:
+    return "not within the range" if value is None else f"{value:.3g} s"
+
+
+def write_summary(summaries: list[dict], args, path: Path) -> None:
+    lines = ["| scene | CPU ms / sample (raw, with guides) | denoise CPU s | relMSE at 1 spp (raw, denoised) | "
+             "at 16 spp | at the most spp | CPU time to 1e-2 (raw, denoised) |",
+             "|---|---|---|---|---|---|---|"]
+    for s in summaries:
+        points = {p["spp"]: p for p in s["points"]}
+        first, most = points[min(points)], points[max(points)]
+        mid = points.get(16, first)
+        lines.append(
+            f"| {s['scene']} | {1e3 * s['raw_cpu_per_sample']:.1f}, {1e3 * s['guided_cpu_per_sample']:.1f} | "
+            f"{first['denoise_cpu_s']:.3f} | {first['raw_relmse']:.3g}, {first['denoised_relmse']:.3g} | "
+            f"{mid['raw_relmse']:.3g}, {mid['denoised_relmse']:.3g} | "
+            f"{most['raw_relmse']:.3g}, {most['denoised_relmse']:.3g} ({most['spp']} spp) | "
+            f"{seconds(s['raw_time_to_target'])}, {seconds(s['denoised_time_to_target'])} |")
+    header = (f"{args.width}x{args.height}, reference {args.reference_spp} spp, {args.runs} runs per point, OIDN "
+              f"quality {args.quality}.\n\n")
+    path.write_text(header + "\n".join(lines) + "\n")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--scenes", nargs="+", default=list(SCENES), choices=SCENES)
+    parser.add_argument("--width", type=int, default=160)
+    parser.add_argument("--height", type=int, default=90)
+    parser.add_argument("--spp", type=int, nargs="+", default=[1, 2, 4, 8, 16, 32, 64, 128, 256])
+    parser.add_argument("--runs", type=int, default=8)
+    parser.add_argument("--reference-spp", type=int, default=4096)
+    parser.add_argument("--crop-spp", type=int, default=16, help="the spp of the raw | denoised | reference sheet")
+    parser.add_argument("--quality", default=raylab.render_options["denoise_quality"]["default"],
+                        choices=raylab.render_options["denoise_quality"]["values"])
+    parser.add_argument("--out", type=Path, default=REPO / "out" / "denoise_study")
+    parser.add_argument("--docs", type=Path, help="copy the figures and summary.md here")
+    parser.add_argument("--quick", action="store_true", help="one scene, 32x18, 1 and 4 spp, 2 runs: a smoke test")
+    args = parser.parse_args()
+    if args.quick:
+        args.scenes, args.width, args.height, args.spp, args.runs = ["cornell_box_area"], 32, 18, [1, 4], 2
+        args.reference_spp, args.crop_spp = 64, 4
+    if args.runs < 1 or min(args.spp) < 1 or args.reference_spp < 1:
+        raise ToolError("--runs, --spp and --reference-spp must be at least 1")
+    args.spp = sorted(set(args.spp))
+    (args.out / "reference").mkdir(parents=True, exist_ok=True)
+    load_before = os.getloadavg()
+    started = time.time()
+    rows: list[dict] = []
+    summaries = [study_scene(name, args, args.out, rows) for name in args.scenes]
+    with open(args.out / "denoise_study.csv", "w", newline="") as file:
+        writer = csv.DictWriter(file, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    write_summary(summaries, args, args.out / "summary.md")
+    run = {"cores": os.cpu_count(), "load_before": load_before, "load_after": os.getloadavg(),
+           "seconds": time.time() - started, "raylab": raylab.__version__,
+           "summaries": [{k: v for k, v in s.items() if k != "points"} for s in summaries]}
+    (args.out / "run.json").write_text(json.dumps(run, indent=2) + "\n")
+    print((args.out / "summary.md").read_text())
+    if args.docs:
+        args.docs.mkdir(parents=True, exist_ok=True)
+        for name in args.scenes:
+            for figure in (f"denoise_{name}.png", f"crops_{name}.png"):
+                if (args.out / figure).exists():
+                    shutil.copy(args.out / figure, args.docs / figure)
+        shutil.copy(args.out / "summary.md", args.docs / "denoise_summary.md")
+
+
+if __name__ == "__main__":
+    run_main(main)
