@@ -13,9 +13,12 @@ spp x that of the renderer with them + the denoise itself. "Time to 1e-2" interp
 
 Writes OUT/denoise_study.csv, OUT/summary.md (the table of docs/performance.md), OUT/run.json (machine, load),
 OUT/denoise_<scene>.png (error against CPU time) and OUT/crops_<scene>.png (raw, denoised and reference side by
-side at --crop-spp); with --docs DIR the figures are copied there.
+side at --crop-spp); with --docs DIR the figures are copied there. --detail instead writes
+OUT/detail_showcase_layered.png: regions of a 640x360 render, raw and denoised at 16 spp against 512 spp, where a
+denoiser blurs BRDF detail.
 
     .venv/bin/python tools/denoise_study.py --docs docs/images/denoise   # about 25 min on 2 cores
+    .venv/bin/python tools/denoise_study.py --detail --docs docs/images/denoise   # about 5 min
     .venv/bin/python tools/denoise_study.py --quick                      # smoke test: one scene, 32x18, seconds
 """
 from __future__ import annotations
@@ -84,11 +87,12 @@ def per_sample_cpu(renderer, spp: int) -> float:
 
 
 def time_to(target: float, costs: list[float], errors: list[float]) -> float | None:
-    """Where the error curve first falls to `target`, interpolated log-log; None when it never does."""
+    """Where the error curve first falls to `target`, interpolated log-log; None when it never does, and the
+    negated cost of the first point when that one is already below (at most that long)."""
     for i, error in enumerate(errors):
         if error <= target:
             if i == 0:
-                return costs[0] if error == target else None  # already below at the first point: not measured
+                return -costs[0]
             c0, c1, e0, e1 = costs[i - 1], costs[i], errors[i - 1], errors[i]
             t = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
             return math.exp(math.log(c0) + t * (math.log(c1) - math.log(c0)))
@@ -100,14 +104,49 @@ def crop_sheet(name: str, raw: np.ndarray, denoised: np.ndarray, ref: np.ndarray
     figure, axes = plt.subplots(1, 3, figsize=(12, 2.6), dpi=110)
     for axis, image, title in zip(axes, (raw, denoised, ref),
                                   (f"raw, {spp} spp", f"denoised, {spp} spp", "reference")):
-        shown = np.clip(image[..., :3], 0.0, 1.0)
-        shown = np.where(shown <= 0.0031308, 12.92 * shown, 1.055 * np.power(shown, 1 / 2.4) - 0.055)
-        axis.imshow(shown, interpolation="nearest")
+        axis.imshow(to_display(image), interpolation="nearest")
         axis.set_title(title, fontsize=9)
         axis.axis("off")
     figure.suptitle(name, fontsize=10)
     figure.tight_layout()
     save_figure(figure, path)
+    plt.close(figure)
+
+
+# Where denoising loses detail: regions of showcase_layered (fractions of the image: left, top, right, bottom).
+DETAIL_SCENE = "showcase_layered"
+DETAIL_REGIONS = (("dusty fuzz", (0.35, 0.33, 0.49, 0.53)), ("thin film over a dark dielectric", (0.51, 0.33, 0.63, 0.53)),
+                  ("brushed metal", (0.52, 0.48, 0.70, 0.79)), ("floor and shadows", (0.00, 0.70, 0.30, 1.00)))
+
+
+def to_display(image: np.ndarray) -> np.ndarray:
+    shown = np.clip(image[..., :3], 0.0, 1.0)
+    return np.where(shown <= 0.0031308, 12.92 * shown, 1.055 * np.power(shown, 1 / 2.4) - 0.055)
+
+
+def detail_sheet(args, out: Path) -> None:
+    """Raw and denoised at --detail-spp beside a raw render of --detail-reference-spp, region by region, at 640x360:
+    what a denoiser blurs (fuzz's fine sparkle, thin-film colours, the brushed highlight's streaks) or keeps."""
+    width, height = 640, 360
+    scene = raylab.Scene.load(str(scene_path(DETAIL_SCENE)))
+    renderer = raylab.Renderer(scene, width=width, height=height, aovs=True)
+    print(f"detail: {DETAIL_SCENE} at {width}x{height}, {args.detail_spp} spp against {args.detail_reference_spp}",
+          flush=True)
+    raw = renderer.render(spp=args.detail_spp, seed=1)
+    denoised = raylab.denoise(raw, *renderer.auxiliary(), quality=args.quality)
+    ref = renderer.render(spp=args.detail_reference_spp, seed=REFERENCE_SEED)
+    figure, axes = plt.subplots(len(DETAIL_REGIONS), 3, figsize=(9, 2.4 * len(DETAIL_REGIONS)), dpi=110)
+    for row, (label, (left, top, right, bottom)) in enumerate(DETAIL_REGIONS):
+        x0, x1, y0, y1 = int(left * width), int(right * width), int(top * height), int(bottom * height)
+        for column, (image, title) in enumerate(((raw, f"raw, {args.detail_spp} spp"),
+                                                 (denoised, f"denoised, {args.detail_spp} spp"),
+                                                 (ref, f"raw, {args.detail_reference_spp} spp"))):
+            axis = axes[row][column]
+            axis.imshow(to_display(image[y0:y1, x0:x1]), interpolation="nearest")
+            axis.set_title(f"{label}: {title}" if column == 0 else title, fontsize=8)
+            axis.axis("off")
+    figure.tight_layout()
+    save_figure(figure, out / f"detail_{DETAIL_SCENE}.png")
     plt.close(figure)
 
 
@@ -177,7 +216,9 @@ def plot(name: str, points: list[dict], path: Path) -> None:
 
 
 def seconds(value: float | None) -> str:
-    return "not within the range" if value is None else f"{value:.3g} s"
+    if value is None:
+        return "not within the range"
+    return f"at most {-value:.3g} s (below at 1 spp)" if value < 0 else f"{value:.3g} s"
 
 
 def write_summary(summaries: list[dict], args, path: Path) -> None:
@@ -210,6 +251,10 @@ def main() -> None:
     parser.add_argument("--crop-spp", type=int, default=16, help="the spp of the raw | denoised | reference sheet")
     parser.add_argument("--quality", default=raylab.render_options["denoise_quality"]["default"],
                         choices=raylab.render_options["denoise_quality"]["values"])
+    parser.add_argument("--detail", action="store_true",
+                        help=f"only the detail sheet: {DETAIL_SCENE} at 640x360, raw and denoised against a reference")
+    parser.add_argument("--detail-spp", type=int, default=16)
+    parser.add_argument("--detail-reference-spp", type=int, default=512)
     parser.add_argument("--out", type=Path, default=REPO / "out" / "denoise_study")
     parser.add_argument("--docs", type=Path, help="copy the figures and summary.md here")
     parser.add_argument("--quick", action="store_true", help="one scene, 32x18, 1 and 4 spp, 2 runs: a smoke test")
@@ -221,6 +266,12 @@ def main() -> None:
         raise ToolError("--runs, --spp and --reference-spp must be at least 1")
     args.spp = sorted(set(args.spp))
     (args.out / "reference").mkdir(parents=True, exist_ok=True)
+    if args.detail:
+        detail_sheet(args, args.out)
+        if args.docs:
+            args.docs.mkdir(parents=True, exist_ok=True)
+            shutil.copy(args.out / f"detail_{DETAIL_SCENE}.png", args.docs / f"detail_{DETAIL_SCENE}.png")
+        return
     load_before = os.getloadavg()
     started = time.time()
     rows: list[dict] = []
