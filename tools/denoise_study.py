@@ -13,7 +13,7 @@ spp x that of the renderer with them + the denoise itself. "Time to 1e-2" interp
 
 Writes OUT/denoise_study.csv, OUT/summary.md (the table of docs/performance.md), OUT/run.json (machine, load),
 OUT/denoise_<scene>.png (error against CPU time) and OUT/crops_<scene>.png (raw, denoised and reference side by
-side at --crop-spp); with --docs DIR the figures are copied there. --detail instead writes
+side at --crop-spp); with --docs DIR the plots and the summary are copied there (the small crops stay in OUT). --detail instead writes
 OUT/detail_showcase_layered.png: regions of a 640x360 render, raw and denoised at 16 spp against 512 spp, where a
 denoiser blurs BRDF detail.
 
@@ -289,9 +289,7 @@ def main() -> None:
     if args.docs:
         args.docs.mkdir(parents=True, exist_ok=True)
         for name in args.scenes:
-            for figure in (f"denoise_{name}.png", f"crops_{name}.png"):
-                if (args.out / figure).exists():
-                    shutil.copy(args.out / figure, args.docs / figure)
+            shutil.copy(args.out / f"denoise_{name}.png", args.docs / f"denoise_{name}.png")
         shutil.copy(args.out / "summary.md", args.docs / "denoise_summary.md")
 
 
