@@ -129,44 +129,45 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
   writeFileAtomically(path, report.dump(2) + "\n");
 }
 
-// What a render leaves: the image, and with --denoise the denoised image and the first-hit albedo and normal the
-// denoiser read.
-struct RenderedImages {
-  Image image;
-  std::optional<Image> denoised;
-  std::optional<AuxiliaryImages> auxiliary;
-};
-
-// Writes the images, each atomically. When one fails after another was written, the message says which
-// files were written and which was not, so nothing is taken for done that is not.
-void writeImages(const RenderOptions& o, const RenderedImages& images) {
-  const Image& image = images.image;
-  std::vector<std::string> written;
-  const auto attempt = [&](const std::string& path, const std::function<void()>& write) {
+// The files of a render, each written atomically, in order. When one fails after another was written, the message
+// says which files were written and which was not, so nothing is taken for done that is not.
+class ImageWriter {
+ public:
+  void attempt(const std::string& path, const std::function<void()>& write) {
     if (path.empty()) return;
     try {
       write();
     } catch (const Error& error) {
-      std::string message = error.what();
-      message += written.empty() ? "; no file was written" : "; written before the failure:";
-      for (const std::string& done : written) message += " " + done;
-      throw Error(message);
+      throw Error(std::string(error.what()) + writtenSoFar(), error.exitCode());
     }
-    written.push_back(path);
+    written_.push_back(path);
     std::printf("wrote %s\n", path.c_str());
-  };
-  attempt(o.exrPath, [&] { writeExr(o.exrPath, image); });
-  attempt(o.pngPath, [&] { writePng(o.pngPath, image, o.exposure, parseToneMap(o.toneMap)); });
-  if (images.denoised) {
-    const std::string denoisedExr = besidePath(o.exrPath, "denoised"), denoisedPng = besidePath(o.pngPath, "denoised");
-    attempt(denoisedExr, [&] { writeExr(denoisedExr, *images.denoised); });
-    attempt(denoisedPng, [&] { writePng(denoisedPng, *images.denoised, o.exposure, parseToneMap(o.toneMap)); });
   }
-  if (images.auxiliary) {
-    const std::string albedo = besidePath(o.exrPath, "albedo"), normal = besidePath(o.exrPath, "normal");
-    attempt(albedo, [&] { writeExr(albedo, images.auxiliary->albedo); });
-    attempt(normal, [&] { writeExr(normal, images.auxiliary->normal); });
+  // "; no file was written" or "; written before the failure: A B".
+  std::string writtenSoFar() const {
+    std::string text = written_.empty() ? "; no file was written" : "; written before the failure:";
+    for (const std::string& done : written_) text += " " + done;
+    return text;
   }
+
+ private:
+  std::vector<std::string> written_;
+};
+
+void writeImages(const RenderOptions& o, const Image& image, ImageWriter& writer) {
+  writer.attempt(o.exrPath, [&] { writeExr(o.exrPath, image); });
+  writer.attempt(o.pngPath, [&] { writePng(o.pngPath, image, o.exposure, parseToneMap(o.toneMap)); });
+}
+
+// --denoise's files beside the raw ones: the denoised image, and the first-hit albedo and normal it was guided by.
+void writeDenoisedImages(const RenderOptions& o, const Image& denoised, const AuxiliaryImages& guides,
+                         ImageWriter& writer) {
+  const std::string exr = besidePath(o.exrPath, "denoised"), png = besidePath(o.pngPath, "denoised");
+  writer.attempt(exr, [&] { writeExr(exr, denoised); });
+  writer.attempt(png, [&] { writePng(png, denoised, o.exposure, parseToneMap(o.toneMap)); });
+  const std::string albedo = besidePath(o.exrPath, "albedo"), normal = besidePath(o.exrPath, "normal");
+  writer.attempt(albedo, [&] { writeExr(albedo, guides.albedo); });
+  writer.attempt(normal, [&] { writeExr(normal, guides.normal); });
 }
 
 // The render the options ask for; `o` by value: defaults are filled in.
@@ -275,16 +276,23 @@ void render(RenderOptions o) {
     const double steadySeconds = steadyClock.seconds();
     const double steadyCpuSeconds = steadyCpuClock.seconds();
 
-    RenderedImages images{readImage(gpu.device, renderer), std::nullopt, std::nullopt};
-    checkFinite(images.image, "raylab render");  // before any file: none is written when one would be refused
+    const Image image = readImage(gpu.device, renderer);
+    checkFinite(image, "raylab render");  // before any file: none is written when one would be refused
+    ImageWriter writer;
+    writeImages(o, image, writer);  // the raw image first: a denoiser that fails loses nothing
     double denoiseSeconds = 0.0;
     if (o.denoise) {
-      images.auxiliary = readAuxiliaryImages(gpu.device, renderer);
+      const AuxiliaryImages guides = readAuxiliaryImages(gpu.device, renderer);
       const Stopwatch denoiseClock;
-      images.denoised = denoise(images.image, &*images.auxiliary, quality);
+      Image denoised;
+      try {
+        denoised = denoise(image, &guides, quality);
+      } catch (const Error& error) {
+        throw Error(std::string(error.what()) + writer.writtenSoFar(), error.exitCode());
+      }
       denoiseSeconds = denoiseClock.seconds();
+      writeDenoisedImages(o, denoised, guides, writer);
     }
-    writeImages(o, images);
     if (!o.heatmapPath.empty()) {
       writeCostMap(o.heatmapPath, readCostMap(gpu.device, renderer), scene.name);
       std::printf("wrote %s\nwrote %s\n", o.heatmapPath.c_str(),
