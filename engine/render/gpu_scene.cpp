@@ -403,12 +403,17 @@ void destroyGpuScene(const Device& device, GpuScene& gpuScene) {
   gpuScene = {};
 }
 
-bool updateMaterials(const Device& device, GpuScene& gpuScene, std::span<const Material> materials) {
+MaterialUpdate updateMaterials(const Device& device, GpuScene& gpuScene, std::span<const Material> materials) {
   if (materials.size() != gpuScene.materialCount) throw Error("updateMaterials: the material count changed");
   const DeviceMaterials records = deviceMaterialsOf(materials);
-  const bool replaced = updateBrdfTables(device, gpuScene.brdfTables, gpuScene.measuredFiles, records.measuredFiles);
+  MaterialUpdate update;
+  update.tablesReplaced = updateBrdfTables(device, gpuScene.brdfTables, gpuScene.measuredFiles, records.measuredFiles);
   uploadBuffer<gpu::MaterialRecord>(device, gpuScene.materials, records.records);
-  return replaced;
+  update.emittersComplete = updateEmitters(gpuScene.sceneLights, materials);
+  if (!gpuScene.sceneLights.records.empty()) {
+    uploadBuffer<gpu::LightRecord>(device, gpuScene.lights, gpuScene.sceneLights.records);
+  }
+  return update;
 }
 
 void updateLights(const Device& device, GpuScene& gpuScene, std::span<const Light> lights) {

@@ -68,10 +68,17 @@ GpuScene uploadScene(const Device& device, const Scene& scene, const SceneUpload
 DeviceMaterials deviceMaterialsOf(std::span<const Material> materials);
 void destroyGpuScene(const Device& device, GpuScene& gpuScene);
 
-// Live edits (the viewer): same counts as uploaded, new values. updateMaterials returns true when the materials
-// now use other measured files: it replaced brdfTables, and every descriptor set holding the old one must be
-// written again (writeSceneDescriptors).
-bool updateMaterials(const Device& device, GpuScene& gpuScene, std::span<const Material> materials);
+// Live edits (the viewer, sweeps): same counts as uploaded, new values. updateMaterials also updates the emitters'
+// light records (their radiance and the selection by power).
+struct MaterialUpdate {
+  // The materials now use other measured files: brdfTables was replaced, and every descriptor set holding the old
+  // one must be written again (writeSceneDescriptors).
+  bool tablesReplaced = false;
+  // False when a material whose geometry had no light records now emits (updateEmitters): next event estimation
+  // cannot see it until the scene is uploaded again.
+  bool emittersComplete = true;
+};
+MaterialUpdate updateMaterials(const Device& device, GpuScene& gpuScene, std::span<const Material> materials);
 void updateLights(const Device& device, GpuScene& gpuScene, std::span<const Light> lights);
 
 // The scene's descriptor bindings, to merge into a kernel's set layout, and writing them into a set.

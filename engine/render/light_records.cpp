@@ -93,13 +93,15 @@ void addTriangleLights(const Scene& scene, const EmitterSurfaces& surfaces, std:
     record.area = 0.5f * glm::length(glm::cross(record.p1 - record.p0, record.p2 - record.p0));
     record.texturedInstance = gpu::kNoInstance;
     record.primitive = static_cast<std::uint32_t>(i / 3);
-    glm::dvec3 meanRadiance(record.radiance);
+    glm::dvec3 texelMean(1.0);
     if (texture != nullptr) {
       record.texturedInstance = surfaces.instanceRecords.at(instanceIndex);
-      meanRadiance *= meanEmissiveTexel(surfaces.textures, *texture, mesh, i);
+      texelMean = meanEmissiveTexel(surfaces.textures, *texture, mesh, i);
     }
     lights.records.push_back(record);
-    lights.powers.push_back(surfacePower(meanRadiance, record.area));
+    lights.powers.push_back(surfacePower(glm::dvec3(record.radiance) * texelMean, record.area));
+    lights.materials.push_back(instance.material);
+    lights.texelMeans.push_back(texelMean);
   }
 }
 
@@ -135,13 +137,15 @@ void addSphereLights(const Scene& scene, const EmitterSurfaces& surfaces, SceneL
     record.area = float(4.0 * kPi * double(sphere.radius) * sphere.radius);
     record.texturedInstance = gpu::kNoInstance;
     record.primitive = static_cast<std::uint32_t>(i);
-    glm::dvec3 meanRadiance(record.radiance);
+    glm::dvec3 texelMean(1.0);
     if (const gpu::TextureRef* texture = emissiveTexture(scene, material)) {
       record.texturedInstance = surfaces.sphereInstanceRecord;
-      meanRadiance *= meanEmissiveTexelOnSphere(surfaces.textures, *texture);
+      texelMean = meanEmissiveTexelOnSphere(surfaces.textures, *texture);
     }
     lights.records.push_back(record);
-    lights.powers.push_back(surfacePower(meanRadiance, record.area));
+    lights.powers.push_back(surfacePower(glm::dvec3(record.radiance) * texelMean, record.area));
+    lights.materials.push_back(sphere.material);
+    lights.texelMeans.push_back(texelMean);
   }
 }
 
@@ -194,6 +198,8 @@ SceneLights sceneLights(const Scene& scene, const EnvironmentTables& environment
   for (const Light& light : scene.lights) {
     lights.records.push_back(punctualRecord(light.record));
     lights.powers.push_back(0.0);  // not drawn by power (normalise)
+    lights.materials.push_back(kNoEmitterMaterial);
+    lights.texelMeans.push_back(glm::dvec3(1.0));
   }
   lights.punctualCount = static_cast<std::uint32_t>(lights.records.size());
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
@@ -202,6 +208,8 @@ SceneLights sceneLights(const Scene& scene, const EnvironmentTables& environment
     if (emits(scene, instance.material)) {
       first = static_cast<std::uint32_t>(lights.records.size());
       addTriangleLights(scene, surfaces, i, lights);
+    } else {
+      lights.materialsWithoutRecords.push_back(instance.material);
     }
     lights.instanceFirstLight.push_back(first);
   }
@@ -210,6 +218,8 @@ SceneLights sceneLights(const Scene& scene, const EnvironmentTables& environment
   if (anySphereEmits) {
     lights.sphereFirstLight = static_cast<std::uint32_t>(lights.records.size());
     addSphereLights(scene, surfaces, lights);
+  } else {
+    for (const Sphere& sphere : scene.spheres) lights.materialsWithoutRecords.push_back(sphere.material);
   }
   // The tables say whether there is an image to sample (the scene may be the upload's geometry, without pixels).
   if (environmentTables.fMean > 0.0f) {
@@ -219,6 +229,8 @@ SceneLights sceneLights(const Scene& scene, const EnvironmentTables& environment
     record.texturedInstance = gpu::kNoInstance;
     lights.records.push_back(record);
     lights.powers.push_back(environmentPower(scene.environment, environmentTables, lights.sceneRadius));
+    lights.materials.push_back(kNoEmitterMaterial);
+    lights.texelMeans.push_back(glm::dvec3(1.0));
   }
   normalise(lights);
   return lights;
@@ -235,6 +247,23 @@ std::uint32_t lightKindsOf(const Scene& scene) {
   }
   if (scene.environment.hasImage()) kinds |= 1u << gpu::kLightEnvironment;
   return kinds;
+}
+
+bool updateEmitters(SceneLights& sceneLights, std::span<const Material> materials) {
+  for (std::size_t i = 0; i < sceneLights.records.size(); ++i) {
+    const std::uint32_t material = sceneLights.materials[i];
+    if (material == kNoEmitterMaterial) continue;
+    const gpu::MaterialRecord& record = materials[material].record;
+    gpu::LightRecord& light = sceneLights.records[i];
+    light.radiance = record.emission * opacityOf(record);  // as addTriangleLights and addSphereLights make it
+    sceneLights.powers[i] = surfacePower(glm::dvec3(light.radiance) * sceneLights.texelMeans[i], light.area);
+  }
+  normalise(sceneLights);
+  for (const std::uint32_t material : sceneLights.materialsWithoutRecords) {
+    const glm::vec3 e = materials[material].record.emission;
+    if (e.r > 0.0f || e.g > 0.0f || e.b > 0.0f) return false;
+  }
+  return true;
 }
 
 void updatePunctualLights(SceneLights& sceneLights, std::span<const Light> lights) {

@@ -13,11 +13,21 @@
 
 namespace raylab {
 
+// SceneLights.materials of a record that is not an emitting surface (a punctual light, the environment).
+inline constexpr std::uint32_t kNoEmitterMaterial = 0xFFFFFFFFu;
+
 struct SceneLights {
   // Punctual lights first, in scene.lights order (the slides' integrator sums exactly these), then each emitting
   // mesh instance's triangles, the spheres, the environment.
   std::vector<gpu::LightRecord> records;
   std::vector<double> powers;  // per record, in watts of luminance: the distribution over non-delta lights
+  // Per record, for live edits of emission (updateEmitters): the material of an emitting triangle or sphere
+  // (gpu::kNoMaterial for the others), and the mean of its emissive texture over its surface (1 without one).
+  std::vector<std::uint32_t> materials;
+  std::vector<glm::dvec3> texelMeans;
+  // Materials of traced geometry that have no records (they did not emit at upload): one that emits later needs
+  // the records made anew (updateEmitters says so).
+  std::vector<std::uint32_t> materialsWithoutRecords;
   std::uint32_t punctualCount = 0;
   std::vector<std::uint32_t> instanceFirstLight;  // per scene.instances: the record of its triangle 0, or kNoLight
   std::uint32_t sphereFirstLight = gpu::kNoLight;  // record of sphere i is this + i, when any sphere emits
@@ -45,5 +55,10 @@ std::uint32_t lightKindsOf(const Scene& scene);
 
 // Live edits (the viewer): the punctual lights' records from `lights`.
 void updatePunctualLights(SceneLights& sceneLights, std::span<const Light> lights);
+
+// Live edits of materials (the viewer, sweeps): each emitter's radiance (emission times opacity) and power from
+// `materials`, and the selection distribution again. False when a material without records now emits: its
+// geometry has no records to sample, and the scene must be uploaded again for next event estimation to see it.
+bool updateEmitters(SceneLights& sceneLights, std::span<const Material> materials);
 
 }  // namespace raylab

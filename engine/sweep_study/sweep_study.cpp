@@ -278,7 +278,7 @@ Image renderSweepCell(SweepCellRenderer& cells, const SweepStudy& study, std::ui
   const Device& device = cells.gpu.device;
   Renderer& renderer = cells.renderer;
   const std::uint32_t spp = study.options.spp;
-  if (updateMaterials(device, cells.gpuScene, cellMaterials(study.sweep, cell))) {
+  if (updateMaterials(device, cells.gpuScene, cellMaterials(study.sweep, cell)).tablesReplaced) {
     writeSceneDescriptors(device, renderer.trace.descriptors.set, cells.gpuScene);
   }
   resetAccumulation(device, renderer);

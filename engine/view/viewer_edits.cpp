@@ -56,8 +56,14 @@ void saveScreenshot(Viewer& v, const std::string& exrPath, const std::string& pn
 void uploadSceneEdits(Viewer& v, bool materials, bool lights) {
   if (!materials && !lights) return;
   waitForFrames(v);  // on a CPU device the buffers are host memory that running frames read
-  if (materials && updateMaterials(v.device, v.gpuScene, v.scene.materials)) {
-    writeSceneDescriptors(v.device, v.renderer.trace.descriptors.set, v.gpuScene);
+  if (materials) {
+    const MaterialUpdate update = updateMaterials(v.device, v.gpuScene, v.scene.materials);
+    if (update.tablesReplaced) writeSceneDescriptors(v.device, v.renderer.trace.descriptors.set, v.gpuScene);
+    // Emission turned on where the scene had none: the surface shows its emission, but no light record samples it.
+    if (!update.emittersComplete) {
+      v.status.message = "a material without light records now emits: lights it adds are seen but not sampled "
+                         "(next event estimation) until the scene is loaded again";
+    }
   }
   if (lights) updateLights(v.device, v.gpuScene, v.scene.lights);
   v.needed = neededKernel(v);

@@ -191,5 +191,38 @@ TEST(EmissiveTextureLights, BrokenUvsGiveFinitePowers) {
   for (double power : lights.powers) EXPECT_TRUE(std::isfinite(power) && power >= 0.0) << power;
 }
 
+// Live edits of emission (the viewer's panel, a sweep): the records updateEmitters leaves are the ones a fresh
+// upload of the edited scene makes, radiance, power and selection alike; a material that starts emitting where
+// there are no records is reported, and the one edited back to black is never picked.
+TEST(EmissiveTextureLights, AnEmissionEditUpdatesTheRecordsAsAFreshUploadMakesThem) {
+  Mesh mesh = texturedQuad(1.0f);
+  Texture t = solidTexture(kSixTexels, 3, 2);
+  Scene scene = emitterScene(mesh, t, textureRef(0), glm::vec3(3.0f));
+  scene.instances.push_back({0, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 2.0f)), 0});
+  scene.materials.push_back({"dark", lambertMaterial(glm::vec3(0.5f))});
+  scene.instances.push_back({0, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 4.0f)), 1});
+  EmitterSurfaces surfaces;
+  surfaces.instanceRecords = {0, 1, 2};
+  surfaces.textures = scene.textures;
+  SceneLights lights = sceneLights(scene, EnvironmentTables{}, surfaces);
+  ASSERT_EQ(lights.records.size(), 4u) << "two emitting quads";
+
+  scene.materials[0].record.emission = glm::vec3(0.5f, 7.0f, 2.0f);
+  EXPECT_TRUE(updateEmitters(lights, scene.materials));
+  const SceneLights fresh = sceneLights(scene, EnvironmentTables{}, surfaces);
+  ASSERT_EQ(fresh.records.size(), lights.records.size());
+  for (std::size_t i = 0; i < fresh.records.size(); ++i) {
+    EXPECT_EQ(lights.records[i].radiance, fresh.records[i].radiance) << "record " << i;
+    EXPECT_EQ(lights.records[i].pmf, fresh.records[i].pmf) << "record " << i;
+    EXPECT_EQ(lights.records[i].cdf, fresh.records[i].cdf) << "record " << i;
+    EXPECT_EQ(lights.powers[i], fresh.powers[i]) << "record " << i;
+  }
+  scene.materials[0].record.emission = glm::vec3(0.0f);
+  EXPECT_TRUE(updateEmitters(lights, scene.materials));
+  for (const gpu::LightRecord& record : lights.records) EXPECT_EQ(record.pmf, 0.0f) << "a black light is never picked";
+  scene.materials[1].record.emission = glm::vec3(1.0f);
+  EXPECT_FALSE(updateEmitters(lights, scene.materials)) << "the dark quad has no records to sample";
+}
+
 }  // namespace
 }  // namespace raylab::test
