@@ -15,13 +15,6 @@ enum class DenoiseQuality { kFast, kBalanced, kHigh };
 // The quality named `name`; throws Error(kExitUsage) naming `where` and the values otherwise.
 DenoiseQuality parseDenoiseQuality(std::string_view name, const std::string& where);
 
-// The first-hit albedo and normal images of a render (readAuxiliaryImages), noise-free enough that the denoiser
-// uses them as they are (OIDN's cleanAux).
-struct AuxiliaryImages {
-  Image albedo;
-  Image normal;
-};
-
 // The denoised colour, the same size, alpha 1. `color` is HDR radiance; `aux`, when given, has images of the same
 // size. Throws Error(kExitUsage) when Open Image Denoise cannot be loaded, saying how to install it, and Error for a
 // size mismatch, a non-finite input or a failure of the library (its message). Thread-safe: calls take turns on one

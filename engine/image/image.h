@@ -35,6 +35,13 @@ struct Image {
   }
 };
 
+// The first-hit albedo and normal images of a render (render/renderer.h, readAuxiliaryImages), noise-free enough that
+// a denoiser uses them as they are (denoise/denoise.h).
+struct AuxiliaryImages {
+  Image albedo;
+  Image normal;
+};
+
 // The exposure a tone-mapped image may be given, in stops either way (the command line, the viewer, Python).
 inline constexpr float kMaxExposureStops = 20.0f;
 

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <optional>
 
-#include "denoise/denoise.h"
 #include "image/heatmap.h"
 #include "image/image.h"
 #include "render/backend.h"

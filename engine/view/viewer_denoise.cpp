@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "denoise/denoise.h"
 #include "shared/features.h"
 #include "view/viewer_state.h"
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "denoise/denoise.h"
 #include "shared/features.h"
 #include "util/error.h"
 #include "vk/commands.h"
