@@ -14,6 +14,7 @@
 #extension GL_KHR_shader_subgroup_basic : require
 
 #include "shared/frame.h"
+#include "shared/guiding.h"
 #include "shared/wavefront.h"
 #include "kernel/scene_bindings.glsl"
 
@@ -31,6 +32,7 @@ layout(set = 0, binding = kBindingPathResults, scalar) buffer PathResults { vec4
 layout(set = 0, binding = kBindingPathQueues, scalar) buffer PathQueues { uint queues[]; };
 layout(set = 0, binding = kBindingWaveControl, scalar) buffer Control { WaveControl control; };
 layout(set = 0, binding = kBindingPathAovs, scalar) buffer PathAovs { vec4 pathAovs[]; };
+layout(set = 0, binding = kBindingGuideTrails, scalar) buffer GuideTrails { GuideRecord trails[]; };
 
 #include "kernel/query_segment.glsl"
 #include "kernel/raygen.glsl"
@@ -66,6 +68,18 @@ void segment(uint i, inout uvec3 rays, inout uint laneSegments) {
     p.path.segments += 1u;
     traceSegment(p);
     laneSegments += 1u;
+    // The guide's training vertices wait in the slot's trail until the path ends (kernel/guide_training.glsl).
+    if (guideTrains()) {
+      if (p.guideRecorded && !p.done && p.path.guideVertices < kGuideTrailLength) {
+        trails[slot * kGuideTrailLength + p.path.guideVertices] = guideRecordFor(p.guideRecord, p.path.direction);
+        p.path.guideVertices += 1u;
+      }
+      if (p.done) {
+        for (uint k = 0u; k < p.path.guideVertices; ++k) {
+          guideSplat(trails[slot * kGuideTrailLength + k], guideLuminance(p.path.radiance));
+        }
+      }
+    }
     // The first segment met the first hit: its auxiliary values wait beside the path's result.
     if (first && featureEnabled(kFeatureAovs)) {
       pathAovs[2u * slot] = vec4(p.aovAlbedo, 0.0);

@@ -62,7 +62,8 @@ std::string describe(const KernelFeatures& features) {
                               {gpu::kFeatureLayerTextures, "layer textures"},
                               {gpu::kFeatureAlpha, "alpha"},
                               {gpu::kFeatureEnvironment, "environment image"},
-                              {gpu::kFeatureAovs, "denoiser albedo and normal"}};
+                              {gpu::kFeatureAovs, "denoiser albedo and normal"},
+                              {gpu::kFeatureGuiding, "path guiding"}};
   std::string list;
   for (const Named& named : kNames) {
     if (features.features & named.bit) list += (list.empty() ? "" : ", ") + std::string(named.name);

@@ -33,4 +33,8 @@ BackendChoice parseBackendChoice(std::string_view value, const std::string& wher
   return BackendChoice(choiceIndex(kBackendOption, value, where));
 }
 
+Guiding parseGuiding(std::string_view value, const std::string& where) {
+  return Guiding(choiceIndex(kGuidingOption, value, where));
+}
+
 }  // namespace raylab

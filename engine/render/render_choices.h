@@ -9,6 +9,7 @@
 
 #include "render/backend.h"
 #include "render/kernel_features.h"
+#include "render/path_guide.h"
 #include "render/wavefront.h"
 
 namespace raylab {
@@ -18,5 +19,6 @@ std::uint32_t parseSampling(std::string_view value, const std::string& where);  
 bool parseSchlickFresnel(std::string_view value, const std::string& where);
 Schedule parseSchedule(std::string_view value, const std::string& where);
 BackendChoice parseBackendChoice(std::string_view value, const std::string& where);
+Guiding parseGuiding(std::string_view value, const std::string& where);
 
 }  // namespace raylab

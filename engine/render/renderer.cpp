@@ -48,6 +48,7 @@ std::vector<DescriptorBinding> rendererBindings(Backend backend, bool heatmap) {
   bindings.push_back({gpu::kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   bindings.push_back({gpu::kBindingRayStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   bindings.push_back({gpu::kBindingAovs, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+  for (const DescriptorBinding& binding : pathGuideBindings(backend == Backend::kQuery)) bindings.push_back(binding);
   if (backend == Backend::kQuery) {
     for (const DescriptorBinding& binding : wavefrontBindings()) bindings.push_back(binding);
   }
@@ -170,6 +171,14 @@ void fillRenderer(const Device& device, const GpuScene& gpuScene, const Scene& s
 
   renderer.kernel = settings.kernel.value_or(featuresOf(scene));
   if (settings.aovs) renderer.kernel.features |= gpu::kFeatureAovs;
+  if (settings.guiding != Guiding::kOff) {
+    if (renderer.kernel.integrator != gpu::kIntegratorPath) {
+      throw Error("--guiding guides the path integrator's continuations: use it with --integrator path (this render "
+                  "runs the slides' integrator, which samples no continuations)",
+                  kExitUsage);
+    }
+    renderer.kernel.features |= gpu::kFeatureGuiding;
+  }
   checkHeatmap(device, settings);
   // The heat map clocks each pixel's lane, so it keeps every pixel's samples in the megakernel.
   renderer.schedule = settings.heatmap ? Schedule::kMegakernel : settings.schedule;
@@ -186,6 +195,8 @@ void fillRenderer(const Device& device, const GpuScene& gpuScene, const Scene& s
                                 MemoryUse::kHost, "ray stats");
 
   writeSceneDescriptors(device, renderer.trace.descriptors.set, gpuScene);
+  createPathGuide(device, renderer.guide, scene, settings.guiding, std::uint64_t(settings.width) * settings.height,
+                  settings.backend == Backend::kQuery ? kWaveCapacity : 0, renderer.trace.descriptors.set);
   writeStorageBuffer(device, renderer.trace.descriptors.set, gpu::kBindingRayStats, renderer.stats.handle);
   swapRenderPipelines(device, renderer, createRenderPipelines(device, renderer, renderer.kernel), renderer.kernel);
   renderer.clocksPixels = settings.heatmap;  // resizeRenderer sizes the heat map with the accumulation
@@ -277,6 +288,7 @@ void destroyRenderer(const Device& device, Renderer& renderer) {
   destroyBuffer(device, renderer.stats);
   destroyBuffer(device, renderer.accumulation);
   destroyBuffer(device, renderer.aovs);
+  destroyPathGuide(device, renderer.guide);
   destroyWavefront(device, renderer.wavefront);
   destroyTraceKernel(device, renderer.trace);
   renderer = {};
@@ -290,6 +302,7 @@ void resetAccumulation(const Device& device, Renderer& renderer) {
     computeBarrier(cmd);
   });
   renderer.samplesDone = 0;
+  resetPathGuide(renderer.guide);
 }
 
 namespace {
@@ -327,9 +340,14 @@ void renderSamples(const Device& device, Renderer& renderer, std::uint32_t sampl
   const std::uint64_t perSubmission =
       std::max<std::uint64_t>(1, (std::uint64_t(1) << 31) / std::max<std::uint64_t>(1, maxRaysPerSample(renderer.params)));
   while (samples > 0) {
-    const auto batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(samples, perSubmission));
+    auto batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(samples, perSubmission));
+    const bool guideUpdates = guideWantsUpdate(renderer.guide, renderer.samplesDone);
+    if (guideUpdates) batch = std::min(batch, renderer.guide.nextUpdate - renderer.samplesDone);
     submitSamples(device, renderer, batch);
     samples -= batch;
+    if (guideUpdates && renderer.samplesDone >= renderer.guide.nextUpdate) {
+      updatePathGuide(renderer.guide, renderer.samplesDone);
+    }
   }
 }
 

@@ -10,6 +10,7 @@
 #include "image/image.h"
 #include "render/backend.h"
 #include "render/kernel_features.h"
+#include "render/path_guide.h"
 #include "render/trace_kernel.h"
 #include "render/wavefront.h"
 #include "scene/camera_frame.h"
@@ -35,6 +36,7 @@ struct RenderSettings {
   Schedule schedule = Schedule::kAutomatic;  // the wavefront for path kernels on ray queries (usesWavefront)
   bool heatmap = false;  // clock every pixel (render_heatmap.comp: the megakernel on ray queries, needs shaderClock)
   bool aovs = false;     // also accumulate the first-hit albedo and normal images for the denoiser (kFeatureAovs)
+  Guiding guiding = Guiding::kOff;  // path guiding (kFeatureGuiding, render/path_guide.h): the path integrator only
 };
 
 struct RayCounts {
@@ -64,6 +66,7 @@ struct Renderer {
   std::uint32_t allocatedHeight = 0;
   Buffer aovs;          // 2 vec4 per pixel with kFeatureAovs: first-hit albedo and normal sums; else one placeholder
   Buffer stats;         // RayStats per submission, host-visible
+  PathGuide guide;      // with RenderSettings.guiding; reset with the accumulation
   KernelFeatures kernel;  // what the pipeline was specialised for
   gpu::FrameParams params{};
   std::uint32_t samplesDone = 0;
@@ -81,7 +84,8 @@ Renderer createRenderer(const Device& device, const GpuScene& gpuScene, const Sc
                         const RenderSettings& settings);
 void destroyRenderer(const Device& device, Renderer& renderer);
 
-// Adds `samples` samples to every pixel (in as few submissions as the 32-bit ray counters allow).
+// Adds `samples` samples to every pixel (in as few submissions as the 32-bit ray counters allow, and while a path
+// guide trains, ending one at each of its updates).
 void renderSamples(const Device& device, Renderer& renderer, std::uint32_t samples);
 
 // Records `sampleCount` samples (RNG sample indices sampleIndex, sampleIndex + 1, ...) of every pixel of the

@@ -59,6 +59,13 @@ inline constexpr ChoiceOption kBackendOption{
     "query: compute kernels with ray queries; pipeline: a ray-tracing pipeline (raygen, closest-hit, miss and "
     "intersection programs); auto: ray queries where the device has them"};
 
+inline constexpr std::array<std::string_view, 3> kGuidingValues = {"off", "on", "auto"};
+inline constexpr ChoiceOption kGuidingOption{
+    "guiding", kGuidingValues, "off",
+    "path integrator: path guiding, a radiance cache learned over the first 64 spp that draws half the continuations "
+    "of diffuse surfaces towards where light came from; on: in every cell of the scene's grid with enough data; "
+    "auto: only in cells where it measured less variance than BSDF sampling; the image stays unbiased"};
+
 inline constexpr std::array<std::string_view, 3> kDenoiseQualityValues = {"fast", "balanced", "high"};
 // Balanced by default: at 1280x720 with albedo and normal on 2 cores, 0.85 s against high's 2.0 s, for errors
 // within 0-20% of high's (docs/performance.md, "Denoising").
@@ -74,9 +81,9 @@ inline constexpr CountOption kMaxDepthOption{"max-depth", 0, 64, 8,
 // sums of more would stop changing.
 inline constexpr std::uint32_t kMaxSamplesPerPixel = 1u << 20;
 
-inline constexpr std::array<const ChoiceOption*, 5> kChoiceOptions = {&kIntegratorOption, &kSamplingOption,
+inline constexpr std::array<const ChoiceOption*, 6> kChoiceOptions = {&kIntegratorOption, &kSamplingOption,
                                                                       &kFresnelOption, &kScheduleOption,
-                                                                      &kBackendOption};
+                                                                      &kBackendOption, &kGuidingOption};
 
 // The index of `value` among the option's values; throws Error (kExitUsage) naming `where`, the option and its
 // values otherwise.

@@ -41,7 +41,7 @@ class PythonRenderer {
   PythonRenderer(const Scene& scene, std::uint32_t width, std::uint32_t height, const std::string& integrator,
                  const std::string& sampling, const std::string& fresnel, bool allFeatures, const std::string& backend,
                  const std::string& schedule, std::uint32_t maxDepth, std::uint32_t seed, bool jitter, bool aovs,
-                 std::optional<std::uint32_t> device)
+                 const std::string& guiding, std::optional<std::uint32_t> device)
       : scene_(scene) {
     const std::string where = "raylab.Renderer";
     checkCount(kMaxDepthOption, maxDepth, where);
@@ -51,6 +51,7 @@ class PythonRenderer {
     kernel.schlickFresnel = parseSchlickFresnel(fresnel, where);
     const Schedule scheduleChoice = parseSchedule(schedule, where);
     const BackendChoice backendChoice = parseBackendChoice(backend, where);
+    const Guiding guidingChoice = parseGuiding(guiding, where);
     kernel.allFeatures = allFeatures;
     RenderSettings settings;
     settings.width = width;
@@ -61,6 +62,7 @@ class PythonRenderer {
     settings.aovs = aovs;
     settings.kernel = kernelFor(scene_, kernel);
     settings.schedule = scheduleChoice;
+    settings.guiding = guidingChoice;
 
     context_ = deviceContext(device);
     const Device& d = context_->session.device;
@@ -200,6 +202,17 @@ class PythonRenderer {
     d["integrator"] = std::string(integratorName(renderer_.kernel.integrator));
     d["kernel"] = describe(renderer_.kernel);
     d["schedule"] = renderer_.wavefrontActive ? "wavefront" : "megakernel";
+    d["guiding"] = std::string(kGuidingValues[std::size_t(renderer_.guide.mode)]);
+    if (renderer_.guide.mode != Guiding::kOff) {
+      py::dict guide;
+      guide["updates"] = renderer_.guide.summary.updates;
+      guide["cells"] = renderer_.guide.summary.cellsGuided;
+      guide["moment_ratio"] = renderer_.guide.summary.decided ? py::object(py::float_(renderer_.guide.summary.momentRatio))
+                                                              : py::object(py::none());
+      guide["guiding"] = renderer_.guide.summary.guiding;
+      guide["text"] = describeGuide(renderer_.guide);
+      d["guide"] = guide;
+    }
     d["acceleration_s"] = gpuScene_.accelerationBuildSeconds;
     d["first_sample_s"] = firstSampleSeconds_.value_or(0.0);
     d["steady_s"] = renderSeconds_;
@@ -238,7 +251,7 @@ void bindRenderer(py::module_& m) {
                              "made to the Scene afterwards need a new Renderer.")
       .def(py::init<const Scene&, std::uint32_t, std::uint32_t, const std::string&, const std::string&,
                     const std::string&, bool, const std::string&, const std::string&, std::uint32_t, std::uint32_t,
-                    bool, bool, std::optional<std::uint32_t>>(),
+                    bool, bool, const std::string&, std::optional<std::uint32_t>>(),
            py::arg("scene"), py::kw_only(), py::arg("width") = 640, py::arg("height") = 360,
            py::arg("integrator") = std::string(kIntegratorOption.defaultValue),
            py::arg("sampling") = std::string(kSamplingOption.defaultValue),
@@ -246,7 +259,7 @@ void bindRenderer(py::module_& m) {
            py::arg("backend") = std::string(kBackendOption.defaultValue),
            py::arg("schedule") = std::string(kScheduleOption.defaultValue),
            py::arg("max_depth") = kMaxDepthOption.defaultValue, py::arg("seed") = 0, py::arg("jitter") = true, py::arg("aovs") = false,
-           py::arg("device") = py::none())
+           py::arg("guiding") = std::string(kGuidingOption.defaultValue), py::arg("device") = py::none())
       .def("render", &PythonRenderer::render, py::arg("spp") = 16, py::arg("seed") = py::none(),
            py::arg("denoise") = false,
            py::arg("denoise_quality") = std::string(kDenoiseQualityOption.defaultValue),
@@ -265,7 +278,7 @@ void bindRenderer(py::module_& m) {
       .def_property_readonly("samples", &PythonRenderer::samples, "Samples per pixel accumulated so far.")
       .def("report", &PythonRenderer::report,
            "What `raylab render --report` records: size, samples, device, backend, integrator, kernel, schedule, "
-           "times (acceleration, first sample, steady) and ray counts.");
+           "guiding (and with it the guide's cells), times (acceleration, first sample, steady) and ray counts.");
 }
 
 }  // namespace raylab::python

@@ -8,6 +8,7 @@
 
 #include "brdf/bsdf.glsl"
 #include "common/ray_offset.glsl"
+#include "kernel/guiding.glsl"
 #include "kernel/hit_common.glsl"
 #include "kernel/light_sampling.glsl"
 #include "kernel/mis.glsl"
@@ -36,10 +37,10 @@ vec3 directLighting(vec3 position, vec3 ng, ShadingFrame frame, vec3 woLocal, Ma
 
 // The path integrator's estimate of the lights that are not delta lights: one drawn from the light-selection
 // distribution (selectLight), one direction towards it, and what it brings through the (1 - delta) f_r part of
-// the BSDF if nothing blocks it, weighted against BSDF sampling by misWeight. Draws its random numbers whatever
+// the BSDF if nothing blocks it, weighted against BSDF sampling (the guide's mixture at a guided vertex) by misWeight. Draws its random numbers whatever
 // happens next, so that the vertex's later dimensions mean the same in every sample of a scene.
 vec3 sampleOneLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material, float delta,
-                    inout Payload p) {
+                    GuideVertex guideHere, inout Payload p) {
   const vec4 u = rngNext4(p.path.rng);
   const LightChoice choice = selectLight(u.x);
   if (!(choice.pmf > 0.0)) return vec3(0.0);
@@ -49,7 +50,8 @@ vec3 sampleOneLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, Materi
   if (!seesSameSide(light.wi, ng, wiLocal.z)) return vec3(0.0);
   const float pdf = choice.pmf * light.pdf;
   const float weight =
-      misWeight(kSamplingLight, pdf, light.delta ? 0.0 : (1.0 - delta) * bsdfPdf(material, wiLocal, woLocal));
+      misWeight(kSamplingLight, pdf,
+                light.delta ? 0.0 : (1.0 - delta) * continuationPdf(guideHere, material, wiLocal, woLocal, light.wi));
   if (!(weight > 0.0)) return vec3(0.0);
   const vec3 f = (1.0 - delta) * bsdfEval(material, wiLocal, woLocal);
   const vec3 contribution = f * light.radiance * (abs(wiLocal.z) / pdf);

@@ -17,6 +17,7 @@
 
 #include "kernel/aov.glsl"
 #include "kernel/emission.glsl"
+#include "kernel/guiding.glsl"
 #include "kernel/hit_common.glsl"
 #include "kernel/next_event.glsl"
 
@@ -80,6 +81,7 @@ void closestHitPath(Hit hit, inout Payload p) {
   const vec3 wo = -p.path.direction;
   p.done = true;
   p.split = false;
+  p.guideRecorded = false;
   rngStartVertex(p.path.rng, p.path.depth);
 
   // Emission from the front face only, the side the counter-clockwise winding's normal points to.
@@ -106,8 +108,9 @@ void closestHitPath(Hit hit, inout Payload p) {
   if (delta < 1.0 && params.punctualLightCount > 0u) {
     p.path.radiance += p.path.throughput * (1.0 - delta) * directLighting(s.position, ng, frame, woLocal, material, p);
   }
+  const GuideVertex guideHere = guideVertex(s.position, flags);
   if (kSampling != kSamplingBsdf && delta < 1.0 && params.lightCount > params.punctualLightCount) {
-    p.path.radiance += p.path.throughput * sampleOneLight(s, ng, frame, woLocal, material, delta, p);
+    p.path.radiance += p.path.throughput * sampleOneLight(s, ng, frame, woLocal, material, delta, guideHere, p);
   }
   p.path.lastPosition = s.position;
 
@@ -122,7 +125,15 @@ void closestHitPath(Hit hit, inout Payload p) {
     if (dot(mirror, viewerSide) > 0.0) continueOrEnd(p, offsetRayOrigin(s.position, viewerSide), mirror, p.path.throughput);
     return;
   }
-  const BsdfSample b = bsdfSample(material, woLocal, u.xyz);
+  // In a guided cell (kernel/guiding.glsl) the sample comes from the mixture of guide and BSDF, b.pdf the mixture's.
+  GuidedSample g = GuidedSample(noSample(), 0.0);
+  if (guideHere.share > 0.0) {
+    g = guidedSample(guideHere, material, frame, woLocal, u.xyz, rngNext4(p.path.rng).xyz);
+  } else {
+    g.b = bsdfSample(material, woLocal, u.xyz);
+    g.pdfBsdf = g.b.pdf;
+  }
+  const BsdfSample b = g.b;
   if (!(b.pdf > 0.0)) return;
   const vec3 wi = toWorld(frame, b.wi);
   // A shading-normal sample on the other side of the geometric surface than its lobe meant cannot go there.
@@ -130,6 +141,11 @@ void closestHitPath(Hit hit, inout Payload p) {
   p.path.lastSpecular = 0u;
   p.path.lastPdf = (1.0 - delta) * b.pdf;
   if (isTwoSided(flags)) crossMedium(p, s, material, wo, wi);
+  const vec3 fCos = (1.0 - delta) * b.f * abs(b.wi.z);
+  if (guideTrains() && guideHere.cell != kNoGuideCell) {
+    p.guideRecorded = true;
+    p.guideRecord = guideRecordOf(guideHere, p.path.radiance, p.path.throughput, fCos, p.path.lastPdf, (1.0 - delta) * g.pdfBsdf);
+  }
   continueOrEnd(p, offsetRayOrigin(s.position, leavingSide(ng, wi)), wi, p.path.throughput * b.f * (abs(b.wi.z) / b.pdf));
 }
 

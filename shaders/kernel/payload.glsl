@@ -3,6 +3,7 @@
 #define RAYLAB_KERNEL_PAYLOAD_GLSL
 
 #include "common/rng.glsl"
+#include "shared/guiding.h"
 
 // The far end of rays that should go on forever (primary rays, directional-light shadow rays).
 const float kRayTMax = 3.0e38;
@@ -20,6 +21,10 @@ struct Payload {
   // What the camera ray's first hit showed the denoiser (kernel/aov.glsl), set there with kFeatureAovs.
   vec3 aovAlbedo;
   vec3 aovNormal;
+  // With kFeatureGuiding while the guide trains: the continuation closestHit just drew, for the raygen to keep
+  // (kernel/guide_training.glsl); its bin follows from path.direction.
+  bool guideRecorded;
+  GuideRecord guideRecord;
 };
 
 // What the traversal knows about the committed hit (OptiX: attributes and built-ins).

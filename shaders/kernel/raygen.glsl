@@ -6,6 +6,7 @@
 #ifndef RAYLAB_KERNEL_RAYGEN_GLSL
 #define RAYLAB_KERNEL_RAYGEN_GLSL
 
+#include "kernel/guide_training.glsl"
 #include "kernel/payload.glsl"
 
 // Traces the segment (p.path.origin, p.path.direction): closestHit or miss add what they see to the payload and set up
@@ -77,6 +78,8 @@ Payload startSample(uvec2 pixel, uint sampleIndex) {
   p.path.lastSpecular = 1u;
   p.aovAlbedo = vec3(0.0);
   p.aovNormal = vec3(0.0);
+  p.guideRecorded = false;
+  p.path.guideVertices = 0u;
   return p;
 }
 
@@ -136,11 +139,16 @@ SampleValue traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
   Pending pending[kMaxPending];
   uint pendingCount = 0u;
   uint segments = 0u;
+  GuideRecord trail[kGuideTrailLength];  // the vertices that train the guide (kernel/guide_training.glsl)
 
   // closestHit bounds every path by maxDepth, and each split happens at a bounce: the loop ends.
   while (true) {
     segments += 1u;
     traceSegment(p);
+    if (guideTrains() && p.guideRecorded && !p.done && p.path.guideVertices < kGuideTrailLength) {
+      trail[p.path.guideVertices] = guideRecordFor(p.guideRecord, p.path.direction);
+      p.path.guideVertices += 1u;
+    }
     // Only the slides' integrator splits paths (the path integrator chooses one glass branch at random): in a
     // path kernel the queue is dead code and the driver drops it with its registers.
     if (kIntegrator == kIntegratorSlides && p.split) keepSplit(p, pending, pendingCount);
@@ -153,6 +161,9 @@ SampleValue traceSample(uvec2 pixel, uint sampleIndex, inout uvec3 rays) {
       p.path.depth = pending[pendingCount].depth;
       p.done = false;
     }
+  }
+  if (guideTrains()) {
+    for (uint k = 0u; k < p.path.guideVertices; ++k) guideSplat(trail[k], guideLuminance(p.path.radiance));
   }
   lanesJoin(segments);
   rays += uvec3(1u, p.path.shadowRays, segments - 1u);

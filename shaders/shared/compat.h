@@ -14,6 +14,7 @@
   using glm::vec3;           \
   using glm::vec4;            \
   using glm::uvec2;          \
+  using glm::uvec3;          \
   using glm::uvec4;
 #define RL_NAMESPACE_END }
 #define RL_CONST inline constexpr

@@ -23,6 +23,7 @@ RL_CONST uint kFeatureAlpha = 128;           // alpha-tested or stochastically t
 RL_CONST uint kFeatureEnvironment = 64;      // an environment image (else the background is uniform)
 RL_CONST uint kFeatureLayerTextures = 256;   // textures of glTF's layered extensions (MaterialTextures.layerModel)
 RL_CONST uint kFeatureAovs = 512;            // first-hit albedo and normal images for the denoiser (kernel/aov.glsl)
+RL_CONST uint kFeatureGuiding = 1024;        // path guiding in the path integrator (kernel/guiding.glsl)
 // Bits 16-31: the models' own features (a model's `feature:` lines, numbered by the registry in
 // generated/bsdf_models.glsl and ModelInfo::features), such as openpbr's coat.
 RL_CONST uint kFirstModelFeatureBit = 16;

@@ -32,7 +32,7 @@ struct PathState {
   // The absorption coefficient of the medium the next segment travels in (a transmissive material's volume, entered
   // through its surface; zero outside), by which the path integrator attenuates it: Beer-Lambert, exp(-sigma t).
   vec3 absorption;
-  uint pad0;
+  uint guideVertices;  // the path's vertices kept for training the guide (kernel/guide_training.glsl)
 };
 RL_CHECK_SIZE(PathState, 112);
 

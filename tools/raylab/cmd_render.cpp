@@ -54,6 +54,7 @@ struct RenderOptions {
   std::string sampling;
   std::string backend;
   std::string schedule;
+  std::string guiding;
   std::optional<std::uint32_t> device;
   std::vector<std::string> materials;  // --material MATERIAL=MODEL[:k=v,...]
 };
@@ -96,6 +97,16 @@ void writeReport(const std::string& path, const RenderOptions& o, const Scene& s
       {"kernel", describe(renderer.kernel)},
       {"backend", backendName(renderer.trace.backend)},
       {"schedule", renderer.wavefrontActive ? "wavefront" : "megakernel"},
+      {"guiding", o.guiding},
+      {"guide", renderer.guide.mode == Guiding::kOff
+                    ? nlohmann::ordered_json(nullptr)
+                    : nlohmann::ordered_json{
+                          {"updates", renderer.guide.summary.updates},
+                          {"cells", renderer.guide.summary.cellsGuided},
+                          {"moment_ratio", renderer.guide.summary.decided
+                                               ? nlohmann::ordered_json(renderer.guide.summary.momentRatio)
+                                               : nlohmann::ordered_json(nullptr)},
+                          {"guiding", renderer.guide.summary.guiding}}},
       {"device", device.report.name},
       {"driver", device.report.driver},
       {"triangles", gpuScene.triangleCount},
@@ -244,6 +255,7 @@ void render(RenderOptions o) {
   GpuSession gpu(o.device);
   o.settings.backend = chooseBackend(gpu.device, parseBackendChoice(o.backend, "raylab render: --backend"));
   o.settings.schedule = parseSchedule(o.schedule, "raylab render: --schedule");
+  o.settings.guiding = parseGuiding(o.guiding, "raylab render: --guiding");
   checkImageSize(gpu.device, o.settings.width, o.settings.height);
   GpuScene gpuScene = uploadScene(gpu.device, scene);
   Renderer renderer;
@@ -320,6 +332,7 @@ void render(RenderOptions o) {
                     100.0 * laneUtilisation(renderer.rays, gpu.device.subgroupSize), gpu.device.subgroupSize);
       }
     }
+    if (renderer.guide.mode != Guiding::kOff) std::printf("%s\n", describeGuide(renderer.guide).c_str());
     if (o.stats || renderer.droppedSamples > 0) {
       std::printf("dropped samples (NaN or Inf): %llu\n", static_cast<unsigned long long>(renderer.droppedSamples));
     }
@@ -395,6 +408,7 @@ void addRenderCommand(CLI::App& raylab) {
   addChoiceOption(command, kFresnelOption, o->fresnel);
   addBackendOption(command, o->backend);
   addChoiceOption(command, kScheduleOption, o->schedule);
+  addChoiceOption(command, kGuidingOption, o->guiding);
   addDeviceOption(command, o->device);
 }
 

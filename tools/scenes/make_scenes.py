@@ -584,6 +584,43 @@ def cornell_box_area():
     return g
 
 
+def glossy_room():
+    """A room lit only through a glossy ceiling: a lamp in a tray on the floor shines upwards, its walls hide it
+    from the rest of the room, and the brushed-aluminium ceiling (GGX alpha 0.08) reflects its light down. Every
+    surface the camera sees is lit by that reflection, a path that neither light sampling from the floor (the tray
+    blocks it) nor BSDF sampling of the floor (a small glossy highlight) finds often: path guiding's test case
+    (docs/integrators.md, "Path guiding")."""
+    g = Gltf("glossy_room")
+    white = g.material("white", {"model": "lambert", "rho_d": [0.73, 0.73, 0.73]}, (0.73, 0.73, 0.73))
+    red = g.material("red", {"model": "lambert", "rho_d": [0.63, 0.065, 0.05]}, (0.63, 0.065, 0.05))
+    green = g.material("green", {"model": "lambert", "rho_d": [0.14, 0.45, 0.09]}, (0.14, 0.45, 0.09))
+    ceiling = g.material("glossy ceiling", {"model": "ggx_conductor", "alpha_x": 0.08, "alpha_y": 0.08,
+                                            "metal": "Al"}, (0.9, 0.9, 0.9))
+    tray = g.material("tray", {"model": "lambert", "rho_d": [0.2, 0.2, 0.2]}, (0.2, 0.2, 0.2))
+    lamp = g.material("lamp", {"model": "lambert", "rho_d": [0.0, 0.0, 0.0]}, (0.0, 0.0, 0.0))
+    g.doc["materials"][lamp]["emissiveFactor"] = [1.0, 0.9, 0.75]
+    g.doc["materials"][lamp]["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": 150.0}}
+    g.doc.setdefault("extensionsUsed", []).append("KHR_materials_emissive_strength")
+    w = 1.75
+    add_quad(g, "floor", [-w, 0.0, 1.0], [2 * w, 0.0, 0.0], [0.0, 0.0, -2.0], white)
+    add_quad(g, "ceiling", [-w, 2.0, -1.0], [2 * w, 0.0, 0.0], [0.0, 0.0, 2.0], ceiling)
+    add_quad(g, "back wall", [-w, 0.0, -1.0], [2 * w, 0.0, 0.0], [0.0, 2.0, 0.0], white)
+    add_quad(g, "left wall", [-w, 0.0, 1.0], [0.0, 0.0, -2.0], [0.0, 2.0, 0.0], red)
+    add_quad(g, "right wall", [w, 0.0, -1.0], [0.0, 0.0, 2.0], [0.0, 2.0, 0.0], green)
+    # The lamp faces up (u x v points to +y) inside a tray whose walls face out and in.
+    x0, z0, size, height = 0.9, -0.7, 0.3, 0.12
+    add_quad(g, "lamp", [x0, 0.02, z0 + size], [size, 0.0, 0.0], [0.0, 0.0, -size], lamp)
+    for name, corner, edge in (("tray front", [x0, 0.0, z0 + size], [size, 0.0, 0.0]),
+                               ("tray right", [x0 + size, 0.0, z0 + size], [0.0, 0.0, -size]),
+                               ("tray back", [x0 + size, 0.0, z0], [-size, 0.0, 0.0]),
+                               ("tray left", [x0, 0.0, z0], [0.0, 0.0, size])):
+        add_quad(g, name + " outside", corner, edge, [0.0, height, 0.0], tray)
+        add_quad(g, name + " inside", add(corner, [0.0, height, 0.0]), edge, [0.0, -height, 0.0], tray)
+    g.sphere("sphere", [-0.5, 0.4, 0.0], 0.4, white)
+    g.camera("camera", [0.0, 1.0, 4.2], [0.0, 1.0, 0.0], 34.0)
+    return g
+
+
 def minimal():
     """The example of docs/scenes.md: a ground square, one sphere, one light, one camera."""
     g = Gltf("minimal")
@@ -624,7 +661,8 @@ def main():
     METAL_F0.update(metal_presets(options.raylab))
     LOOKS.update({model["name"]: raylab_tools.look_material(model) for model in registry(options.raylab)})
     documents = [sweep_scene(options.raylab, *sweep) for sweep in sweeps(options.raylab)]
-    for scene in documents + [showcase(), showcase_hdri(), showcase_modern(), showcase_layered(), cornell_box(), cornell_box_area(), minimal()]:
+    for scene in documents + [showcase(), showcase_hdri(), showcase_modern(), showcase_layered(), cornell_box(), cornell_box_area(), glossy_room(),
+                                  minimal()]:
         path = scene.write(options.directory)
         print("wrote %s (%d bytes)" % (os.path.relpath(path), os.path.getsize(path)))
 

@@ -1,0 +1,69 @@
+// Path guiding (kernel/guiding.glsl, engine/render/path_guide.h): a radiance cache learned while rendering, in the
+// spirit of Mueller, Gross & Novak, "Practical Path Guiding for Efficient Light-Transport Simulation" (2017), made
+// cheaper: a uniform grid of cells over the scene's bounds instead of their spatial binary tree, and in each cell a
+// fixed histogram of equal-area direction bins (z = cos theta and phi, each cut in kGuideDirectionSide) instead of
+// their adaptive quadtree. docs/integrators.md, "Path guiding", says why that is enough on raylab's scenes.
+#ifndef RAYLAB_SHARED_GUIDING_H
+#define RAYLAB_SHARED_GUIDING_H
+
+#include "compat.h"
+
+RL_NAMESPACE_BEGIN
+
+RL_CONST uint kBindingGuide = 30;          // GuideHeader, then float cdf[cells * kGuideBins]: the sampling distributions
+RL_CONST uint kBindingGuideTraining = 31;  // uint64 sums, kGuideTrainingWords per cell (fixed point, see below)
+RL_CONST uint kBindingGuideTrails = 32;    // GuideRecord[kGuideTrailLength per wave slot]: the wavefront's paths' vertices
+
+// The grid's cells are cubes, as small as keeps their number within kGuideCells over the scene's bounds: on a flat
+// scene (a floor with objects) they follow the objects' scale rather than the floor's.
+RL_CONST uint kGuideCells = 16384;
+RL_CONST uint kGuideDirectionSide = 16;  // bins along cos theta and along phi
+RL_CONST uint kGuideBins = kGuideDirectionSide * kGuideDirectionSide;
+// The vertices of a path that train the guide: the first kGuideTrailLength continuations sampled from a BSDF.
+RL_CONST uint kGuideTrailLength = 4;
+
+// Training words per cell: the bins' sums of incident radiance over sampling density (estimates of each bin's
+// integral of L_i), then the cell's count of samples and the two second moments that decide `auto`.
+RL_CONST uint kGuideTrainingWords = kGuideBins + 3;
+RL_CONST uint kGuideCountWord = kGuideBins;
+RL_CONST uint kGuideMomentGuidedWord = kGuideBins + 1;  // sum of Y^2 of the samples as drawn (the mixture where guided)
+RL_CONST uint kGuideMomentBsdfWord = kGuideBins + 2;    // the same reweighted to BSDF sampling alone: sum Y^2 p / p_bsdf
+// Fixed-point scales of the sums: integer atomics add in any order to the same bits, so a guided image depends on
+// its seed only (float atomics would make every run differ).
+RL_CONST float kGuideRadianceScale = 4096.0;
+RL_CONST float kGuideMomentScale = 1024.0;
+// No single sample adds more than this many units (a firefly must not overflow a sum of 2^64).
+RL_CONST float kGuideMaxUnits = 1099511627776.0;  // 2^40
+
+// GuideHeader.mode bits.
+RL_CONST uint kGuideSampling = 1;  // cells with a distribution guide their continuations
+RL_CONST uint kGuideTraining = 2;  // the kernel records paths' vertices into the training sums
+
+struct GuideHeader {
+  vec3 gridMin;    // the scene's bounds, a little enlarged
+  uint mode;       // kGuide... bits
+  uvec3 gridSize;  // cells along each axis (their product at most kGuideCells)
+  float cellScale; // cells per unit length
+  float guideProbability;  // the share of continuations drawn from the guide in a guided cell (the rest: the BSDF)
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+RL_CHECK_SIZE(GuideHeader, 48);
+
+// A vertex of a path, kept until the path ends so that the radiance that came back through it can train its cell.
+struct GuideRecord {
+  uint cell;
+  uint bin;
+  float radianceBefore;    // luminance of the path's radiance when the continuation left the vertex
+  float throughputBefore;  // luminance of the throughput that reached the vertex
+  float fCos;              // luminance of f |cos| of the continuation (with the mirror weight's (1 - delta))
+  float pdf;               // the density it was drawn with (mixture where guided, (1 - delta) included)
+  float pdfBsdf;           // the density BSDF sampling alone gives it
+  uint eligible;           // 1 where the vertex may be guided: its second moments decide `auto` for its cell
+};
+RL_CHECK_SIZE(GuideRecord, 32);
+
+RL_NAMESPACE_END
+
+#endif
