@@ -1,6 +1,7 @@
 // The environment image in whole renders: camera rays see it by the documented equirectangular convention
 // (rotation and strength included) in both integrators; a constant image lights a white Lambert sphere like
-// the uniform background of the same radiance (the furnace, through the image's importance sampling and MIS);
+// the uniform background of the same radiance (the furnace, through the image's importance sampling and MIS, with
+// and without path guiding);
 // and under a small bright sun MIS, BSDF sampling and light sampling converge to the same image for every model.
 //
 // Statistics. The furnace compares the mean of (pixel - 1) over the sphere with 0 by a z-test whose standard
@@ -111,8 +112,12 @@ TEST_F(EnvironmentLightTest, ConstantImageLightsAWhiteLambertSphereToRadianceOne
   scene.camera.yfov = glm::radians(35.0f);
   constexpr std::uint32_t kSize = 40;
   const gpu::FrameParams params = frameFor(scene, kSize, kSize);
-  for (std::uint32_t sampling : {gpu::kSamplingMis, gpu::kSamplingLight}) {
-    const Image image = renderImage(device(), scene, samplingSettings(kSize, 0, scene, sampling), 64);
+  // MIS, light sampling alone, and MIS with path guiding, whose mixture density both MIS weights must use.
+  for (int variant = 0; variant < 3; ++variant) {
+    const std::uint32_t sampling = variant == 1 ? gpu::kSamplingLight : gpu::kSamplingMis;
+    RenderSettings settings = samplingSettings(kSize, 0, scene, sampling);
+    if (variant == 2) settings.guiding = Guiding::kOn;
+    const Image image = renderImage(device(), scene, settings, 64);
     double sum = 0.0, squares = 0.0;
     int count = 0;
     for (std::uint32_t y = 0; y < kSize; ++y) {
@@ -128,7 +133,7 @@ TEST_F(EnvironmentLightTest, ConstantImageLightsAWhiteLambertSphereToRadianceOne
     ASSERT_GT(count, 300);
     const double mean = sum / count;
     const double standardError = std::sqrt(std::max(squares / count - mean * mean, 1e-14) / count);
-    EXPECT_LT(std::abs(mean / standardError), 4.0) << "sampling " << sampling << ": mean error " << mean;
+    EXPECT_LT(std::abs(mean / standardError), 4.0) << "variant " << variant << ": mean error " << mean;
   }
 }
 

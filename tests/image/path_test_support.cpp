@@ -53,7 +53,7 @@ std::vector<double> regionMeans(const Image& image, int regionsX, int regionsY) 
 }
 
 double worstRegionT(const Device& device, const Scene& scene, RenderSettings a, RenderSettings b, std::uint32_t runs,
-                    std::uint32_t spp, int regionsX, int regionsY) {
+                    std::uint32_t spp, int regionsX, int regionsY, bool otherBackend) {
   const std::size_t regions = std::size_t(regionsX * regionsY);
   std::vector<std::vector<double>> differences(regions);
   double level = 0.0;
@@ -62,7 +62,7 @@ double worstRegionT(const Device& device, const Scene& scene, RenderSettings a, 
   GpuScene gpuScene = uploadScene(device, scene);
   Renderer renderers[2] = {createRenderer(device, gpuScene, scene, a), createRenderer(device, gpuScene, scene, b)};
   const auto renderRun = [&](int which, const RenderSettings& settings, std::uint32_t run) {
-    if (run == 1) return renderImage(device, scene, settings, spp);
+    if (run == 1 && otherBackend) return renderImage(device, scene, settings, spp);
     Renderer& renderer = renderers[which];
     renderer.params.seed = run;
     resetAccumulation(device, renderer);

@@ -28,7 +28,8 @@ std::vector<double> regionMeans(const Image& image, int regionsX, int regionsY);
 // The largest |t| over the regions of the difference between two estimators of one image (settings a and b),
 // from `runs` independent pairs of renders (seeds 1..runs): the run-to-run spread gives the standard error,
 // heavy-tailed samples included. Differences below 1e-5 of the image's mean are float rounding, not bias.
+// With `otherBackend`, run 1 also checks that the other backend renders both estimators' first samples bit for bit.
 double worstRegionT(const Device& device, const Scene& scene, RenderSettings a, RenderSettings b, std::uint32_t runs,
-                    std::uint32_t spp, int regionsX = 4, int regionsY = 4);
+                    std::uint32_t spp, int regionsX = 4, int regionsY = 4, bool otherBackend = true);
 
 }  // namespace raylab::test
