@@ -27,7 +27,6 @@ import argparse
 import csv
 import hashlib
 import json
-import math
 import os
 import shutil
 import sys
@@ -42,27 +41,13 @@ try:
     import matplotlib.pyplot as plt
     import numpy as np
     import raylab
+    from image_error import TARGET, clamped_relmse, cpu_seconds, time_to
 except ImportError as missing:
     sys.exit(f"{Path(sys.argv[0]).name}: error: {venv_hint(missing.name)}")
 
-EPSILON = 0.01
-TARGET = 1e-2  # the clamped relMSE of issue 39's targets
 REFERENCE_SEED = 1000
 SCENES = ("cornell_box_area", "cornell_box", "minimal", "showcase", "showcase_hdri", "showcase_modern",
           "showcase_layered")
-
-
-def clamped_relmse(image: np.ndarray, reference: np.ndarray) -> float:
-    x = np.minimum(image[..., :3], 1.0).astype(np.float64)
-    r = np.minimum(reference[..., :3], 1.0).astype(np.float64)
-    return float(np.mean((x - r) ** 2 / (r * r + EPSILON)))
-
-
-def cpu_seconds(function):
-    """(result, CPU seconds of the whole process) of function()."""
-    start = time.process_time()
-    result = function()
-    return result, time.process_time() - start
 
 
 def scene_path(name: str) -> Path:
@@ -84,19 +69,6 @@ def reference(name: str, width: int, height: int, spp: int, out: Path) -> np.nda
 def per_sample_cpu(renderer, spp: int) -> float:
     """The best of two renders' CPU seconds per sample (the kernel already compiled)."""
     return min(cpu_seconds(lambda: renderer.render(spp=spp, seed=99))[1] for _ in range(2)) / spp
-
-
-def time_to(target: float, costs: list[float], errors: list[float]) -> float | None:
-    """Where the error curve first falls to `target`, interpolated log-log; None when it never does, and the
-    negated cost of the first point when that one is already below (at most that long)."""
-    for i, error in enumerate(errors):
-        if error <= target:
-            if i == 0:
-                return -costs[0]
-            c0, c1, e0, e1 = costs[i - 1], costs[i], errors[i - 1], errors[i]
-            t = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
-            return math.exp(math.log(c0) + t * (math.log(c1) - math.log(c0)))
-    return None
 
 
 def crop_sheet(name: str, raw: np.ndarray, denoised: np.ndarray, ref: np.ndarray, spp: int, path: Path) -> None:

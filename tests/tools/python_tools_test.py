@@ -149,6 +149,18 @@ def denoise_study(python: Path, source: Path, raylab: Path, work: Path) -> None:
     check_png(out / "crops_cornell_box_area.png", 5 * 1024)
 
 
+def guiding_study(python: Path, source: Path, work: Path) -> None:
+    out = work / "guiding_study"
+    run([python, source / "tools" / "guiding_study.py", "--quick", "--out", out])
+    with open(out / "guiding_study.csv") as file:
+        rows = list(csv.DictReader(file))
+    check(sorted({row["mode"] for row in rows}) == ["auto", "off", "on"], f"guiding_study.csv modes: {rows}")
+    for row in rows:
+        check(float(row["relmse"]) > 0.0 and float(row["cpu_s"]) > 0.0, f"guiding_study.csv: {row}")
+    check("| glossy_room | on |" in (out / "summary.md").read_text(), "summary.md lacks the guided row")
+    check_png(out / "guiding_glossy_room.png", 10 * 1024)
+
+
 def main() -> None:
     raylab, source, work = (Path(arg).resolve() for arg in sys.argv[1:4])
     python = source / ".venv" / "bin" / "python"
@@ -164,6 +176,7 @@ def main() -> None:
     image_diff(python, source, raylab, work)
     layered_cost(python, source, raylab, work)
     denoise_study(python, source, raylab, work)
+    guiding_study(python, source, work)
     print("python_tools_test: passed")
 
 
