@@ -163,17 +163,24 @@ def seconds(value: float | None) -> str:
 
 def write_summary(summaries: list[dict], args, path: Path) -> None:
     lines = [f"| scene | guiding | spp to {TARGET:g} | CPU s to {TARGET:g} | against off | relMSE at {args.max_spp} spp "
-             f"| the guide |", "|---|---|---|---|---|---|---|"]
+             f"| CPU s | speed-up at equal error | the guide |", "|---|---|---|---|---|---|---|---|---|"]
     for summary in summaries:
-        off = summary["modes"].get("off", {}).get("time_to_target")
+        off = summary["modes"].get("off", {})
         for mode, result in summary["modes"].items():
             t = result["time_to_target"]
-            ratio = f"{off / t:.2f}x sooner" if off and t and off > 0 and t > 0 else "-"
+            t_off = off.get("time_to_target")
+            ratio = f"{t_off / t:.2f}x sooner" if t_off and t and t_off > 0 and t > 0 else "-"
             spp = result["spp_to_target"]
             spp_text = "not reached" if spp is None else (f"< {-spp:.0f}" if spp < 0 else f"{spp:.0f}")
+            last = result["points"][-1]
+            # Where the error falls as 1 / time, the time to any error scales with error x time at the last point.
+            speedup = "-"
+            if off:
+                last_off = off["points"][-1]
+                speedup = f"{last_off['relmse'] * last_off['cpu_s'] / (last['relmse'] * last['cpu_s']):.2f}x"
             guide = result["guide"].replace("path guiding ", "")
             lines.append(f"| {summary['scene']} | {mode} | {spp_text} | {seconds(t)} | {ratio} | "
-                         f"{result['points'][-1]['relmse']:.4g} | {guide} |")
+                         f"{last['relmse']:.4g} | {last['cpu_s']:.1f} | {speedup} | {guide} |")
     path.write_text("\n".join(lines) + "\n")
 
 

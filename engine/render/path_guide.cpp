@@ -19,9 +19,9 @@ constexpr double kMinCellSamples = 64.0;
 // The histogram's share of a cell's distribution; the rest is uniform, so that no direction the training missed
 // has a density near zero under the guide (the BSDF's half of the mixture covers it too).
 constexpr double kHistogramShare = 0.9;
-// `auto` guides only when the guided continuations' second moment, over the samples of its trial (the passes
-// after the first update up to kAutoTrialSamples), is at most 1 / kAutoGain of BSDF sampling's on the same
-// vertices (importance reweighting, kernel/guide_training.glsl): the margin pays for the guide's cost per sample,
+// `auto` guides only when the guided continuations' mean second moment, over the samples of its trial (the passes
+// after the first update up to kAutoTrialSamples), is at most 1 / kAutoGain of BSDF sampling's, estimated from the
+// continuations the BSDF drew in the same passes (kernel/guide_training.glsl): the margin pays for the guide's cost per sample,
 // about 20% on lavapipe (docs/performance.md, "Path guiding").
 constexpr std::uint32_t kAutoTrialSamples = 16;
 constexpr double kAutoGain = 1.25;
@@ -143,8 +143,8 @@ void resetPathGuide(PathGuide& guide) {
   std::memset(guide.training.mapped, 0, guide.training.size);
   guide.radiance.assign(kCells * kBins, 0.0);
   guide.samples.assign(kCells, 0.0);
-  guide.momentGuided = 0.0;
-  guide.momentBsdf = 0.0;
+  guide.momentGuided = guide.momentGuidedCount = 0.0;
+  guide.momentBsdf = guide.momentBsdfCount = 0.0;
   guide.nextUpdate = 1;
   guide.summary = {};
 }
@@ -160,8 +160,10 @@ void updatePathGuide(PathGuide& guide, std::uint32_t samplesDone) {
   if ((guide.header.mode & gpu::kGuideSampling) != 0) {
     for (std::size_t cell = 0; cell < kCells; ++cell) {
       const std::size_t base = cell * gpu::kGuideTrainingWords;
-      guide.momentGuided += trainingValue(words, base + gpu::kGuideMomentGuidedWord, gpu::kGuideMomentScale);
-      guide.momentBsdf += trainingValue(words, base + gpu::kGuideMomentBsdfWord, gpu::kGuideMomentScale);
+      guide.momentGuided += trainingValue(words, base + gpu::kGuideMomentWord, gpu::kGuideMomentScale);
+      guide.momentGuidedCount += trainingValue(words, base + gpu::kGuideMomentCountWord, 1.0);
+      guide.momentBsdf += trainingValue(words, base + gpu::kGuideBsdfMomentWord, gpu::kGuideMomentScale);
+      guide.momentBsdfCount += trainingValue(words, base + gpu::kGuideBsdfCountWord, 1.0);
     }
   }
   float* cdfs = distributions(guide);
@@ -189,7 +191,9 @@ void updatePathGuide(PathGuide& guide, std::uint32_t samplesDone) {
   // `auto`: after the trial, guiding goes on only if it cut the continuations' second moment by kAutoGain.
   if (guide.mode == Guiding::kAuto && !summary.decided && samplesDone >= kAutoTrialSamples) {
     summary.decided = true;
-    summary.momentRatio = guide.momentGuided > 0.0 ? guide.momentBsdf / guide.momentGuided : 0.0;
+    const double guided = guide.momentGuided / std::max(guide.momentGuidedCount, 1.0);
+    const double bsdf = guide.momentBsdf / std::max(guide.momentBsdfCount, 1.0);
+    summary.momentRatio = guided > 0.0 ? bsdf / guided : 0.0;
     summary.guiding = summary.momentRatio >= kAutoGain;
     if (!summary.guiding) guide.header.mode = 0;
   }

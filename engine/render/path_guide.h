@@ -43,8 +43,9 @@ struct PathGuide {
   gpu::GuideHeader header{};
   std::vector<double> radiance;  // per cell and bin: the sum over every update so far
   std::vector<double> samples;   // per cell: vertices recorded
-  double momentGuided = 0.0;     // over the passes the guide sampled in, every cell's
-  double momentBsdf = 0.0;
+  // Over the passes the guide sampled in, every cell's: the second moments and their counts (guide_training.glsl).
+  double momentGuided = 0.0, momentGuidedCount = 0.0;
+  double momentBsdf = 0.0, momentBsdfCount = 0.0;
   std::uint32_t nextUpdate = 1;  // samples per pixel after which the distributions are rebuilt next
   PathGuideSummary summary;
 };

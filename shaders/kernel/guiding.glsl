@@ -99,14 +99,16 @@ float continuationPdf(GuideVertex g, MaterialRecord material, vec3 wiLocal, vec3
 struct GuidedSample {
   BsdfSample b;   // b.pdf: the mixture's density
   float pdfBsdf;  // BSDF sampling's density of the same direction
+  bool fromBsdf;  // the BSDF drew it (else the guide)
 };
 
 // The continuation of a guided vertex: from the guide with probability g.share (u.x; u.yz place it), else the BSDF's
 // own sample from uBsdf.
 GuidedSample guidedSample(GuideVertex g, MaterialRecord material, ShadingFrame frame, vec3 woLocal, vec3 uBsdf, vec3 u) {
   GuidedSample s;
+  s.fromBsdf = !(u.x < g.share);
   vec3 wi;
-  if (u.x < g.share) {
+  if (!s.fromBsdf) {
     wi = guideSampleDirection(g.cell, u.yz);
     s.b.wi = toLocal(frame, wi);
     s.b.f = bsdfEval(material, s.b.wi, woLocal);
@@ -123,9 +125,10 @@ GuidedSample guidedSample(GuideVertex g, MaterialRecord material, ShadingFrame f
 
 // The training record of a continuation leaving a vertex: everything but where it went, which the raygen reads
 // from the path (its next segment's origin and direction).
-GuideRecord guideRecordOf(GuideVertex g, vec3 radiance, vec3 throughput, vec3 fCos, float pdf, float pdfBsdf) {
-  return GuideRecord(g.cell, 0u, guideLuminance(radiance), guideLuminance(throughput), guideLuminance(fCos), pdf,
-                     pdfBsdf, g.eligible ? 1u : 0u);
+GuideRecord guideRecordOf(GuideVertex g, vec3 radiance, vec3 throughput, vec3 fCos, GuidedSample s, float delta) {
+  const uint flags = (g.eligible ? kGuideRecordEligible : 0u) | (s.fromBsdf ? kGuideRecordFromBsdf : 0u);
+  return GuideRecord(g.cell, 0u, guideLuminance(radiance), guideLuminance(throughput), guideLuminance(fCos),
+                     (1.0 - delta) * s.b.pdf, (1.0 - delta) * s.pdfBsdf, flags);
 }
 
 #endif

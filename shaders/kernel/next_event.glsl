@@ -37,8 +37,9 @@ vec3 directLighting(vec3 position, vec3 ng, ShadingFrame frame, vec3 woLocal, Ma
 
 // The path integrator's estimate of the lights that are not delta lights: one drawn from the light-selection
 // distribution (selectLight), one direction towards it, and what it brings through the (1 - delta) f_r part of
-// the BSDF if nothing blocks it, weighted against BSDF sampling (the guide's mixture at a guided vertex) by misWeight. Draws its random numbers whatever
-// happens next, so that the vertex's later dimensions mean the same in every sample of a scene.
+// the BSDF if nothing blocks it, weighted by misWeight against the continuation's sampling (the BSDF's, or at a
+// guided vertex the mixture of guide and BSDF, kernel/guiding.glsl). Draws its random numbers whatever happens next,
+// so that the vertex's later dimensions mean the same in every sample of a scene.
 vec3 sampleOneLight(Surface s, vec3 ng, ShadingFrame frame, vec3 woLocal, MaterialRecord material, float delta,
                     GuideVertex guideHere, inout Payload p) {
   const vec4 u = rngNext4(p.path.rng);

@@ -9,7 +9,9 @@
 // sides, its lights and its continuation on either (kernel/hit_common.glsl, shadingSide). Light samples and
 // emission reached by a continuation are weighted against each other by misWeight (kernel/mis.glsl: the power
 // heuristic, Veach 1997, or one strategy alone for studies); delta lights are light-sampled only. The uniform
-// background is left to BSDF sampling. Russian roulette after kRouletteDepth bounces keeps the estimator unbiased (docs/integrators.md).
+// background is left to BSDF sampling. With kFeatureGuiding, a vertex with a diffuse lobe in a cell that learned where
+// light comes from draws its continuation from the mixture of that guide and the BSDF (kernel/guiding.glsl), and
+// leaves a training record for the raygen. Russian roulette after kRouletteDepth bounces keeps the estimator unbiased (docs/integrators.md).
 // Depth: --max-depth D allows D + 1 continuations after the camera ray, so a path has at most D + 2 segments
 // (Mitsuba 3's max_depth = D + 2); D = 0 is direct lighting only.
 #ifndef RAYLAB_KERNEL_PATH_HIT_GLSL
@@ -126,7 +128,7 @@ void closestHitPath(Hit hit, inout Payload p) {
     return;
   }
   // In a guided cell (kernel/guiding.glsl) the sample comes from the mixture of guide and BSDF, b.pdf the mixture's.
-  GuidedSample g = GuidedSample(noSample(), 0.0);
+  GuidedSample g = GuidedSample(noSample(), 0.0, true);
   if (guideHere.share > 0.0) {
     g = guidedSample(guideHere, material, frame, woLocal, u.xyz, rngNext4(p.path.rng).xyz);
   } else {
@@ -144,7 +146,7 @@ void closestHitPath(Hit hit, inout Payload p) {
   const vec3 fCos = (1.0 - delta) * b.f * abs(b.wi.z);
   if (guideTrains() && guideHere.cell != kNoGuideCell) {
     p.guideRecorded = true;
-    p.guideRecord = guideRecordOf(guideHere, p.path.radiance, p.path.throughput, fCos, p.path.lastPdf, (1.0 - delta) * g.pdfBsdf);
+    p.guideRecord = guideRecordOf(guideHere, p.path.radiance, p.path.throughput, fCos, g, delta);
   }
   continueOrEnd(p, offsetRayOrigin(s.position, leavingSide(ng, wi)), wi, p.path.throughput * b.f * (abs(b.wi.z) / b.pdf));
 }

@@ -23,17 +23,24 @@ RL_CONST uint kGuideBins = kGuideDirectionSide * kGuideDirectionSide;
 RL_CONST uint kGuideTrailLength = 4;
 
 // Training words per cell: the bins' sums of incident radiance over sampling density (estimates of each bin's
-// integral of L_i), then the cell's count of samples and the two second moments that decide `auto`.
-RL_CONST uint kGuideTrainingWords = kGuideBins + 3;
+// integral of L_i), the cell's count of recorded vertices, and for `auto` the second moments of the guided vertices'
+// samples as drawn (with their count) and of BSDF sampling alone, from the samples the BSDF drew (with theirs).
+RL_CONST uint kGuideTrainingWords = kGuideBins + 5;
 RL_CONST uint kGuideCountWord = kGuideBins;
-RL_CONST uint kGuideMomentGuidedWord = kGuideBins + 1;  // sum of Y^2 of the samples as drawn (the mixture where guided)
-RL_CONST uint kGuideMomentBsdfWord = kGuideBins + 2;    // the same reweighted to BSDF sampling alone: sum Y^2 p / p_bsdf
+RL_CONST uint kGuideMomentWord = kGuideBins + 1;       // sum of Y^2 over eligible vertices, Y as drawn
+RL_CONST uint kGuideMomentCountWord = kGuideBins + 2;  // their count
+RL_CONST uint kGuideBsdfMomentWord = kGuideBins + 3;   // sum of (Y p / p_bsdf)^2 over those the BSDF drew
+RL_CONST uint kGuideBsdfCountWord = kGuideBins + 4;    // their count
 // Fixed-point scales of the sums: integer atomics add in any order to the same bits, so a guided image depends on
 // its seed only (float atomics would make every run differ).
 RL_CONST float kGuideRadianceScale = 4096.0;
 RL_CONST float kGuideMomentScale = 1024.0;
 // No single sample adds more than this many units (a firefly must not overflow a sum of 2^64).
 RL_CONST float kGuideMaxUnits = 1099511627776.0;  // 2^40
+
+// GuideRecord.flags bits.
+RL_CONST uint kGuideRecordEligible = 1;  // the vertex may be guided (its second moments inform `auto`)
+RL_CONST uint kGuideRecordFromBsdf = 2;  // the BSDF drew the continuation (not the guide)
 
 // GuideHeader.mode bits.
 RL_CONST uint kGuideSampling = 1;  // cells with a distribution guide their continuations
@@ -60,7 +67,7 @@ struct GuideRecord {
   float fCos;              // luminance of f |cos| of the continuation (with the mirror weight's (1 - delta))
   float pdf;               // the density it was drawn with (mixture where guided, (1 - delta) included)
   float pdfBsdf;           // the density BSDF sampling alone gives it
-  uint eligible;           // 1 where the vertex may be guided: its second moments decide `auto` for its cell
+  uint flags;              // kGuideRecord... bits
 };
 RL_CHECK_SIZE(GuideRecord, 32);
 

@@ -23,12 +23,14 @@ Scene committedScene(const std::string& name) {
   return loadScene({std::string(RAYLAB_SOURCE_DIR) + "/assets/scenes/" + name + ".gltf", ""});
 }
 
-RenderSettings pathTraced(const Scene& scene, Guiding guiding, std::uint32_t width, std::uint32_t height) {
+RenderSettings pathTraced(const Scene& scene, Guiding guiding, std::uint32_t width, std::uint32_t height,
+                          bool allFeatures = false) {
   RenderSettings settings;
   settings.width = width;
   settings.height = height;
   KernelOptions options;
   options.integrator = IntegratorChoice::kPath;
+  options.allFeatures = allFeatures;
   settings.kernel = kernelFor(scene, options);
   settings.guiding = guiding;
   return settings;
@@ -38,13 +40,14 @@ RenderSettings pathTraced(const Scene& scene, Guiding guiding, std::uint32_t wid
 // unguided, 16 spp each (the guide trains and samples throughout): |t| < 8 has a false-alarm rate of 9e-5 per
 // region, under 1% over the 8 scenes' 96 regions. The scenes are the committed ones that are not sweeps (the
 // sweeps are the showcase's models on the slides' point lights, which the path integrator sees through the same
-// code).
+// code). Every scene runs the kernel with every model and feature, guided and not: two kernels to compile instead
+// of sixteen, the guide's code the same.
 TEST_F(GuidingTest, GuidedAndUnguidedRendersOfEveryCommittedSceneAgree) {
   for (const char* name : {"glossy_room", "cornell_box_area", "cornell_box", "minimal", "showcase", "showcase_hdri",
                            "showcase_modern", "showcase_layered"}) {
     const Scene scene = committedScene(name);
-    const double t = worstRegionT(device(), scene, pathTraced(scene, Guiding::kOff, 48, 27),
-                                  pathTraced(scene, Guiding::kOn, 48, 27), 8, 16, 4, 3, false);
+    const double t = worstRegionT(device(), scene, pathTraced(scene, Guiding::kOff, 48, 27, true),
+                                  pathTraced(scene, Guiding::kOn, 48, 27, true), 8, 16, 4, 3, false);
     EXPECT_LT(t, 8.0) << name << ": guided and unguided renders differ";
   }
 }
@@ -59,23 +62,41 @@ TEST_F(GuidingTest, AGuidedRenderDependsOnItsSeedOnly) {
   EXPECT_EQ(first.rgba, second.rgba);
 }
 
-// On the room lit through its glossy ceiling, guiding pays: the trial measures BSDF sampling's second moment well
-// above the guide's (1.5x at 160 x 90), and `auto` keeps guiding. (At 96 x 54 the grid's cells see too few paths
-// and the trial rightly turns it off.) The guide stops training at 64 spp and a new image starts afresh.
-TEST_F(GuidingTest, AutoKeepsGuidingWhereItMeasuredAGain) {
-  const Scene scene = committedScene("glossy_room");
+// On the Cornell box guiding gains nothing (docs/performance.md): `auto`'s trial measures BSDF sampling's second
+// moment below the guide's (0.58x at this seed; 0.73-0.87x at others) and turns guiding off for the rest of the
+// image, training included.
+TEST_F(GuidingTest, AutoTurnsGuidingOffWhereItMeasuredNoGain) {
+  const Scene scene = committedScene("cornell_box_area");
   GpuScene gpuScene = uploadScene(device(), scene);
   Renderer renderer = createRenderer(device(), gpuScene, scene, pathTraced(scene, Guiding::kAuto, 160, 90));
   renderSamples(device(), renderer, 15);
   EXPECT_FALSE(renderer.guide.summary.decided) << "the trial runs to 16 spp";
+  EXPECT_NE(renderer.guide.header.mode & gpu::kGuideSampling, 0u) << "the trial guides";
   renderSamples(device(), renderer, 1);
   EXPECT_TRUE(renderer.guide.summary.decided);
-  EXPECT_GT(renderer.guide.summary.momentRatio, 1.25) << describeGuide(renderer.guide);
-  EXPECT_TRUE(renderer.guide.summary.guiding);
-  EXPECT_NE(renderer.guide.header.mode & gpu::kGuideSampling, 0u);
+  EXPECT_GT(renderer.guide.summary.momentRatio, 0.0);
+  EXPECT_LT(renderer.guide.summary.momentRatio, 1.0) << describeGuide(renderer.guide);
+  EXPECT_FALSE(renderer.guide.summary.guiding);
+  EXPECT_EQ(renderer.guide.header.mode, 0u) << "neither guiding nor training after the trial";
+  const std::uint32_t updates = renderer.guide.summary.updates;
   renderSamples(device(), renderer, 48);
+  EXPECT_EQ(renderer.guide.summary.updates, updates);
+  destroyRenderer(device(), renderer);
+  destroyGpuScene(device(), gpuScene);
+}
+
+// `on` trains over 64 spp, updating after 1, 2, 4, ..., 64, then keeps its last distributions; a new image (a reset)
+// trains from nothing.
+TEST_F(GuidingTest, OnTrainsOverTheFirst64SamplesAndANewImageStartsAfresh) {
+  const Scene scene = committedScene("glossy_room");
+  GpuScene gpuScene = uploadScene(device(), scene);
+  Renderer renderer = createRenderer(device(), gpuScene, scene, pathTraced(scene, Guiding::kOn, 64, 36));
+  renderSamples(device(), renderer, 64);
   EXPECT_EQ(renderer.guide.summary.updates, 7u) << "updates after 1, 2, 4, ..., 64 spp";
-  EXPECT_EQ(renderer.guide.header.mode & gpu::kGuideTraining, 0u) << "training ends at 64 spp";
+  EXPECT_GT(renderer.guide.summary.cellsGuided, 0u);
+  EXPECT_EQ(renderer.guide.header.mode, gpu::kGuideSampling) << "training ends at 64 spp, guiding goes on";
+  renderSamples(device(), renderer, 8);
+  EXPECT_EQ(renderer.guide.summary.updates, 7u);
   resetAccumulation(device(), renderer);
   EXPECT_EQ(renderer.guide.summary.updates, 0u);
   EXPECT_EQ(renderer.guide.header.mode, gpu::kGuideTraining) << "a new image trains from nothing";

@@ -175,6 +175,8 @@ def test_bad_jobs_are_refused_before_any_cluster_starts(work, source_dir):
         raylab.farm.renders([same, same], scheduler="tcp://127.0.0.1:1")
     with pytest.raises(ValueError, match=r"spp must be an integer in \[1, 1048576\], not 0"):
         raylab.farm.turntable(scene, 4, str(work / "t.exr"), spp=0)
+    with pytest.raises(ValueError, match=r"guiding is off, on, auto, not 'always'"):
+        raylab.farm.RenderJob(out=str(work / "g.exr"), guiding="always")
     with pytest.raises(ValueError, match=r"--frames must be within 1..3600"):
         raylab.farm.turntable(scene, 0, str(work / "t.exr"))
     with pytest.raises(ValueError, match=r"--frames must be within 1..3600"):

@@ -210,3 +210,21 @@ def test_a_device_without_what_was_asked_raises_runtime_error_with_the_command_l
     assert command.returncode == 3
     assert "offers no ray queries" in message and message in command.stderr
     assert backend == "pipeline"  # auto takes the ray-tracing pipeline, as the command line does
+
+
+# Path guiding through Python: the option as `raylab render --guiding` takes it, the guide's state in the report, and
+# the same refusals (a value not among off, on, auto; the slides' integrator, which samples no continuations).
+def test_guiding(source_dir):
+    scene = raylab.Scene.load(str(source_dir / "assets" / "scenes" / "glossy_room.gltf"))
+    renderer = raylab.Renderer(scene, width=48, height=27, guiding="on")
+    image = renderer.render(spp=4, seed=np.uint32(3))
+    assert np.isfinite(image).all() and image[..., :3].mean() > 0.0
+    report = renderer.report()
+    assert report["guiding"] == "on" and "path guiding" in report["kernel"]
+    assert report["guide"]["updates"] == 3 and report["guide"]["cells"] > 0, report["guide"]
+    assert raylab.Renderer(scene, width=48, height=27).report()["guiding"] == "off"
+    with pytest.raises(ValueError, match="guiding.*off, on or auto"):
+        raylab.Renderer(scene, width=48, height=27, guiding="always")
+    minimal = raylab.Scene.load(str(source_dir / "assets" / "scenes" / "minimal.gltf"))
+    with pytest.raises(ValueError, match="--guiding"):
+        raylab.Renderer(minimal, width=48, height=27, integrator="slides", guiding="on")

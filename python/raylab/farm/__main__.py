@@ -88,7 +88,7 @@ def _turntable_parser():
     options = _raylab.render_options  # the engine's declarations (util/render_options.h)
     parser.add_argument("--max-depth", type=int, default=options["max_depth"]["default"],
                         help=options["max_depth"]["help"])
-    for name in ("integrator", "backend"):
+    for name in ("integrator", "backend", "guiding"):
         parser.add_argument(f"--{name}", default=options[name]["default"], choices=options[name]["values"],
                             help=options[name]["help"])
     parser.add_argument("--env", default="", metavar="FILE.exr", help="an equirectangular HDR environment")
@@ -116,7 +116,8 @@ def _turntable(arguments) -> int:
         jobs = turntable(options.scene, options.frames, options.out, target=options.target,
                          width=options.width, height=options.height,
                          spp=options.spp, seed=options.seed, max_depth=options.max_depth,
-                         integrator=options.integrator, backend=options.backend, env=options.env, png=options.png)
+                         integrator=options.integrator, backend=options.backend, guiding=options.guiding,
+                         env=options.env, png=options.png)
         report = renders(jobs, workers=options.workers, scheduler=options.scheduler, progress=not options.quiet,
                          label="raylab.farm turntable")
         print(f"wrote {jobs[0].out} .. {jobs[-1].out}")

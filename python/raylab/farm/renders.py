@@ -33,6 +33,7 @@ class RenderJob:
     seed: int = 0
     integrator: str = _OPTIONS["integrator"]["default"]
     backend: str = _OPTIONS["backend"]["default"]
+    guiding: str = _OPTIONS["guiding"]["default"]
     max_depth: int = _OPTIONS["max_depth"]["default"]
     env: str = ""
     camera: dict = field(default_factory=dict)
@@ -56,7 +57,7 @@ class RenderJob:
                 raise ValueError(f"raylab.farm: {name} must be an integer in [{low}, {high}], "
                                  f"not {getattr(self, name)!r}")
             object.__setattr__(self, name, value)  # a plain int, so that descriptions compare equal
-        for name in ("integrator", "backend"):
+        for name in ("integrator", "backend", "guiding"):
             choices = _OPTIONS[name]["values"]
             if getattr(self, name) not in choices:
                 raise ValueError(f"raylab.farm: {name} is {', '.join(choices)}, not {getattr(self, name)!r}")
@@ -90,7 +91,7 @@ def render_job(job: RenderJob):
     with _device_lock:
         clock = Stopwatch()
         renderer = _raylab.Renderer(_scene_of(job), width=job.width, height=job.height, integrator=job.integrator,
-                                    backend=job.backend, max_depth=job.max_depth)
+                                    backend=job.backend, guiding=job.guiding, max_depth=job.max_depth)
         clock.setup_done()
         image = renderer.render(spp=job.spp, seed=job.seed)
         return image, clock.info()
