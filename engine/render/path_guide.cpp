@@ -19,10 +19,10 @@ constexpr double kMinCellSamples = 64.0;
 // The histogram's share of a cell's distribution; the rest is uniform, so that no direction the training missed
 // has a density near zero under the guide (the BSDF's half of the mixture covers it too).
 constexpr double kHistogramShare = 0.9;
-// `auto` guides only when the guided continuations' mean second moment, over the samples of its trial (the passes
-// after the first update up to kAutoTrialSamples), is at most 1 / kAutoGain of BSDF sampling's, estimated from the
-// continuations the BSDF drew in the same passes (kernel/guide_training.glsl): the margin pays for the guide's cost per sample,
-// about 20% on lavapipe (docs/performance.md, "Path guiding").
+// `auto` renders its trial (the samples up to kAutoTrialSamples) with BSDF sampling alone while the guide trains,
+// and guides the rest only when the second moment the guide's mixture would have had, estimated from the same
+// samples (kernel/guide_training.glsl), is at most 1 / kAutoGain of BSDF sampling's: the margin pays for the
+// guide's cost per sample, about 20% on lavapipe (docs/performance.md, "Path guiding").
 constexpr std::uint32_t kAutoTrialSamples = 16;
 constexpr double kAutoGain = 1.25;
 
@@ -69,10 +69,11 @@ void buildDistribution(const double* radiance, float* cdf) {
 std::string describeGuide(const PathGuide& guide) {
   const PathGuideSummary& g = guide.summary;
   char text[256];
-  int n = std::snprintf(text, sizeof text, "path guiding (%s): %u cells, %u updates over the first %u spp",
-                        std::string(kGuidingValues[std::size_t(guide.mode)]).c_str(), g.cellsGuided, g.updates, kGuideTrainingSamples);
+  const std::string mode(kGuidingValues[std::size_t(guide.mode)]);
+  const int n = std::snprintf(text, sizeof text, "path guiding (%s): %u cells, %u updates over the first %u spp",
+                              mode.c_str(), g.cellsGuided, g.updates, kGuideTrainingSamples);
   if (guide.mode == Guiding::kAuto && g.decided && n > 0) {
-    std::snprintf(text + n, sizeof text - n, "; trial: BSDF sampling's second moment %.2fx the guide's, guiding %s",
+    std::snprintf(text + n, sizeof text - n, "; trial: BSDF sampling's second moment %.2fx the guided one's, guiding %s",
                   g.momentRatio, g.guiding ? "on" : "off");
   }
   return text;
@@ -136,17 +137,19 @@ void destroyPathGuide(const Device& device, PathGuide& guide) {
 void resetPathGuide(PathGuide& guide) {
   if (guide.guide.mapped == nullptr) return;
   const bool on = guide.mode != Guiding::kOff;
-  guide.header.mode = on ? gpu::kGuideTraining : 0u;
+  guide.header.mode = !on ? 0u : guide.mode == Guiding::kAuto ? gpu::kGuideTraining | gpu::kGuideTrial
+                                                               : gpu::kGuideTraining;
   writeHeader(guide);
   if (!on) return;
   std::fill_n(distributions(guide), kCells * kBins, 0.0f);
   std::memset(guide.training.mapped, 0, guide.training.size);
   guide.radiance.assign(kCells * kBins, 0.0);
   guide.samples.assign(kCells, 0.0);
-  guide.momentGuided = guide.momentGuidedCount = 0.0;
-  guide.momentBsdf = guide.momentBsdfCount = 0.0;
+  guide.momentBsdf = 0.0;
+  guide.momentMixture = 0.0;
   guide.nextUpdate = 1;
   guide.summary = {};
+  guide.summary.guiding = guide.mode == Guiding::kOn;  // `auto` renders its trial unguided
 }
 
 bool guideWantsUpdate(const PathGuide& guide, std::uint32_t samplesDone) {
@@ -156,14 +159,12 @@ bool guideWantsUpdate(const PathGuide& guide, std::uint32_t samplesDone) {
 void updatePathGuide(PathGuide& guide, std::uint32_t samplesDone) {
   if ((guide.header.mode & gpu::kGuideTraining) == 0) return;
   const auto* words = static_cast<const std::uint32_t*>(guide.training.mapped);
-  // The second moments of the pass's guided vertices, if the guide sampled during it.
-  if ((guide.header.mode & gpu::kGuideSampling) != 0) {
+  // `auto`'s trial: the pass's second moments, BSDF sampling's as drawn and the guide's mixture's had it drawn.
+  if ((guide.header.mode & gpu::kGuideTrial) != 0) {
     for (std::size_t cell = 0; cell < kCells; ++cell) {
       const std::size_t base = cell * gpu::kGuideTrainingWords;
-      guide.momentGuided += trainingValue(words, base + gpu::kGuideMomentWord, gpu::kGuideMomentScale);
-      guide.momentGuidedCount += trainingValue(words, base + gpu::kGuideMomentCountWord, 1.0);
-      guide.momentBsdf += trainingValue(words, base + gpu::kGuideBsdfMomentWord, gpu::kGuideMomentScale);
-      guide.momentBsdfCount += trainingValue(words, base + gpu::kGuideBsdfCountWord, 1.0);
+      guide.momentBsdf += trainingValue(words, base + gpu::kGuideMomentWord, gpu::kGuideMomentScale);
+      guide.momentMixture += trainingValue(words, base + gpu::kGuideMixtureMomentWord, gpu::kGuideMomentScale);
     }
   }
   float* cdfs = distributions(guide);
@@ -185,18 +186,17 @@ void updatePathGuide(PathGuide& guide, std::uint32_t samplesDone) {
     }
   }
   std::memset(guide.training.mapped, 0, guide.training.size);
-  guide.header.mode |= gpu::kGuideSampling;
-  while (guide.nextUpdate <= samplesDone) guide.nextUpdate *= 2;
-  if (samplesDone >= kGuideTrainingSamples) guide.header.mode &= ~gpu::kGuideTraining;
-  // `auto`: after the trial, guiding goes on only if it cut the continuations' second moment by kAutoGain.
+  // `on` guides from the first update; `auto` only after its trial, and only where the mixture would have cut the
+  // continuations' second moment by kAutoGain.
+  if (guide.mode == Guiding::kOn) guide.header.mode |= gpu::kGuideSampling;
   if (guide.mode == Guiding::kAuto && !summary.decided && samplesDone >= kAutoTrialSamples) {
     summary.decided = true;
-    const double guided = guide.momentGuided / std::max(guide.momentGuidedCount, 1.0);
-    const double bsdf = guide.momentBsdf / std::max(guide.momentBsdfCount, 1.0);
-    summary.momentRatio = guided > 0.0 ? bsdf / guided : 0.0;
+    summary.momentRatio = guide.momentMixture > 0.0 ? guide.momentBsdf / guide.momentMixture : 0.0;
     summary.guiding = summary.momentRatio >= kAutoGain;
-    if (!summary.guiding) guide.header.mode = 0;
+    guide.header.mode = summary.guiding ? (gpu::kGuideTraining | gpu::kGuideSampling) : 0u;
   }
+  while (guide.nextUpdate <= samplesDone) guide.nextUpdate *= 2;
+  if (samplesDone >= kGuideTrainingSamples) guide.header.mode &= ~gpu::kGuideTraining;
   guide.summary = summary;
   writeHeader(guide);
 }

@@ -28,8 +28,8 @@ inline constexpr float kGuideProbability = 0.5f;
 struct PathGuideSummary {
   std::uint32_t updates = 0;      // distributions rebuilt so far
   std::uint32_t cellsGuided = 0;  // cells with a distribution
-  // `auto`: whether the trial is over, the second moment of BSDF sampling over the guided one it measured, and
-  // whether guiding stays on.
+  // `auto`: whether the trial is over, BSDF sampling's second moment over the guide's mixture's it measured, and
+  // whether guiding goes on.
   bool decided = false;
   double momentRatio = 0.0;
   bool guiding = true;
@@ -43,9 +43,9 @@ struct PathGuide {
   gpu::GuideHeader header{};
   std::vector<double> radiance;  // per cell and bin: the sum over every update so far
   std::vector<double> samples;   // per cell: vertices recorded
-  // Over the passes the guide sampled in, every cell's: the second moments and their counts (guide_training.glsl).
-  double momentGuided = 0.0, momentGuidedCount = 0.0;
-  double momentBsdf = 0.0, momentBsdfCount = 0.0;
+  // `auto`'s trial, every cell's: BSDF sampling's second moment and the guide's mixture's (guide_training.glsl).
+  double momentBsdf = 0.0;
+  double momentMixture = 0.0;
   std::uint32_t nextUpdate = 1;  // samples per pixel after which the distributions are rebuilt next
   PathGuideSummary summary;
 };

@@ -63,8 +63,8 @@ inline constexpr std::array<std::string_view, 3> kGuidingValues = {"off", "on", 
 inline constexpr ChoiceOption kGuidingOption{
     "guiding", kGuidingValues, "off",
     "path integrator: path guiding, a radiance cache learned over the first 64 spp that draws half the continuations "
-    "of diffuse surfaces towards where light came from; on: always; auto: only when a trial over the first 16 spp "
-    "measured at least 1.25x less variance than BSDF sampling; the image stays unbiased either way"};
+    "of diffuse surfaces towards where light came from; on: always; auto: after an unguided trial over the first 16 "
+    "spp, only if it estimated that the guide cuts the variance by 1.25x; the image stays unbiased either way"};
 
 inline constexpr std::array<std::string_view, 3> kDenoiseQualityValues = {"fast", "balanced", "high"};
 // Balanced by default: at 1280x720 with albedo and normal on 2 cores, 0.85 s against high's 2.0 s, for errors

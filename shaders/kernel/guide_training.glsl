@@ -20,23 +20,17 @@ void guideAdd(uint word, float value, float scale) {
 
 // Adds one vertex of a finished path whose radiance is `radianceEnd` (luminance). Y, the radiance the continuation
 // brought back over the throughput that reached the vertex, is f |cos| L_i / pdf: Y / fCos = L_i / pdf trains the
-// bin. For `auto`, Y^2 over every eligible vertex estimates the second moment of the continuations as drawn, and over
-// the continuations the BSDF drew, (Y pdf / pdfBsdf)^2 = (f |cos| L_i / pdfBsdf)^2 estimates BSDF sampling's alone:
-// its own samples, so no weight grows where the BSDF rarely goes (reweighting the guide's samples by pdf / pdfBsdf
-// did, and called guiding a 3x gain on a Cornell box where it gained nothing).
+// bin. In `auto`'s trial the BSDF drew every continuation: Y^2 estimates BSDF sampling's second moment, and
+// Y^2 pdf / pdfMixture the mixture's (E_p[Y^2 p / q] = E_q[(f |cos| L_i / q)^2], importance reweighting), with a
+// weight of at most 1 / (1 - share) = 2, so the estimate is no noisier than BSDF sampling's own.
 void guideSplat(GuideRecord r, float radianceEnd) {
   const uint cellWord = r.cell * kGuideTrainingWords;
   const float y = max(radianceEnd - r.radianceBefore, 0.0) / max(r.throughputBefore, 1e-20);
   if (r.fCos > 0.0) guideAdd(cellWord + r.bin, y / r.fCos, kGuideRadianceScale);
   guideAdd(cellWord + kGuideCountWord, 1.0, 1.0);
-  if ((r.flags & kGuideRecordEligible) == 0u) return;
+  if ((guide.mode & kGuideTrial) == 0u || (r.flags & kGuideRecordEligible) == 0u || !(r.pdfMixture > 0.0)) return;
   guideAdd(cellWord + kGuideMomentWord, y * y, kGuideMomentScale);
-  guideAdd(cellWord + kGuideMomentCountWord, 1.0, 1.0);
-  if ((r.flags & kGuideRecordFromBsdf) != 0u && r.pdfBsdf > 0.0) {
-    const float yBsdf = y * (r.pdf / r.pdfBsdf);
-    guideAdd(cellWord + kGuideBsdfMomentWord, yBsdf * yBsdf, kGuideMomentScale);
-    guideAdd(cellWord + kGuideBsdfCountWord, 1.0, 1.0);
-  }
+  guideAdd(cellWord + kGuideMixtureMomentWord, y * y * (r.pdf / r.pdfMixture), kGuideMomentScale);
 }
 
 // The record a continuation left in the payload, completed with where the continuation goes.

@@ -49,18 +49,17 @@ uint guideBin(vec3 direction) {
 // narrow lobes its own sampler follows better than a 16 x 16 histogram can).
 struct GuideVertex {
   uint cell;
-  bool eligible;  // in the grid with a diffuse lobe: guided once its cell has a distribution
-  float share;
+  bool eligible;  // in the grid with a diffuse lobe, its cell with a distribution
+  float share;    // of continuations drawn from the guide: guide.guideProbability where eligible and guiding
 };
 
 GuideVertex guideVertex(vec3 position, uint flags) {
   GuideVertex g = GuideVertex(kNoGuideCell, false, 0.0);
   if (!guidingCompiled()) return g;
   g.cell = guideCell(position);
-  g.eligible = g.cell != kNoGuideCell && (flags & kLobeDiffuse) != 0u;
-  if (g.eligible && (guide.mode & kGuideSampling) != 0u && guideCdf[g.cell * kGuideBins + kGuideBins - 1u] > 0.0) {
-    g.share = guide.guideProbability;
-  }
+  g.eligible = g.cell != kNoGuideCell && (flags & kLobeDiffuse) != 0u &&
+               guideCdf[g.cell * kGuideBins + kGuideBins - 1u] > 0.0;
+  if (g.eligible && (guide.mode & kGuideSampling) != 0u) g.share = guide.guideProbability;
   return g;
 }
 
@@ -99,16 +98,15 @@ float continuationPdf(GuideVertex g, MaterialRecord material, vec3 wiLocal, vec3
 struct GuidedSample {
   BsdfSample b;   // b.pdf: the mixture's density
   float pdfBsdf;  // BSDF sampling's density of the same direction
-  bool fromBsdf;  // the BSDF drew it (else the guide)
 };
 
 // The continuation of a guided vertex: from the guide with probability g.share (u.x; u.yz place it), else the BSDF's
 // own sample from uBsdf.
-GuidedSample guidedSample(GuideVertex g, MaterialRecord material, ShadingFrame frame, vec3 woLocal, vec3 uBsdf, vec3 u) {
+GuidedSample guidedSample(GuideVertex g, MaterialRecord material, ShadingFrame frame, vec3 woLocal, vec3 uBsdf,
+                          vec3 u) {
   GuidedSample s;
-  s.fromBsdf = !(u.x < g.share);
   vec3 wi;
-  if (!s.fromBsdf) {
+  if (u.x < g.share) {
     wi = guideSampleDirection(g.cell, u.yz);
     s.b.wi = toLocal(frame, wi);
     s.b.f = bsdfEval(material, s.b.wi, woLocal);
@@ -125,10 +123,16 @@ GuidedSample guidedSample(GuideVertex g, MaterialRecord material, ShadingFrame f
 
 // The training record of a continuation leaving a vertex: everything but where it went, which the raygen reads
 // from the path (its next segment's origin and direction).
-GuideRecord guideRecordOf(GuideVertex g, vec3 radiance, vec3 throughput, vec3 fCos, GuidedSample s, float delta) {
-  const uint flags = (g.eligible ? kGuideRecordEligible : 0u) | (s.fromBsdf ? kGuideRecordFromBsdf : 0u);
+// In `auto`'s trial the vertex samples the BSDF alone, and the record also keeps the density the guide's mixture
+// would have given the same direction.
+GuideRecord guideRecordOf(GuideVertex g, vec3 radiance, vec3 throughput, vec3 fCos, GuidedSample s, vec3 wi,
+                          float delta) {
+  float pdfMixture = s.b.pdf;
+  if (g.eligible && (guide.mode & kGuideTrial) != 0u) {
+    pdfMixture = guide.guideProbability * guidePdf(g.cell, wi) + (1.0 - guide.guideProbability) * s.pdfBsdf;
+  }
   return GuideRecord(g.cell, 0u, guideLuminance(radiance), guideLuminance(throughput), guideLuminance(fCos),
-                     (1.0 - delta) * s.b.pdf, (1.0 - delta) * s.pdfBsdf, flags);
+                     (1.0 - delta) * s.b.pdf, (1.0 - delta) * pdfMixture, g.eligible ? kGuideRecordEligible : 0u);
 }
 
 #endif

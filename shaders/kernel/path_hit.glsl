@@ -128,7 +128,7 @@ void closestHitPath(Hit hit, inout Payload p) {
     return;
   }
   // In a guided cell (kernel/guiding.glsl) the sample comes from the mixture of guide and BSDF, b.pdf the mixture's.
-  GuidedSample g = GuidedSample(noSample(), 0.0, true);
+  GuidedSample g = GuidedSample(noSample(), 0.0);
   if (guideHere.share > 0.0) {
     g = guidedSample(guideHere, material, frame, woLocal, u.xyz, rngNext4(p.path.rng).xyz);
   } else {
@@ -146,7 +146,7 @@ void closestHitPath(Hit hit, inout Payload p) {
   const vec3 fCos = (1.0 - delta) * b.f * abs(b.wi.z);
   if (guideTrains() && guideHere.cell != kNoGuideCell) {
     p.guideRecorded = true;
-    p.guideRecord = guideRecordOf(guideHere, p.path.radiance, p.path.throughput, fCos, g, delta);
+    p.guideRecord = guideRecordOf(guideHere, p.path.radiance, p.path.throughput, fCos, g, wi, delta);
   }
   continueOrEnd(p, offsetRayOrigin(s.position, leavingSide(ng, wi)), wi, p.path.throughput * b.f * (abs(b.wi.z) / b.pdf));
 }

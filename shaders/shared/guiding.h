@@ -10,9 +10,9 @@
 
 RL_NAMESPACE_BEGIN
 
-RL_CONST uint kBindingGuide = 30;          // GuideHeader, then float cdf[cells * kGuideBins]: the sampling distributions
-RL_CONST uint kBindingGuideTraining = 31;  // uint64 sums, kGuideTrainingWords per cell (fixed point, see below)
-RL_CONST uint kBindingGuideTrails = 32;    // GuideRecord[kGuideTrailLength per wave slot]: the wavefront's paths' vertices
+RL_CONST uint kBindingGuide = 30;          // GuideHeader, then float cdf[cells * kGuideBins]: the distributions
+RL_CONST uint kBindingGuideTraining = 31;  // 64-bit sums as uint pairs, kGuideTrainingWords per cell (see below)
+RL_CONST uint kBindingGuideTrails = 32;    // GuideRecord[kGuideTrailLength per wave slot]: the wavefront's vertices
 
 // The grid's cells are cubes, as small as keeps their number within kGuideCells over the scene's bounds: on a flat
 // scene (a floor with objects) they follow the objects' scale rather than the floor's.
@@ -23,14 +23,12 @@ RL_CONST uint kGuideBins = kGuideDirectionSide * kGuideDirectionSide;
 RL_CONST uint kGuideTrailLength = 4;
 
 // Training words per cell: the bins' sums of incident radiance over sampling density (estimates of each bin's
-// integral of L_i), the cell's count of recorded vertices, and for `auto` the second moments of the guided vertices'
-// samples as drawn (with their count) and of BSDF sampling alone, from the samples the BSDF drew (with theirs).
-RL_CONST uint kGuideTrainingWords = kGuideBins + 5;
+// integral of L_i), the cell's count of recorded vertices, and during `auto`'s trial the second moments of BSDF
+// sampling, as drawn, and of the mixture the guide would make, by importance reweighting of the same samples.
+RL_CONST uint kGuideTrainingWords = kGuideBins + 3;
 RL_CONST uint kGuideCountWord = kGuideBins;
-RL_CONST uint kGuideMomentWord = kGuideBins + 1;       // sum of Y^2 over eligible vertices, Y as drawn
-RL_CONST uint kGuideMomentCountWord = kGuideBins + 2;  // their count
-RL_CONST uint kGuideBsdfMomentWord = kGuideBins + 3;   // sum of (Y p / p_bsdf)^2 over those the BSDF drew
-RL_CONST uint kGuideBsdfCountWord = kGuideBins + 4;    // their count
+RL_CONST uint kGuideMomentWord = kGuideBins + 1;         // sum of Y^2 over eligible vertices, Y as drawn
+RL_CONST uint kGuideMixtureMomentWord = kGuideBins + 2;  // sum of Y^2 pdf / pdfMixture: the mixture's, had it drawn
 // Fixed-point scales of the sums: integer atomics add in any order to the same bits, so a guided image depends on
 // its seed only (float atomics would make every run differ).
 RL_CONST float kGuideRadianceScale = 4096.0;
@@ -39,12 +37,12 @@ RL_CONST float kGuideMomentScale = 1024.0;
 RL_CONST float kGuideMaxUnits = 1099511627776.0;  // 2^40
 
 // GuideRecord.flags bits.
-RL_CONST uint kGuideRecordEligible = 1;  // the vertex may be guided (its second moments inform `auto`)
-RL_CONST uint kGuideRecordFromBsdf = 2;  // the BSDF drew the continuation (not the guide)
+RL_CONST uint kGuideRecordEligible = 1;  // the vertex may be guided, and its cell has a distribution
 
 // GuideHeader.mode bits.
 RL_CONST uint kGuideSampling = 1;  // cells with a distribution guide their continuations
 RL_CONST uint kGuideTraining = 2;  // the kernel records paths' vertices into the training sums
+RL_CONST uint kGuideTrial = 4;     // `auto`'s trial: BSDF sampling only, the guide's mixture density recorded beside
 
 struct GuideHeader {
   vec3 gridMin;    // the scene's bounds, a little enlarged
@@ -66,7 +64,7 @@ struct GuideRecord {
   float throughputBefore;  // luminance of the throughput that reached the vertex
   float fCos;              // luminance of f |cos| of the continuation (with the mirror weight's (1 - delta))
   float pdf;               // the density it was drawn with (mixture where guided, (1 - delta) included)
-  float pdfBsdf;           // the density BSDF sampling alone gives it
+  float pdfMixture;        // in `auto`'s trial, the density the guide's mixture would have given it
   uint flags;              // kGuideRecord... bits
 };
 RL_CHECK_SIZE(GuideRecord, 32);
