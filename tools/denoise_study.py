@@ -25,7 +25,6 @@ from __future__ import annotations
 
 import argparse
 import csv
-import hashlib
 import json
 import os
 import shutil
@@ -41,29 +40,12 @@ try:
     import matplotlib.pyplot as plt
     import numpy as np
     import raylab
-    from image_error import TARGET, clamped_relmse, cpu_seconds, time_to
+    from image_error import REFERENCE_SEED, TARGET, clamped_relmse, cpu_seconds, reference, scene_path, time_to
 except ImportError as missing:
     sys.exit(f"{Path(sys.argv[0]).name}: error: {venv_hint(missing.name)}")
 
-REFERENCE_SEED = 1000
 SCENES = ("cornell_box_area", "cornell_box", "minimal", "showcase", "showcase_hdri", "showcase_modern",
           "showcase_layered")
-
-
-def scene_path(name: str) -> Path:
-    return REPO / "assets" / "scenes" / f"{name}.gltf"
-
-
-def reference(name: str, width: int, height: int, spp: int, out: Path) -> np.ndarray:
-    digest = hashlib.sha256(scene_path(name).read_bytes()).hexdigest()[:12]
-    cached = out / "reference" / f"{name}_{width}x{height}_{spp}spp_{digest}.exr"
-    if cached.exists():
-        return raylab.read_exr(str(cached))
-    print(f"  reference: {spp} spp", flush=True)
-    image = raylab.Renderer(raylab.Scene.load(str(scene_path(name))), width=width, height=height).render(
-        spp=spp, seed=REFERENCE_SEED)
-    raylab.write_exr(str(cached), image)
-    return image
 
 
 def per_sample_cpu(renderer, spp: int) -> float:

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import argparse
 import csv
-import hashlib
 import json
 import os
 import shutil
@@ -39,31 +38,14 @@ try:
     import matplotlib.pyplot as plt
     import numpy as np
     import raylab
-    from image_error import EPSILON, TARGET, clamped_relmse, time_to
+    from image_error import EPSILON, TARGET, clamped_relmse, reference, scene_path, time_to
 except ImportError as missing:
     sys.exit(f"{Path(sys.argv[0]).name}: error: {venv_hint(missing.name)}")
 
-REFERENCE_SEED = 1000
 SCENES = ("showcase_modern", "glossy_room", "cornell_box_area")
 SURVEY_SCENES = ("glossy_room", "cornell_box_area", "cornell_box", "minimal", "showcase", "showcase_hdri",
                  "showcase_modern", "showcase_layered")
 MODES = raylab.render_options["guiding"]["values"]
-
-
-def scene_path(name: str) -> Path:
-    return REPO / "assets" / "scenes" / f"{name}.gltf"
-
-
-def reference(name: str, width: int, height: int, spp: int, out: Path) -> np.ndarray:
-    digest = hashlib.sha256(scene_path(name).read_bytes()).hexdigest()[:12]
-    cached = out / "reference" / f"{name}_{width}x{height}_{spp}spp_{digest}.exr"
-    if cached.exists():
-        return raylab.read_exr(str(cached))
-    print(f"  reference: {spp} spp, unguided", flush=True)
-    image = raylab.Renderer(raylab.Scene.load(str(scene_path(name))), width=width, height=height).render(
-        spp=spp, seed=REFERENCE_SEED)
-    raylab.write_exr(str(cached), image)
-    return image
 
 
 def ladder(max_spp: int) -> list[int]:

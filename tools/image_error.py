@@ -1,15 +1,40 @@
 """The error a user sees and how soon a renderer reaches it, shared by the speed-against-error studies
 (tools/denoise_study.py, tools/guiding_study.py): every channel clamped at 1 in image and reference, then
-relMSE = mean((x - r)^2 / (r^2 + 0.01)); a firefly costs at most one clamped pixel, as on screen."""
+relMSE = mean((x - r)^2 / (r^2 + 0.01)); a firefly costs at most one clamped pixel, as on screen. And the
+committed scenes' references, rendered once and cached by the scene file's hash."""
 from __future__ import annotations
 
+import hashlib
 import math
 import time
+from pathlib import Path
 
 import numpy as np
+import raylab
+
+from raylab_tools import REPO
 
 EPSILON = 0.01
 TARGET = 1e-2  # the clamped relMSE of issue 39's targets
+REFERENCE_SEED = 1000
+
+
+def scene_path(name: str) -> Path:
+    return REPO / "assets" / "scenes" / f"{name}.gltf"
+
+
+def reference(name: str, width: int, height: int, spp: int, out: Path) -> np.ndarray:
+    """The default renderer's image of committed scene `name` at `spp` (unguided, seed REFERENCE_SEED), from
+    OUT/reference/ when an earlier run of the same scene file made it."""
+    digest = hashlib.sha256(scene_path(name).read_bytes()).hexdigest()[:12]
+    cached = out / "reference" / f"{name}_{width}x{height}_{spp}spp_{digest}.exr"
+    if cached.exists():
+        return raylab.read_exr(str(cached))
+    print(f"  reference: {spp} spp", flush=True)
+    image = raylab.Renderer(raylab.Scene.load(str(scene_path(name))), width=width, height=height).render(
+        spp=spp, seed=REFERENCE_SEED)
+    raylab.write_exr(str(cached), image)
+    return image
 
 
 def clamped_relmse(image: np.ndarray, reference: np.ndarray) -> float:
