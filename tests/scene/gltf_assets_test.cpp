@@ -23,6 +23,7 @@ struct Expected {
 const std::map<std::string, Expected> kExpected = {
     {"cornell_box", {2, 1, 5}},
     {"cornell_box_area", {2, 0, 6}},  // lit by its emissive quad only: no default light
+    {"glossy_room", {1, 0, 14}},      // likewise: a lamp quad in a tray of eight, the room's five walls
     {"minimal", {1, 1, 1}},
     {"showcase", {10, 3, 2}},
     {"showcase_hdri", {10, 0, 2}},  // lit by its environment image only: no default light
