@@ -1,7 +1,7 @@
 // Path guiding (kernel/guiding.glsl, render/path_guide.h) changes how continuations are drawn, never what the path
-// integrator converges to: on every committed scene a guided render and an unguided one are two estimators of one
-// image (t-tests over regions). The guide's sums are integer, so a guided render depends on its seed only: both
-// backends give the same bits. `auto` decides after its trial and says what it measured.
+// integrator converges to: on the committed path-traced scenes a guided render and an unguided one are two
+// estimators of one image (t-tests over regions). The guide's sums are integer, so a guided render depends on its
+// seed only: both backends give the same bits. `auto` decides after its trial and says what it measured.
 #include <gtest/gtest.h>
 
 #include <string>
