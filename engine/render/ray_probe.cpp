@@ -37,7 +37,7 @@ RayProbe createRayProbe(const Device& device, const GpuScene& gpuScene, std::uin
   bindings.push_back({gpu::kBindingProbeHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
   probe.kernel = createTraceKernel(device, backend, kProbePrograms, bindings, sizeof(gpu::ProbeParams), gpuScene);
   try {
-    replaceTracePipeline(device, probe.kernel, createTracePipeline(device, probe.kernel, nullptr));
+    replaceTracePipeline(device, probe.kernel, acquireTracePipeline(device, probe.kernel, nullptr));
   } catch (...) {
     destroyTraceKernel(device, probe.kernel);
     throw;

@@ -209,25 +209,26 @@ RenderPipelines createRenderPipelines(const Device& device, const Renderer& rend
   SpecializationConstants constants = specializationFor(kernel);
   RenderPipelines pipelines;
   // Only the one the schedule runs: on lavapipe creating a pipeline costs about 0.3 s of SPIR-V translation
-  // and optimisation, every run (Mesa's disk cache keeps only the LLVM compilation of its first dispatch).
+  // and optimisation (Mesa's disk cache keeps only the LLVM compilation of its first dispatch); one created
+  // before on this device is found in its store (vk/pipeline_store.h).
   if (usesWavefront(renderer.schedule, kernel, renderer.trace.backend, renderer.lightEscapes)) {
-    pipelines.wavefront = createComputePipeline(device, renderer.trace.pipelineLayout, "wavefront.comp", &constants);
+    pipelines.wavefront = acquireComputePipeline(device, renderer.trace.pipelineLayout, "wavefront.comp", &constants);
   } else {
-    pipelines.trace = createTracePipeline(device, renderer.trace, &constants);
+    pipelines.trace = acquireTracePipeline(device, renderer.trace, &constants);
   }
   return pipelines;
 }
 
 void destroyRenderPipelines(const Device& device, RenderPipelines& pipelines) {
-  if (pipelines.trace != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, pipelines.trace, nullptr);
-  if (pipelines.wavefront != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, pipelines.wavefront, nullptr);
+  releasePipeline(device, pipelines.trace);
+  releasePipeline(device, pipelines.wavefront);
   pipelines = {};
 }
 
 void swapRenderPipelines(const Device& device, Renderer& renderer, RenderPipelines pipelines,
                          const KernelFeatures& kernel) {
   replaceTracePipeline(device, renderer.trace, pipelines.trace);
-  if (renderer.wavefront.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, renderer.wavefront.pipeline, nullptr);
+  releasePipeline(device, renderer.wavefront.pipeline);
   renderer.wavefront.pipeline = pipelines.wavefront;
   renderer.kernel = kernel;
   prepareWavefront(device, renderer);

@@ -47,8 +47,8 @@ TraceKernel createTraceKernel(const Device& device, Backend backend, const Trace
   kernel.stages = backend == Backend::kPipeline ? kRayTracingStages : VkShaderStageFlags{VK_SHADER_STAGE_COMPUTE_BIT};
   const std::string name = kernelName(kernel);
   try {
-    kernel.setLayout = createDescriptorSetLayout(device, bindings, (name + " set layout").c_str(), kernel.stages);
-    kernel.pipelineLayout = createPipelineLayout(device, kernel.setLayout, pushConstantBytes,
+    kernel.setLayout = descriptorSetLayoutFor(device, bindings, (name + " set layout").c_str(), kernel.stages);
+    kernel.pipelineLayout = pipelineLayoutFor(device, kernel.setLayout, pushConstantBytes,
                                                  (name + " pipeline layout").c_str(), kernel.stages);
     kernel.descriptors = allocateDescriptorSet(device, kernel.setLayout, bindings, (name + " set").c_str());
     if (backend == Backend::kPipeline) {
@@ -65,18 +65,16 @@ TraceKernel createTraceKernel(const Device& device, Backend backend, const Trace
 void destroyTraceKernel(const Device& device, TraceKernel& kernel) {
   destroyShaderBindingTable(device, kernel.sbt);
   destroyDescriptorSet(device, kernel.descriptors);
-  if (kernel.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, kernel.pipeline, nullptr);
-  if (kernel.pipelineLayout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device.handle, kernel.pipelineLayout, nullptr);
-  if (kernel.setLayout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device.handle, kernel.setLayout, nullptr);
+  releasePipeline(device, kernel.pipeline);  // the layouts are the device's (vk/pipeline_store.h)
   kernel = {};
 }
 
-VkPipeline createTracePipeline(const Device& device, const TraceKernel& kernel, SpecializationConstants* constants) {
+VkPipeline acquireTracePipeline(const Device& device, const TraceKernel& kernel, SpecializationConstants* constants) {
   if (kernel.backend == Backend::kPipeline) {
-    return createRayTracingPipeline(device, kernel.pipelineLayout, kernel.programs->pipeline, constants,
+    return acquireRayTracingPipeline(device, kernel.pipelineLayout, kernel.programs->pipeline, constants,
                                     kernelName(kernel).c_str());
   }
-  return createComputePipeline(device, kernel.pipelineLayout, kernel.programs->compute, constants);
+  return acquireComputePipeline(device, kernel.pipelineLayout, kernel.programs->compute, constants);
 }
 
 void replaceTracePipeline(const Device& device, TraceKernel& kernel, VkPipeline pipeline) {
@@ -87,13 +85,13 @@ void replaceTracePipeline(const Device& device, TraceKernel& kernel, VkPipeline 
       sbt = createShaderBindingTable(device, pipeline, kernel.programs->pipeline, kernel.hitRecords,
                                      sizeof(gpu::HitGroupData), (kernelName(kernel) + " SBT").c_str());
     } catch (...) {
-      vkDestroyPipeline(device.handle, pipeline, nullptr);
+      releasePipeline(device, pipeline);
       throw;
     }
     destroyShaderBindingTable(device, kernel.sbt);
     kernel.sbt = sbt;
   }
-  if (kernel.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, kernel.pipeline, nullptr);
+  releasePipeline(device, kernel.pipeline);
   kernel.pipeline = pipeline;
 }
 

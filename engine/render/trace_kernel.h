@@ -41,7 +41,7 @@ struct TraceKernel {
   PFN_vkCmdTraceRaysKHR cmdTraceRays = nullptr;
 };
 
-// The layouts and the set, without a pipeline yet (createTracePipeline, replaceTracePipeline). `programs` must
+// The layouts and the set, without a pipeline yet (acquireTracePipeline, replaceTracePipeline). `programs` must
 // outlive the kernel. The scene's TLAS instances decide the hit records; its buffers are not bound here
 // (writeSceneDescriptors does that).
 TraceKernel createTraceKernel(const Device& device, Backend backend, const TracePrograms& programs,
@@ -49,10 +49,11 @@ TraceKernel createTraceKernel(const Device& device, Backend backend, const Trace
                               const GpuScene& gpuScene);
 void destroyTraceKernel(const Device& device, TraceKernel& kernel);
 
-// A pipeline of the kernel's layout with other specialization constants; thread-safe, for building one in the
-// background (the viewer). On lavapipe the driver compiles it at its first use, not here.
-VkPipeline createTracePipeline(const Device& device, const TraceKernel& kernel, SpecializationConstants* constants);
-// Installs `pipeline` (the old one is destroyed: the device must not be using it; VK_NULL_HANDLE leaves none);
+// A pipeline of the kernel's layout with other specialization constants, the device's stored one where it built it
+// before (vk/pipeline_store.h); thread-safe, for building one in the background (the viewer). On lavapipe the
+// driver compiles a new one at its first use, not here.
+VkPipeline acquireTracePipeline(const Device& device, const TraceKernel& kernel, SpecializationConstants* constants);
+// Installs `pipeline` (the old one is released: the device must not be using it; VK_NULL_HANDLE leaves none);
 // the pipeline backend rebuilds its shader binding table, whose handles belong to the pipeline.
 void replaceTracePipeline(const Device& device, TraceKernel& kernel, VkPipeline pipeline);
 

@@ -115,7 +115,7 @@ void destroyWavefront(const Device& device, Wavefront& wavefront) {
   destroyBuffer(device, wavefront.aovs);
   destroyBuffer(device, wavefront.results);
   destroyBuffer(device, wavefront.states);
-  if (wavefront.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, wavefront.pipeline, nullptr);
+  releasePipeline(device, wavefront.pipeline);
   wavefront = {};
 }
 

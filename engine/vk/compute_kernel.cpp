@@ -10,19 +10,17 @@ ComputeKernel createComputeKernel(const Device& device, std::string_view kernelN
   const std::string name(kernelName);
   ComputeKernel kernel;
   kernel.pushConstantBytes = pushConstantBytes;
-  kernel.setLayout = createDescriptorSetLayout(device, bindings, (name + " set layout").c_str());
+  kernel.setLayout = descriptorSetLayoutFor(device, bindings, (name + " set layout").c_str());
   kernel.pipelineLayout =
-      createPipelineLayout(device, kernel.setLayout, pushConstantBytes, (name + " pipeline layout").c_str());
-  kernel.pipeline = createComputePipeline(device, kernel.pipelineLayout, kernelName, constants);
+      pipelineLayoutFor(device, kernel.setLayout, pushConstantBytes, (name + " pipeline layout").c_str());
+  kernel.pipeline = acquireComputePipeline(device, kernel.pipelineLayout, kernelName, constants);
   kernel.descriptors = allocateDescriptorSet(device, kernel.setLayout, bindings, (name + " set").c_str());
   return kernel;
 }
 
 void destroyComputeKernel(const Device& device, ComputeKernel& kernel) {
   destroyDescriptorSet(device, kernel.descriptors);
-  if (kernel.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.handle, kernel.pipeline, nullptr);
-  if (kernel.pipelineLayout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device.handle, kernel.pipelineLayout, nullptr);
-  if (kernel.setLayout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device.handle, kernel.setLayout, nullptr);
+  releasePipeline(device, kernel.pipeline);  // the layouts are the device's (vk/pipeline_store.h)
   kernel = {};
 }
 

@@ -8,6 +8,7 @@
 
 #include "util/error.h"
 #include "vk/driver_shader_cache.h"
+#include "vk/pipeline_store.h"
 #include "vk/vk_check.h"
 
 namespace raylab {
@@ -441,12 +442,14 @@ Device createDevice(const Instance& instance, const DeviceReport& report, VkSurf
   VK_CHECK(vkCreateCommandPool(device.handle, &poolInfo, nullptr, &device.commandPool));
   VkPipelineCacheCreateInfo cacheInfo{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
   VK_CHECK(vkCreatePipelineCache(device.handle, &cacheInfo, nullptr, &device.pipelineCache));
+  device.pipelines = std::make_shared<PipelineStore>();
   return device;
 }
 
 void destroyDevice(Device& device) {
   if (device.handle == VK_NULL_HANDLE) return;
   vkDeviceWaitIdle(device.handle);
+  if (device.pipelines) device.pipelines->destroyAll(device.handle);
   vkDestroyPipelineCache(device.handle, device.pipelineCache, nullptr);
   vkDestroyCommandPool(device.handle, device.commandPool, nullptr);
   vkDestroyDevice(device.handle, nullptr);

@@ -6,11 +6,14 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace raylab {
+
+class PipelineStore;  // vk/pipeline_store.h
 
 struct InstanceOptions {
   bool validation = false;                   // also forced on by RAYLAB_VALIDATION=1
@@ -79,9 +82,12 @@ struct Device {
   VkQueue queue = VK_NULL_HANDLE;  // graphics+compute where available: the viewer presents from it too
   std::uint32_t queueFamily = 0;
   VkCommandPool commandPool = VK_NULL_HANDLE;
-  // Every pipeline of the process is created through it: a kernel variant created again (the viewer's swaps, a
-  // test's many renders) is found in memory instead of compiled from SPIR-V again.
+  // Every pipeline is created through it. On lavapipe it saves nothing measurable (a kernel created again is
+  // translated from SPIR-V again); `pipelines` is what finds a kernel built before.
   VkPipelineCache pipelineCache = VK_NULL_HANDLE;
+  // The layouts and the pipelines the device has built, for reuse (vk/pipeline_store.h); shared by copies of
+  // this struct, destroyed by destroyDevice.
+  std::shared_ptr<PipelineStore> pipelines;
   DeviceReport report;
   VkPhysicalDeviceProperties properties{};
   VkPhysicalDeviceMemoryProperties memory{};

@@ -1,10 +1,13 @@
 #include "vk/pipeline.h"
 
+#include <chrono>
 #include <string>
 
 #include "shader_registry.h"
 #include "util/error.h"
 #include "vk/debug_name.h"
+#include "vk/kernel_log.h"
+#include "vk/pipeline_store.h"
 #include "vk/spirv_specialization.h"
 #include "vk/vk_check.h"
 
@@ -36,44 +39,78 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> SpecializationConstants::va
   return pairs;
 }
 
-VkDescriptorSetLayout createDescriptorSetLayout(const Device& device, std::span<const DescriptorBinding> bindings,
-                                                const char* name, VkShaderStageFlags stages) {
-  std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
-  for (const DescriptorBinding& binding : bindings) {
-    layoutBindings.push_back({binding.binding, binding.type, 1, stages, nullptr});
-  }
-  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  info.bindingCount = static_cast<std::uint32_t>(layoutBindings.size());
-  info.pBindings = layoutBindings.data();
-  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateDescriptorSetLayout(device.handle, &info, nullptr, &layout));
-  setDebugName(device, layout, name);
-  return layout;
+PipelineStore& storeOf(const Device& device) {
+  if (!device.pipelines) throw Error("the device has no pipeline store: it was not made by createDevice");
+  return *device.pipelines;
 }
 
-VkPipelineLayout createPipelineLayout(const Device& device, VkDescriptorSetLayout setLayout,
-                                      std::uint32_t pushConstantBytes, const char* name, VkShaderStageFlags stages) {
-  const VkPushConstantRange range{stages, 0, pushConstantBytes};
-  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  info.setLayoutCount = 1;
-  info.pSetLayouts = &setLayout;
-  info.pushConstantRangeCount = pushConstantBytes > 0 ? 1 : 0;
-  info.pPushConstantRanges = &range;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  VK_CHECK(vkCreatePipelineLayout(device.handle, &info, nullptr, &layout));
-  setDebugName(device, layout, name);
-  return layout;
+VkDescriptorSetLayout descriptorSetLayoutFor(const Device& device, std::span<const DescriptorBinding> bindings,
+                                             const char* name, VkShaderStageFlags stages) {
+  std::string key = "stages " + std::to_string(stages);
+  for (const DescriptorBinding& binding : bindings) {
+    key += " " + std::to_string(binding.binding) + ":" + std::to_string(binding.type);
+  }
+  return storeOf(device).setLayout(key, [&] {
+    std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
+    for (const DescriptorBinding& binding : bindings) {
+      layoutBindings.push_back({binding.binding, binding.type, 1, stages, nullptr});
+    }
+    VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    info.bindingCount = static_cast<std::uint32_t>(layoutBindings.size());
+    info.pBindings = layoutBindings.data();
+    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateDescriptorSetLayout(device.handle, &info, nullptr, &layout));
+    setDebugName(device, layout, name);
+    return layout;
+  });
+}
+
+VkPipelineLayout pipelineLayoutFor(const Device& device, VkDescriptorSetLayout setLayout,
+                                   std::uint32_t pushConstantBytes, const char* name, VkShaderStageFlags stages) {
+  const std::string key = std::to_string(reinterpret_cast<std::uintptr_t>(setLayout)) + " push " +
+                          std::to_string(pushConstantBytes) + " stages " + std::to_string(stages);
+  return storeOf(device).pipelineLayout(key, [&] {
+    const VkPushConstantRange range{stages, 0, pushConstantBytes};
+    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    info.setLayoutCount = 1;
+    info.pSetLayouts = &setLayout;
+    info.pushConstantRangeCount = pushConstantBytes > 0 ? 1 : 0;
+    info.pPushConstantRanges = &range;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreatePipelineLayout(device.handle, &info, nullptr, &layout));
+    setDebugName(device, layout, name);
+    return layout;
+  });
+}
+
+namespace {
+
+// The kernel's SPIR-V with `constants` applied; `storage` holds it when they are given.
+std::span<const std::uint32_t> specializedSpirv(std::string_view kernelName, const SpecializationConstants* constants,
+                                                std::vector<std::uint32_t>& storage) {
+  std::span<const std::uint32_t> spirv = embeddedSpirv(kernelName);
+  if (spirv.empty()) throw Error("kernel " + std::string(kernelName) + " is not embedded in this build");
+  if (constants == nullptr) return spirv;
+  storage = specializeSpirv(spirv, constants->values(), kernelName);
+  return storage;
+}
+
+}  // namespace
+
+std::uint64_t specializedKernelDigest(std::string_view kernelName, const SpecializationConstants* constants,
+                                      std::uint64_t digest) {
+  std::vector<std::uint32_t> storage;
+  digest = kernelDigest(specializedSpirv(kernelName, constants, storage), digest);
+  if (constants == nullptr) return digest;
+  std::vector<std::uint32_t> values;
+  for (const auto& [id, value] : constants->values()) values.insert(values.end(), {id, value});
+  return kernelDigest(values, digest);
 }
 
 VkShaderModule createShaderModule(const Device& device, std::string_view kernelName,
                                   const SpecializationConstants* constants) {
-  std::span<const std::uint32_t> spirv = embeddedSpirv(kernelName);
-  if (spirv.empty()) throw Error("kernel " + std::string(kernelName) + " is not embedded in this build");
-  std::vector<std::uint32_t> specialized;
-  if (constants != nullptr) {
-    specialized = specializeSpirv(spirv, constants->values(), kernelName);
-    spirv = specialized;
-  }
+  std::vector<std::uint32_t> storage;
+  const std::span<const std::uint32_t> spirv = specializedSpirv(kernelName, constants, storage);
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   moduleInfo.codeSize = spirv.size_bytes();
   moduleInfo.pCode = spirv.data();
@@ -83,26 +120,44 @@ VkShaderModule createShaderModule(const Device& device, std::string_view kernelN
   return module;
 }
 
-VkPipeline createComputePipeline(const Device& device, VkPipelineLayout layout, std::string_view kernelName,
-                                 SpecializationConstants* constants) {
-  const std::string name(kernelName);
-  const VkShaderModule module = createShaderModule(device, kernelName, constants);
+std::string kernelKey(std::string_view kernelName, const SpecializationConstants* constants) {
+  std::string key(kernelName);
+  if (constants == nullptr) return key;
+  for (const auto& [id, value] : constants->values()) key += " " + std::to_string(id) + "=" + std::to_string(value);
+  return key;
+}
 
-  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  info.stage.module = module;
-  info.stage.pName = "main";
-  info.stage.pSpecializationInfo = constants != nullptr ? constants->info() : nullptr;
-  info.layout = layout;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  const VkResult result = injectedCreationFailure("vkCreateComputePipelines")
-                              ? VK_ERROR_OUT_OF_DEVICE_MEMORY
-                              : vkCreateComputePipelines(device.handle, device.pipelineCache, 1, &info, nullptr, &pipeline);
-  vkDestroyShaderModule(device.handle, module, nullptr);
-  VK_CHECK(result);
-  setDebugName(device, pipeline, name.c_str());
-  return pipeline;
+VkPipeline acquireComputePipeline(const Device& device, VkPipelineLayout layout, std::string_view kernelName,
+                                  SpecializationConstants* constants) {
+  return storeOf(device).acquire(device.handle, layout, "compute " + kernelKey(kernelName, constants), [&] {
+    const std::string name(kernelName);
+    const VkShaderModule module = createShaderModule(device, kernelName, constants);
+    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module;
+    info.stage.pName = "main";
+    info.stage.pSpecializationInfo = constants != nullptr ? constants->info() : nullptr;
+    info.layout = layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    const auto started = std::chrono::steady_clock::now();
+    const VkResult result =
+        injectedCreationFailure("vkCreateComputePipelines")
+            ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+            : vkCreateComputePipelines(device.handle, device.pipelineCache, 1, &info, nullptr, &pipeline);
+    if (kernelLogPath() != nullptr && result == VK_SUCCESS) {
+      logKernelCompilation(kernelName, specializedKernelDigest(kernelName, constants, kernelDigest({})),
+                           std::chrono::steady_clock::now() - started);
+    }
+    vkDestroyShaderModule(device.handle, module, nullptr);
+    VK_CHECK(result);
+    setDebugName(device, pipeline, name.c_str());
+    return pipeline;
+  });
+}
+
+void releasePipeline(const Device& device, VkPipeline pipeline) {
+  if (pipeline != VK_NULL_HANDLE) storeOf(device).release(device.handle, pipeline);
 }
 
 DescriptorSet allocateDescriptorSet(const Device& device, VkDescriptorSetLayout layout,

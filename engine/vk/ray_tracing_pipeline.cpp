@@ -1,11 +1,14 @@
 #include "vk/ray_tracing_pipeline.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <string>
 
 #include "util/error.h"
 #include "vk/debug_name.h"
+#include "vk/kernel_log.h"
+#include "vk/pipeline.h"
 #include "vk/vk_check.h"
 
 namespace raylab {
@@ -40,7 +43,7 @@ std::uint32_t groupCount(const RayTracingProgram& program) {
 
 }  // namespace
 
-VkPipeline createRayTracingPipeline(const Device& device, VkPipelineLayout layout, const RayTracingProgram& program,
+VkPipeline acquireRayTracingPipeline(const Device& device, VkPipelineLayout layout, const RayTracingProgram& program,
                                     SpecializationConstants* constants, const char* name) {
   if (!device.rayTracingPipelines) {
     throw Error(std::string("the device was created without ray-tracing pipelines; ") + name + " needs them");
@@ -49,49 +52,70 @@ VkPipeline createRayTracingPipeline(const Device& device, VkPipelineLayout layou
     throw Error(std::string(name) + " needs a ray recursion depth of " + std::to_string(program.maxRecursionDepth) +
                 ", over this device's maxRayRecursionDepth of " + std::to_string(device.report.maxRayRecursionDepth));
   }
-  // Stages in order: raygen, misses, then each hit group's closest hit, any hit and intersection; groups likewise.
-  std::vector<VkShaderModule> modules;
-  std::vector<VkPipelineShaderStageCreateInfo> stages;
-  std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
-  const auto addStage = [&](std::string_view kernel, VkShaderStageFlagBits stage) {
-    modules.push_back(createShaderModule(device, kernel, constants));
-    stages.push_back(stageInfo(stage, modules.back(), constants));
-    return static_cast<std::uint32_t>(stages.size() - 1);
-  };
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  try {
-    groups.push_back(generalGroup(addStage(program.raygen, VK_SHADER_STAGE_RAYGEN_BIT_KHR)));
-    for (std::string_view miss : program.misses) groups.push_back(generalGroup(addStage(miss, VK_SHADER_STAGE_MISS_BIT_KHR)));
-    for (const RayTracingProgram::HitGroup& hitGroup : program.hitGroups) {
-      VkRayTracingShaderGroupCreateInfoKHR group{VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
-      group.type = hitGroup.intersection.empty() ? VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR
-                                                 : VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR;
-      group.generalShader = VK_SHADER_UNUSED_KHR;
-      group.closestHitShader = addStage(hitGroup.closestHit, VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR);
-      group.anyHitShader =
-          hitGroup.anyHit.empty() ? VK_SHADER_UNUSED_KHR : addStage(hitGroup.anyHit, VK_SHADER_STAGE_ANY_HIT_BIT_KHR);
-      group.intersectionShader = hitGroup.intersection.empty()
-                                     ? VK_SHADER_UNUSED_KHR
-                                     : addStage(hitGroup.intersection, VK_SHADER_STAGE_INTERSECTION_BIT_KHR);
-      groups.push_back(group);
-    }
-
-    VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
-    info.stageCount = static_cast<std::uint32_t>(stages.size());
-    info.pStages = stages.data();
-    info.groupCount = static_cast<std::uint32_t>(groups.size());
-    info.pGroups = groups.data();
-    info.maxPipelineRayRecursionDepth = program.maxRecursionDepth;
-    info.layout = layout;
-    VK_CHECK(device.ext.createRayTracingPipelines(device.handle, VK_NULL_HANDLE, device.pipelineCache, 1, &info, nullptr,
-                                                  &pipeline));
-  } catch (...) {
-    for (VkShaderModule module : modules) vkDestroyShaderModule(device.handle, module, nullptr);
-    throw;
+  // The key: every stage's kernel in order, the recursion depth and the constants.
+  std::string key = "ray tracing depth " + std::to_string(program.maxRecursionDepth) + " " +
+                    kernelKey(program.raygen, constants);
+  for (std::string_view miss : program.misses) key += " miss " + std::string(miss);
+  for (const RayTracingProgram::HitGroup& hitGroup : program.hitGroups) {
+    key += " group " + std::string(hitGroup.closestHit) + "," + std::string(hitGroup.anyHit) + "," +
+           std::string(hitGroup.intersection);
   }
-  for (VkShaderModule module : modules) vkDestroyShaderModule(device.handle, module, nullptr);
-  setDebugName(device, pipeline, name);
-  return pipeline;
+  return storeOf(device).acquire(device.handle, layout, key, [&] {
+    // Stages in order: raygen, misses, then each hit group's closest hit, any hit and intersection; groups likewise.
+    std::vector<VkShaderModule> modules;
+    std::vector<VkPipelineShaderStageCreateInfo> stages;
+    std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
+    const auto addStage = [&](std::string_view kernel, VkShaderStageFlagBits stage) {
+      modules.push_back(createShaderModule(device, kernel, constants));
+      stages.push_back(stageInfo(stage, modules.back(), constants));
+      return static_cast<std::uint32_t>(stages.size() - 1);
+    };
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    try {
+      groups.push_back(generalGroup(addStage(program.raygen, VK_SHADER_STAGE_RAYGEN_BIT_KHR)));
+      for (std::string_view miss : program.misses) groups.push_back(generalGroup(addStage(miss, VK_SHADER_STAGE_MISS_BIT_KHR)));
+      for (const RayTracingProgram::HitGroup& hitGroup : program.hitGroups) {
+        VkRayTracingShaderGroupCreateInfoKHR group{VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
+        group.type = hitGroup.intersection.empty() ? VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR
+                                                   : VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR;
+        group.generalShader = VK_SHADER_UNUSED_KHR;
+        group.closestHitShader = addStage(hitGroup.closestHit, VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR);
+        group.anyHitShader =
+            hitGroup.anyHit.empty() ? VK_SHADER_UNUSED_KHR : addStage(hitGroup.anyHit, VK_SHADER_STAGE_ANY_HIT_BIT_KHR);
+        group.intersectionShader = hitGroup.intersection.empty()
+                                       ? VK_SHADER_UNUSED_KHR
+                                       : addStage(hitGroup.intersection, VK_SHADER_STAGE_INTERSECTION_BIT_KHR);
+        groups.push_back(group);
+      }
+
+      VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
+      info.stageCount = static_cast<std::uint32_t>(stages.size());
+      info.pStages = stages.data();
+      info.groupCount = static_cast<std::uint32_t>(groups.size());
+      info.pGroups = groups.data();
+      info.maxPipelineRayRecursionDepth = program.maxRecursionDepth;
+      info.layout = layout;
+      const auto started = std::chrono::steady_clock::now();
+      VK_CHECK(device.ext.createRayTracingPipelines(device.handle, VK_NULL_HANDLE, device.pipelineCache, 1, &info, nullptr,
+                                                    &pipeline));
+      if (kernelLogPath() != nullptr) {
+        std::uint64_t digest = specializedKernelDigest(program.raygen, constants, kernelDigest({}));
+        for (std::string_view miss : program.misses) digest = specializedKernelDigest(miss, constants, digest);
+        for (const RayTracingProgram::HitGroup& hitGroup : program.hitGroups) {
+          for (std::string_view kernel : {hitGroup.closestHit, hitGroup.anyHit, hitGroup.intersection}) {
+            if (!kernel.empty()) digest = specializedKernelDigest(kernel, constants, digest);
+          }
+        }
+        logKernelCompilation(program.raygen, digest, std::chrono::steady_clock::now() - started);
+      }
+    } catch (...) {
+      for (VkShaderModule module : modules) vkDestroyShaderModule(device.handle, module, nullptr);
+      throw;
+    }
+    for (VkShaderModule module : modules) vkDestroyShaderModule(device.handle, module, nullptr);
+    setDebugName(device, pipeline, name);
+    return pipeline;
+  });
 }
 
 ShaderBindingTable createShaderBindingTable(const Device& device, VkPipeline pipeline, const RayTracingProgram& program,

@@ -36,7 +36,7 @@ inline constexpr VkShaderStageFlags kRayTracingStages =
     VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
 
 // Throws Error when a stage is not embedded or the depth exceeds the device's maxRayRecursionDepth.
-VkPipeline createRayTracingPipeline(const Device& device, VkPipelineLayout layout, const RayTracingProgram& program,
+VkPipeline acquireRayTracingPipeline(const Device& device, VkPipelineLayout layout, const RayTracingProgram& program,
                                     SpecializationConstants* constants, const char* name);
 
 // One hit-group record: which hit group, and the data that follows its handle.

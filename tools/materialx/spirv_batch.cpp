@@ -49,8 +49,8 @@ void run(const std::string& kernelPath, const std::string& casesPath, const std:
   const std::vector<DeviceReport> reports = surveyDevices(instance);
   Device device = createDevice(instance, reports[chooseDevice(reports, std::nullopt)]);
   const DescriptorBinding bindings[] = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-  VkDescriptorSetLayout setLayout = createDescriptorSetLayout(device, bindings, "materialx batch set layout");
-  VkPipelineLayout layout = createPipelineLayout(device, setLayout, sizeof(std::uint32_t), "materialx batch layout");
+  VkDescriptorSetLayout setLayout = descriptorSetLayoutFor(device, bindings, "materialx batch set layout");
+  VkPipelineLayout layout = pipelineLayoutFor(device, setLayout, sizeof(std::uint32_t), "materialx batch layout");
   VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   moduleInfo.codeSize = spirv.size();
   std::vector<std::uint32_t> words(spirv.size() / 4);
@@ -92,8 +92,7 @@ void run(const std::string& kernelPath, const std::string& casesPath, const std:
   destroyBuffer(device, input);
   destroyDescriptorSet(device, set);
   vkDestroyPipeline(device.handle, pipeline, nullptr);
-  vkDestroyPipelineLayout(device.handle, layout, nullptr);
-  vkDestroyDescriptorSetLayout(device.handle, setLayout, nullptr);
+  // The layouts are the device's (vk/pipeline_store.h).
   destroyDevice(device);
   destroyInstance(instance);
 }
