@@ -7,6 +7,7 @@
 #include "render/gpu_scene.h"
 #include "util/error.h"
 #include "util/timer.h"
+#include "vk/pipeline.h"
 
 namespace raylab {
 
@@ -67,13 +68,19 @@ std::unique_ptr<KernelBuild> startKernelBuild(const Instance& instance, const De
   // The thread gets copies of the handles it reads: the main thread goes on changing the renderer's state.
   build->thread = std::thread([&device, instance, rendererHandles = renderer, kernel, warm, b = build.get()] {
     const Stopwatch clock;
+    bool built = true;
     try {
+      // A kernel this device built before is in the device's store, compiled by its first dispatch then: nothing
+      // to build and nothing to warm up. Only this thread adds to the
+      // store while a build runs (the main thread releases at the swap, after it), so the count tells.
+      const std::size_t storedBefore = storeOf(device).storedPipelines();
       b->pipelines = createRenderPipelines(device, rendererHandles, kernel);
+      built = storeOf(device).storedPipelines() != storedBefore;
     } catch (const std::exception& error) {
       b->error = error.what();
     }
     // The warm-up only saves time: if it fails, the first dispatch on the viewer's queue compiles instead.
-    if (warm && b->error.empty()) {
+    if (warm && built && b->error.empty()) {
       try {
         warmUp(instance, device.report, kernel, rendererHandles.trace.backend, rendererHandles.schedule);
         b->warmedUp = true;

@@ -3,10 +3,10 @@
 // On lavapipe, creating a pipeline translates and optimises its SPIR-V every time (0.2-2 s for a render kernel);
 // Mesa's disk cache keeps only the LLVM code of the first dispatch, and a VkPipelineCache does not skip the
 // translation either (measured: a second creation in the same process takes as long as the first). Renderers are
-// made and unmade often with the same kernel: a test's many renders of one scene, the viewer switching a material
-// to a model and back, the Python module's Renderer per call. So the device keeps each pipeline it built, by what
-// determines it (the kernel's entry points and specialisation constants, and its layout), and hands the same one
-// out again.
+// made and unmade often with the same kernel: a test's many renders of one scene, the Python module's Renderer per
+// call and the farm's jobs in one worker. So the device keeps each pipeline it built, by what determines it (the
+// kernel's entry points and specialisation constants, and its layout), and hands the same one out again, compiled
+// already by its first dispatch.
 //
 // Layouts are kept for the device's life, one per distinct description: they are few and small, and a stable
 // layout handle is what lets a pipeline be found again by it. Pipelines are counted: a released one nobody uses is

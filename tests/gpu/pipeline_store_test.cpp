@@ -1,5 +1,5 @@
 // The device's pipeline store (vk/pipeline_store.h): a kernel built before on the device is handed out again
-// instead of built again (a renderer made twice, the viewer switching a material to a model and back), a kernel of
+// instead of built again (a renderer made twice, a Python Renderer per call), a kernel of
 // other constants is built anew, renders through a shared pipeline are the same, and everything the store keeps
 // is destroyed with the device (the suite's validation check at teardown would report a leak).
 #include <gtest/gtest.h>
@@ -44,7 +44,7 @@ TEST_F(PipelineStoreTest, ARendererOfAKernelBuiltBeforeGetsTheSamePipeline) {
   renderSamples(device(), second, 2);
   EXPECT_TRUE(readImage(device(), first).rgba == readImage(device(), second).rgba);
 
-  // Released, the pipelines stay stored: a renderer made again (the viewer's switch back) finds its kernel.
+  // Released, the pipelines stay stored: a renderer made again finds its kernel.
   const VkPipeline slides = first.trace.pipeline;
   destroyRenderer(device(), first);
   destroyRenderer(device(), second);
