@@ -1,6 +1,7 @@
 // A compute kernel ready to dispatch: its descriptor set layout, pipeline layout (one set, optional push
 // constants), pipeline and one descriptor set. Every kernel of raylab is one of these; the caller owns the
-// buffers it binds.
+// buffers it binds. The layouts and the pipeline are the device's (vk/pipeline_store.h): the kernel owns its set
+// and one use of the pipeline.
 #pragma once
 
 #include <vulkan/vulkan.h>
