@@ -96,90 +96,52 @@ struct Case {
   gpu::MaterialRecord expected;  // the record the mapping table gives, built by hand
 };
 
+// A case: glTF's core factors and `extensions` in the file; in the record, openpbr's base of those factors with
+// `layer`'s parameters set as the mapping table says.
+Case layered(const std::string& name, glm::vec3 color, float metallic, float roughness, const json& extensions,
+             const std::vector<std::pair<const char*, glm::vec3>>& layer) {
+  gpu::MaterialRecord record = openPbrBase(color, metallic, roughness);
+  for (const auto& [param, value] : layer) setParam(record, param, value, "test");
+  return {name, {{"pbrMetallicRoughness", core(color, metallic, roughness)}, {"extensions", extensions}}, record};
+}
+
 std::vector<Case> nonNeutralCases() {
-  std::vector<Case> cases;
-  {
-    gpu::MaterialRecord r = openPbrBase({0.5f, 0.05f, 0.02f}, 0.0f, 0.45f);
-    setParam(r, "coat_weight", glm::vec3(0.8f), "test");
-    setParam(r, "coat_roughness", glm::vec3(0.25f), "test");
-    setParam(r, "coat_ior", glm::vec3(1.5f), "test");
-    setParam(r, "coat_color", glm::vec3(1.0f), "test");
-    setParam(r, "coat_darkening", glm::vec3(0.0f), "test");
-    cases.push_back({"KHR_materials_clearcoat",
-                     {{"pbrMetallicRoughness", core({0.5f, 0.05f, 0.02f}, 0.0, 0.45)},
-                      {"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.8},
-                                                                   {"clearcoatRoughnessFactor", 0.25}}}}}},
-                     r});
-  }
-  {
-    gpu::MaterialRecord r = openPbrBase({0.9f, 0.6f, 0.3f}, 1.0f, 0.3f);
-    setParam(r, "coat_weight", glm::vec3(1.0f), "test");
-    setParam(r, "coat_roughness", glm::vec3(0.2f), "test");
-    setParam(r, "coat_ior", glm::vec3(1.6f), "test");
-    setParam(r, "coat_color", glm::vec3(0.9f, 0.7f, 0.5f), "test");
-    setParam(r, "coat_darkening", glm::vec3(1.0f), "test");
-    cases.push_back({"KHR_materials_coat",
-                     {{"pbrMetallicRoughness", core({0.9f, 0.6f, 0.3f}, 1.0, 0.3)},
-                      {"extensions", {{"KHR_materials_coat", {{"coatFactor", 1.0}, {"coatRoughnessFactor", 0.2},
-                                                              {"coatIor", 1.6},
-                                                              {"coatColorFactor", {0.9, 0.7, 0.5}},
-                                                              {"coatDarkeningFactor", 1.0}}}}}},
-                     r});
-  }
-  {
-    gpu::MaterialRecord r = openPbrBase({0.1f, 0.1f, 0.4f}, 0.0f, 0.6f);
-    setParam(r, "fuzz_weight", glm::vec3(0.8f), "test");
-    setParam(r, "fuzz_color", glm::vec3(1.0f, 0.5f, 0.25f), "test");
-    setParam(r, "fuzz_roughness", glm::vec3(0.4f), "test");
-    cases.push_back({"KHR_materials_sheen",
-                     {{"pbrMetallicRoughness", core({0.1f, 0.1f, 0.4f}, 0.0, 0.6)},
-                      {"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {0.8, 0.4, 0.2}},
-                                                               {"sheenRoughnessFactor", 0.4}}}}}},
-                     r});
-  }
-  {
-    gpu::MaterialRecord r = openPbrBase({0.3f, 0.5f, 0.2f}, 0.0f, 0.5f);
-    setParam(r, "fuzz_weight", glm::vec3(0.7f), "test");
-    setParam(r, "fuzz_color", glm::vec3(0.9f, 0.9f, 1.0f), "test");
-    setParam(r, "fuzz_roughness", glm::vec3(0.6f), "test");
-    cases.push_back({"KHR_materials_fuzz",
-                     {{"pbrMetallicRoughness", core({0.3f, 0.5f, 0.2f}, 0.0, 0.5)},
-                      {"extensions", {{"KHR_materials_fuzz", {{"fuzzFactor", 0.7}, {"fuzzColorFactor", {0.9, 0.9, 1.0}},
-                                                              {"fuzzRoughnessFactor", 0.6}}}}}},
-                     r});
-  }
-  {
-    gpu::MaterialRecord r = openPbrBase({0.95f, 0.95f, 0.95f}, 1.0f, 0.25f);
-    setParam(r, "thin_film_weight", glm::vec3(0.9f), "test");
-    setParam(r, "thin_film_ior", glm::vec3(1.8f), "test");
-    setParam(r, "thin_film_thickness", glm::vec3(0.45f), "test");
-    cases.push_back({"KHR_materials_iridescence",
-                     {{"pbrMetallicRoughness", core({0.95f, 0.95f, 0.95f}, 1.0, 0.25)},
-                      {"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 0.9},
-                                                                     {"iridescenceIor", 1.8},
-                                                                     {"iridescenceThicknessMaximum", 450.0}}}}}},
-                     r});
-  }
-  {
-    gpu::MaterialRecord r = openPbrBase({0.6f, 0.6f, 0.6f}, 0.0f, 0.5f);
-    setParam(r, "base_diffuse_roughness", glm::vec3(0.8f), "test");
-    cases.push_back({"KHR_materials_diffuse_roughness",
-                     {{"pbrMetallicRoughness", core({0.6f, 0.6f, 0.6f}, 0.0, 0.5)},
-                      {"extensions", {{"KHR_materials_diffuse_roughness", {{"diffuseRoughnessFactor", 0.8}}}}}},
-                     r});
-  }
-  {
-    // A half transmission, lit from below too: openpbr's transmission at depth 0, tinted by the base colour.
-    gpu::MaterialRecord r = openPbrBase({0.7f, 0.9f, 0.8f}, 0.0f, 0.35f);
-    setParam(r, "transmission_weight", glm::vec3(0.5f), "test");
-    setParam(r, "transmission_color", glm::vec3(0.7f, 0.9f, 0.8f), "test");
-    setParam(r, "transmission_depth", glm::vec3(0.0f), "test");
-    cases.push_back({"KHR_materials_transmission",
-                     {{"pbrMetallicRoughness", core({0.7f, 0.9f, 0.8f}, 0.0, 0.35)},
-                      {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}}}},
-                     r});
-  }
-  return cases;
+  const glm::vec3 white(1.0f);
+  return {
+      layered("KHR_materials_clearcoat", {0.5f, 0.05f, 0.02f}, 0.0f, 0.45f,
+              {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.8}, {"clearcoatRoughnessFactor", 0.25}}}},
+              {{"coat_weight", glm::vec3(0.8f)}, {"coat_roughness", glm::vec3(0.25f)}, {"coat_ior", glm::vec3(1.5f)},
+               {"coat_color", white}, {"coat_darkening", glm::vec3(0.0f)}}),
+      layered("KHR_materials_coat", {0.9f, 0.6f, 0.3f}, 1.0f, 0.3f,
+              {{"KHR_materials_coat", {{"coatFactor", 1.0}, {"coatRoughnessFactor", 0.2}, {"coatIor", 1.6},
+                                       {"coatColorFactor", {0.9, 0.7, 0.5}}, {"coatDarkeningFactor", 1.0}}}},
+              {{"coat_weight", white}, {"coat_roughness", glm::vec3(0.2f)}, {"coat_ior", glm::vec3(1.6f)},
+               {"coat_color", {0.9f, 0.7f, 0.5f}}, {"coat_darkening", white}}),
+      // The sheen's colour is fuzz_weight = its largest channel times fuzz_color.
+      layered("KHR_materials_sheen", {0.1f, 0.1f, 0.4f}, 0.0f, 0.6f,
+              {{"KHR_materials_sheen", {{"sheenColorFactor", {0.8, 0.4, 0.2}}, {"sheenRoughnessFactor", 0.4}}}},
+              {{"fuzz_weight", glm::vec3(0.8f)}, {"fuzz_color", {1.0f, 0.5f, 0.25f}},
+               {"fuzz_roughness", glm::vec3(0.4f)}}),
+      layered("KHR_materials_fuzz", {0.3f, 0.5f, 0.2f}, 0.0f, 0.5f,
+              {{"KHR_materials_fuzz", {{"fuzzFactor", 0.7}, {"fuzzColorFactor", {0.9, 0.9, 1.0}},
+                                       {"fuzzRoughnessFactor", 0.6}}}},
+              {{"fuzz_weight", glm::vec3(0.7f)}, {"fuzz_color", {0.9f, 0.9f, 1.0f}},
+               {"fuzz_roughness", glm::vec3(0.6f)}}),
+      // The film's thickness in micrometres.
+      layered("KHR_materials_iridescence", {0.95f, 0.95f, 0.95f}, 1.0f, 0.25f,
+              {{"KHR_materials_iridescence", {{"iridescenceFactor", 0.9}, {"iridescenceIor", 1.8},
+                                              {"iridescenceThicknessMaximum", 450.0}}}},
+              {{"thin_film_weight", glm::vec3(0.9f)}, {"thin_film_ior", glm::vec3(1.8f)},
+               {"thin_film_thickness", glm::vec3(0.45f)}}),
+      layered("KHR_materials_diffuse_roughness", {0.6f, 0.6f, 0.6f}, 0.0f, 0.5f,
+              {{"KHR_materials_diffuse_roughness", {{"diffuseRoughnessFactor", 0.8}}}},
+              {{"base_diffuse_roughness", glm::vec3(0.8f)}}),
+      // A half transmission, lit from below too: openpbr's transmission at depth 0, tinted by the base colour.
+      layered("KHR_materials_transmission", {0.7f, 0.9f, 0.8f}, 0.0f, 0.35f,
+              {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}},
+              {{"transmission_weight", glm::vec3(0.5f)}, {"transmission_color", {0.7f, 0.9f, 0.8f}},
+               {"transmission_depth", glm::vec3(0.0f)}}),
+  };
 }
 
 // The neutral value of each extension on the same base, and that base without it.
