@@ -212,8 +212,8 @@ TEST(CliTest, RenderWritesExrAndPngAndReportsTimings) {
   EXPECT_GT(std::filesystem::file_size(png), 100u);
 }
 
-// The tests run lavapipe with 128-bit vectors (LP_NATIVE_VECTOR_WIDTH=128, tests/CMakeLists.txt), and the
-// compile-bound ones with LLVM's optimisation passes off (GALLIVM_PERF=nopt): a cold suite compiles in about half
+// The tests run lavapipe with 128-bit vectors (LP_NATIVE_VECTOR_WIDTH=128, tests/CMakeLists.txt), and all but the
+// runtime-bound ones with LLVM's optimisation passes off (GALLIVM_PERF=nopt): a cold suite compiles in about half
 // the time. That is only sound while the images do not depend on either: the same scenes under the driver's defaults
 // (256-bit vectors on AVX2 machines, optimised) and under the tests' settings give the same pixels, bit for bit (the
 // GLSL's arithmetic is per lane and LLVM keeps IEEE semantics; what the settings change is how many lanes run at
