@@ -14,7 +14,12 @@ ComputeKernel createComputeKernel(const Device& device, std::string_view kernelN
   kernel.pipelineLayout =
       pipelineLayoutFor(device, kernel.setLayout, pushConstantBytes, (name + " pipeline layout").c_str());
   kernel.pipeline = acquireComputePipeline(device, kernel.pipelineLayout, kernelName, constants);
-  kernel.descriptors = allocateDescriptorSet(device, kernel.setLayout, bindings, (name + " set").c_str());
+  try {
+    kernel.descriptors = allocateDescriptorSet(device, kernel.setLayout, bindings, (name + " set").c_str());
+  } catch (...) {
+    releasePipeline(device, kernel.pipeline);
+    throw;
+  }
   return kernel;
 }
 
