@@ -48,8 +48,9 @@ void logKernelCompilation(std::string_view kernelName, std::uint64_t digest, std
                                    perf != nullptr && *perf != '\0' ? perf : "default", processName().c_str(),
                                    static_cast<int>(getpid()));
   if (length <= 0) return;
-  // One write with O_APPEND: lines from tests running side by side do not interleave.
-  const int file = open(path, O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+  // One write with O_APPEND: lines from tests running side by side do not interleave. O_NONBLOCK: a FIFO nobody
+  // reads makes the open fail instead of hanging the render.
+  const int file = open(path, O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC | O_NONBLOCK, 0644);
   if (file < 0) return;
   [[maybe_unused]] const ssize_t written = write(file, line, static_cast<std::size_t>(std::min(length, 511)));
   close(file);
