@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -69,6 +70,10 @@ struct ModelInfo {
   // Why `raylab brdf fit` fits the model only when it is named (`// fit: by name, ...`), or empty: it is among the
   // models a fit tries by default.
   std::string_view fitByName;
+  // Its Levenberg-Marquardt starts when a fit names no count (`// fit: starts N, ...`), or 0: FitOptions' default.
+  std::uint32_t fitStarts;
+  // One more start of a fit (`// fit: start NAME=VALUE ...`): the defaults with these values, every channel alike.
+  std::vector<std::pair<std::string_view, double>> fitStart;
   std::vector<ModelFeature> features;  // its `feature:` lines
 };
 

@@ -223,6 +223,17 @@ std::vector<std::string> fittableModels() {
   return names;
 }
 
+std::string describeStarts(const FitOptions& options) {
+  if (options.starts > 0) return std::to_string(options.starts) + " LM starts per model";
+  std::string text = std::to_string(kDefaultStarts) + " LM starts per model";
+  for (const ModelInfo& model : allModels()) {
+    if (model.fitStarts > 0 && int(model.fitStarts) != kDefaultStarts) {
+      text += ", " + std::string(model.name) + " " + std::to_string(model.fitStarts);
+    }
+  }
+  return text;
+}
+
 std::vector<std::pair<std::string, std::vector<double>>> fitParams(const FitResult& fit) {
   std::vector<std::pair<std::string, std::vector<double>>> params;
   for (const ParamInfo& param : modelInfo(fit.record.model).params) {
@@ -267,7 +278,7 @@ double fitError(const FitTarget& target, const gpu::MaterialRecord& record, FitM
 
 std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& options) {
   if (target.pairs.empty()) throw Error(target.name + ": nothing to fit (no direction pairs)");
-  if (options.starts < 1) throw Error("raylab brdf fit: at least one start", kExitUsage);
+  if (options.starts < 0) throw Error("raylab brdf fit: the starts are 1 or more (0: each model's own)", kExitUsage);
   if (options.searchPoints < 0) throw Error("raylab brdf fit: the search points are 0 or more", kExitUsage);
   const std::vector<std::string> names = options.models.empty() ? fittableModels() : options.models;
   const bool isotropic = options.isotropic.value_or(target.isotropic);
@@ -289,6 +300,10 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
     plans.push_back(planOf(*model, isotropic));
   }
 
+  const auto startsOf = [&](const ModelPlan& plan) {
+    if (options.starts > 0) return options.starts;
+    return plan.model->fitStarts > 0 ? int(plan.model->fitStarts) : kDefaultStarts;
+  };
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   // Each thread holds one solve's Jacobian (3 residuals per pair, a column per variable, in doubles) and as much
   // again in residual blocks: never more threads than cores, nor more than this budget holds (a million-pair CSV
@@ -303,8 +318,10 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
   int done = 0;
   // Known once each search has chosen its starts (a model with no nonlinear parameter needs only one).
   const bool searched = options.searchPoints > 0;
-  int total = int(plans.size()) * (options.starts + (searched ? 1 : 0) +
-                                   (searched && target.pairs.size() > 2 * kSearchPairs ? 1 : 0));
+  int total = 0;
+  for (const ModelPlan& plan : plans) {
+    total += startsOf(plan) + (searched ? 1 : 0) + (searched && target.pairs.size() > 2 * kSearchPairs ? 1 : 0);
+  }
 
   // Each model is a chain of steps: its search, its LM starts (the search's best distinct points, or without a
   // search the defaults and random points), and, when the starts saw the coarse pairs, its best start polished on
@@ -348,7 +365,7 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
     }
     std::mt19937_64 random(std::uint64_t(options.seed) * 1000003u + plans[m].model->id);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    for (int s = 0; s < options.starts; ++s) {
+    for (int s = 0; s < startsOf(plans[m]); ++s) {
       std::vector<double> x;
       for (const Variable& v : plans[m].variables) x.push_back(s == 0 ? v.start : v.lo + (v.hi - v.lo) * uniform(random));
       chains[m].starts.push_back(std::move(x));
@@ -403,7 +420,7 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
           const Stopwatch clock;
           std::mt19937_64 random(std::uint64_t(options.seed) * 1000003u + plans[task.model].model->id);
           std::vector<Scored> found = searchBasins(coarse, plans[task.model], options.metric, options.searchPoints,
-                                                   options.starts, random);
+                                                   startsOf(plans[task.model]), random);
           for (Scored& start : found) chain.starts.push_back(std::move(start.x));
           seconds = chain.searchSeconds = clock.seconds();
           label += " search";
@@ -455,7 +472,7 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
       Chain& chain = chains[task.model];
       if (task.step == Step::kSearch) {
         pushStarts(task.model);
-        total += int(chain.starts.size()) + (coarseToFine ? 1 : 0) - options.starts - (coarseToFine ? 1 : 0);
+        total += int(chain.starts.size()) - startsOf(plans[task.model]);
       } else if (task.step == Step::kStart && --chain.pending == 0) {
         finishStarts(task.model);
       } else if (task.step == Step::kChannelSearch || task.step == Step::kLobeSearch) {

@@ -20,6 +20,8 @@ enum class FitMetric { kCosine, kLog };
 FitMetric parseFitMetric(const std::string& text, const std::string& where);
 const char* fitMetricName(FitMetric metric);
 
+constexpr int kDefaultStarts = 4;
+
 struct FitOptions {
   std::vector<std::string> models;  // empty: every model fitModels can fit
   FitMetric metric = FitMetric::kCosine;
@@ -27,8 +29,9 @@ struct FitOptions {
   // (the defaults, then a stratified random sample of their box) are scored with the parameters that enter f
   // linearly solved in closed form; Levenberg-Marquardt then starts from the best `starts` distinct ones.
   // searchPoints 0: no search, the LM starts are the defaults and random points of the whole box (the plain
-  // multi-start of tools/fit_basins.py's reference).
-  int starts = 4;
+  // multi-start of tools/fit_basins.py's reference). starts 0: each model's own count, kDefaultStarts unless its
+  // registry line `fit: starts N` says more (a model whose basins the default count measurably misses).
+  int starts = 0;
   int searchPoints = 256;
   unsigned seed = 1;                // of the random points: the same seed gives the same fits
   int threads = 0;                  // starts solved at once; 0: one per core (never more than the cores)
@@ -54,6 +57,8 @@ struct FitResult {
 // The models fitted by default: every model of the library with a density that is not read from a file (not delta,
 // not measured); a test-tree model (tests/models) is fitted only when named.
 std::vector<std::string> fittableModels();
+// "4 LM starts per model, lafortune 16": the starts a fit with these options gives each model, for messages.
+std::string describeStarts(const FitOptions& options);
 
 // Fits and ranks: best (least error) first. Throws Error for an unknown or unfittable model name.
 std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& options);

@@ -282,6 +282,20 @@ ModelPlan planOf(const ModelInfo& model, bool isotropic) {
       plan.narrowIsLow = role.find("exponent") == std::string_view::npos;
     }
   }
+  if (!model.fitStart.empty()) {
+    for (const Variable& v : plan.variables) plan.declaredStart.push_back(v.start);
+    for (const auto& [name, value] : model.fitStart) {
+      const ParamInfo* param = nullptr;
+      for (const ParamInfo& p : model.params) {
+        if (p.name == name) param = &p;
+      }
+      for (std::size_t i = 0; param != nullptr && i < plan.variables.size(); ++i) {
+        const Variable& v = plan.variables[i];
+        if (v.slots.front() < param->slot || v.slots.front() >= param->slot + (param->rgb ? 3u : 1u)) continue;
+        plan.declaredStart[i] = v.log ? std::log(value) : v.wideScale > 0.0 ? std::log1p(value / v.wideScale) : value;
+      }
+    }
+  }
   return plan;
 }
 

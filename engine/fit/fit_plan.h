@@ -61,6 +61,9 @@ struct ModelPlan {
   // of f, so one evaluation with all of them stepped gives each one's column (fit.cpp, BlockCost).
   std::vector<std::vector<int>> diffGroups;
   bool narrowIsLow = true;  // roughness and slopes: narrow lobes have low values; exponents: high
+  // The registry's `fit: start` point in the variables' space (the defaults with its values), or empty: the search
+  // keeps it as one more start (fit_search.cpp).
+  std::vector<double> declaredStart;
   reference::Material base;
 };
 

@@ -366,6 +366,14 @@ std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan,
       ++grey;
     }
   }
+  // The registry's declared start, its colours solved: a region the box's draws rarely reach and LM does not enter
+  // from elsewhere (SGD's shadowing, a saddle at lambda = c = 0; docs/fitting.md).
+  if (!plan.declaredStart.empty()) {
+    std::vector<double> x = plan.declaredStart;
+    const double cost = solvedCost(pairs, plan, metric, cycles, x);
+    Scored declared{std::move(x), cost, false};
+    if (distinct(declared)) chosen.push_back(std::move(declared));
+  }
   // Then, unless one of the hypercube's starts has it already, the best point in the narrowest quarter of
   // the width's range (of `starts` strata): a wide lobe that fits the floor can outscore every narrow one whose other
   // parameters the search drew badly (a glossy phenolic's highlight under gltf_pbr), and Levenberg-Marquardt does

@@ -26,7 +26,7 @@ FitTarget coarseTarget(const FitTarget& target);
 
 // `points` points of the nonlinear variables (the defaults first, then a Latin hypercube of the box), each with
 // its linear blocks solved by least squares in turn, scored by the metric on `coarse`; the best `starts` distinct
-// points, best first.
+// points, best first, then the grey, declared (plan.declaredStart) and narrowest-lobe starts where they apply.
 std::vector<Scored> searchBasins(const FitTarget& coarse, const ModelPlan& plan, FitMetric metric, int points,
                                  int starts, std::mt19937_64& random);
 

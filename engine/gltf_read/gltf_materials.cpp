@@ -301,6 +301,16 @@ float indexWithin(float ior, const gpu::MaterialRecord& record, std::string_view
   return std::min(ior, iorMax);
 }
 
+// glTF's anisotropy strength s (KHR_materials_anisotropy, KHR_materials_coat's coatAnisotropyStrength) stretches GGX
+// along the tangent to alpha_t = mix(alpha, 1, s^2), alpha_b = alpha (alpha = roughness^2); openpbr's anisotropy a
+// sets the ratio alpha_b / alpha_t = 1 - a: the same ratio, so the same shape of highlight, of a slightly different
+// size (docs/gltf.md).
+float anisotropyOf(float roughness, float strength) {
+  const float alpha = std::max(roughness * roughness, 1e-3f);
+  const float alphaT = alpha + (1.0f - alpha) * strength * strength;
+  return std::clamp(1.0f - alpha / alphaT, 0.0f, 1.0f);
+}
+
 // KHR_materials_clearcoat, KHR_materials_iridescence and KHR_materials_sheen onto openpbr: the core factors as its
 // base, the coat as its coat, the iridescent film as its thin film and the sheen as its fuzz.
 // The sheen's layering is the fuzz's, f_sheen + (1 - max(sheenColor) E_sheen) f_base, so that sheenColor =
@@ -326,19 +336,18 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
     setParam(record, "coat_ior", glm::vec3(indexWithin(input.coatIor, record, "coat_ior", coat)), coat);
     setParam(record, "coat_color", input.coatColor, coat);
     setParam(record, "coat_darkening", glm::vec3(input.coatDarkening), coat);
+    if (input.coatAnisotropy > 0.0f) {
+      setParam(record, "coat_roughness_anisotropy",
+               glm::vec3(anisotropyOf(input.coatRoughness, input.coatAnisotropy)), coat);
+    }
   } else {
     setParam(record, "coat_weight", glm::vec3(input.clearcoat), where + " (KHR_materials_clearcoat)");
     setParam(record, "coat_roughness", glm::vec3(input.clearcoatRoughness), where + " (KHR_materials_clearcoat)");
     setParam(record, "coat_ior", glm::vec3(1.5f), where + " (KHR_materials_clearcoat)");
     setParam(record, "coat_darkening", glm::vec3(0.0f), where + " (KHR_materials_clearcoat)");
   }
-  // KHR_materials_anisotropy stretches GGX along the tangent to alpha_t = mix(alpha, 1, strength^2), alpha_b = alpha
-  // (alpha = roughness^2); openpbr's anisotropy a sets the ratio alpha_b / alpha_t = 1 - a: the same ratio, so the
-  // same shape of highlight, of a slightly different size (docs/gltf.md).
   if (input.anisotropy > 0.0f) {
-    const float alpha = std::max(input.roughness * input.roughness, 1e-3f);
-    const float alphaT = alpha + (1.0f - alpha) * input.anisotropy * input.anisotropy;
-    setParam(record, "specular_roughness_anisotropy", glm::vec3(std::clamp(1.0f - alpha / alphaT, 0.0f, 1.0f)),
+    setParam(record, "specular_roughness_anisotropy", glm::vec3(anisotropyOf(input.roughness, input.anisotropy)),
              where + " (KHR_materials_anisotropy)");
   }
   if (input.diffuseRoughness > 0.0f) {
@@ -395,25 +404,40 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
   return record;
 }
 
-// The ratified layered extensions' textures (their text's channels: kernel/hit_common.glsl), each scaling the openpbr
-// parameter its factor sets. The drafts' textures (KHR_materials_coat, _fuzz, _diffuse_roughness) are not read yet.
+// The layered extensions' textures (each text's channels: kernel/hit_common.glsl), each scaling the openpbr
+// parameter its factor sets. The drafts' channels are their texts' (KhronosGroup/glTF, extensions/2.0/Khronos): coat
+// R weight, G roughness, sRGB colour; fuzz R weight, sRGB colour, A roughness; diffuse roughness R.
 struct LayerTexture {
   const char* extension;
   const char* key;
   const char* param;
   const char* layerWeight;  // the weight that says whether the layer is there at all
   std::uint32_t use;        // gpu::kTexture...
+  const char* replacedBy;   // the extension whose layer replaces this one's where a material has both, or nullptr
 };
 constexpr LayerTexture kLayerTextures[] = {
-    {"KHR_materials_clearcoat", "clearcoatTexture", "coat_weight", "coat_weight", gpu::kTextureCoat},
-    {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", "coat_roughness", "coat_weight", gpu::kTextureCoatRoughness},
-    {"KHR_materials_sheen", "sheenColorTexture", "fuzz_color", "fuzz_weight", gpu::kTextureSheenColor},
-    {"KHR_materials_sheen", "sheenRoughnessTexture", "fuzz_roughness", "fuzz_weight", gpu::kTextureSheenRoughness},
-    {"KHR_materials_iridescence", "iridescenceTexture", "thin_film_weight", "thin_film_weight", gpu::kTextureIridescence},
+    {"KHR_materials_clearcoat", "clearcoatTexture", "coat_weight", "coat_weight", gpu::kTextureCoat,
+     "KHR_materials_coat"},
+    {"KHR_materials_clearcoat", "clearcoatRoughnessTexture", "coat_roughness", "coat_weight", gpu::kTextureCoatRoughness,
+     "KHR_materials_coat"},
+    {"KHR_materials_coat", "coatTexture", "coat_weight", "coat_weight", gpu::kTextureCoat, nullptr},
+    {"KHR_materials_coat", "coatRoughnessTexture", "coat_roughness", "coat_weight", gpu::kTextureCoatRoughness, nullptr},
+    {"KHR_materials_coat", "coatColorTexture", "coat_color", "coat_weight", gpu::kTextureCoatColor, nullptr},
+    {"KHR_materials_sheen", "sheenColorTexture", "fuzz_color", "fuzz_weight", gpu::kTextureSheenColor,
+     "KHR_materials_fuzz"},
+    {"KHR_materials_sheen", "sheenRoughnessTexture", "fuzz_roughness", "fuzz_weight", gpu::kTextureSheenRoughness,
+     "KHR_materials_fuzz"},
+    {"KHR_materials_fuzz", "fuzzTexture", "fuzz_weight", "fuzz_weight", gpu::kTextureFuzz, nullptr},
+    {"KHR_materials_fuzz", "fuzzColorTexture", "fuzz_color", "fuzz_weight", gpu::kTextureSheenColor, nullptr},
+    {"KHR_materials_fuzz", "fuzzRoughnessTexture", "fuzz_roughness", "fuzz_weight", gpu::kTextureSheenRoughness, nullptr},
+    {"KHR_materials_diffuse_roughness", "diffuseRoughnessTexture", "base_diffuse_roughness", "base_diffuse_roughness",
+     gpu::kTextureDiffuseRoughness, nullptr},
+    {"KHR_materials_iridescence", "iridescenceTexture", "thin_film_weight", "thin_film_weight", gpu::kTextureIridescence,
+     nullptr},
     {"KHR_materials_iridescence", "iridescenceThicknessTexture", "thin_film_thickness", "thin_film_weight",
-     gpu::kTextureIridescenceThickness},
+     gpu::kTextureIridescenceThickness, nullptr},
     {"KHR_materials_transmission", "transmissionTexture", "transmission_weight", "transmission_weight",
-     gpu::kTextureTransmission},
+     gpu::kTextureTransmission, nullptr},
 };
 
 // iridescenceThicknessTexture's G runs the film from the minimum (G = 0) to the maximum (G = 1) thickness, which
@@ -620,11 +644,13 @@ void convertMaterials(Document& document, Scene& scene) {
       readFactor(*coat, "coatIor", name, 1.0, kMaxEta, input.coatIor);
       readFactor(*coat, "coatDarkeningFactor", name, 0.0, 1.0, input.coatDarkening);
       readColour(*coat, "coatColorFactor", name, input.coatColor);
-      for (const auto& [key, value] : coat->items()) {
-        if (key.size() > 7 && key.compare(key.size() - 7, 7, "Texture") == 0) {
-          document.ignore(name + "." + key + " (its factor applies alone)");
-        }
-      }
+      readFactor(*coat, "coatAnisotropyStrength", name, 0.0, 1.0, input.coatAnisotropy);
+      float rotation = 0.0f;
+      readFactor(*coat, "coatAnisotropyRotation", name, -std::numeric_limits<float>::max(),
+                 std::numeric_limits<float>::max(), rotation);
+      if (rotation != 0.0f) document.ignore(name + ".coatAnisotropyRotation (the highlight stretches along the tangent)");
+      if (coat->contains("coatNormalTexture")) document.ignore(name + ".coatNormalTexture (the coat takes the base's normal)");
+      if (coat->contains("coatAnisotropyTexture")) document.ignore(name + ".coatAnisotropyTexture (its strength applies alone)");
     }
     if (const json* fuzz = findPath(materialJson, {"extensions", "KHR_materials_fuzz"})) {
       const std::string name = "KHR_materials_fuzz";
@@ -632,9 +658,6 @@ void convertMaterials(Document& document, Scene& scene) {
       readFactor(*fuzz, "fuzzFactor", name, 0.0, 1.0, input.fuzz);
       readFactor(*fuzz, "fuzzRoughnessFactor", name, 0.0, 1.0, input.fuzzRoughness);
       readColour(*fuzz, "fuzzColorFactor", name, input.fuzzColor);
-      for (const char* texture : {"fuzzTexture", "fuzzColorTexture", "fuzzRoughnessTexture"}) {
-        if (fuzz->contains(texture)) document.ignore(name + "." + texture + " (its factor applies alone)");
-      }
     }
     if (const json* anisotropy = findPath(materialJson, {"extensions", "KHR_materials_anisotropy"})) {
       const std::string name = "KHR_materials_anisotropy";
@@ -648,9 +671,6 @@ void convertMaterials(Document& document, Scene& scene) {
     if (const json* diffuse = findPath(materialJson, {"extensions", "KHR_materials_diffuse_roughness"})) {
       const std::string name = "KHR_materials_diffuse_roughness";
       readFactor(*diffuse, "diffuseRoughnessFactor", name, 0.0, 1.0, input.diffuseRoughness);
-      if (diffuse->contains("diffuseRoughnessTexture")) {
-        document.ignore(name + ".diffuseRoughnessTexture (its factor applies alone)");
-      }
     }
     if (const json* sheen = findPath(materialJson, {"extensions", "KHR_materials_sheen"})) {
       const std::string name = "KHR_materials_sheen";
@@ -711,6 +731,10 @@ void convertMaterials(Document& document, Scene& scene) {
       const json* info = use({"extensions", layer.extension, layer.key});
       if (info == nullptr) continue;
       const std::string property = std::string(layer.extension) + "." + layer.key;
+      if (layer.replacedBy != nullptr && use({"extensions", layer.replacedBy})) {
+        document.ignore(property + " (" + layer.replacedBy + " replaces its layer)");
+        continue;
+      }
       const ParamInfo* param = findParam(modelInfo(record.model), layer.param);
       // A layer's parameters are set only where the layer is (mapLayered): an absent layer has nothing to scale.
       if (param == nullptr || !(getParam(record, layer.layerWeight).x > 0.0f)) {

@@ -37,7 +37,7 @@ struct MetallicRoughness {
   // The OpenPBR-aligned drafts, which name openpbr's own parameters: KHR_materials_coat (it replaces the clear coat
   // where both appear), KHR_materials_fuzz (it replaces the sheen), KHR_materials_diffuse_roughness.
   bool hasCoat = false;
-  float coat = 0.0f, coatRoughness = 0.0f, coatIor = 1.5f, coatDarkening = 1.0f;
+  float coat = 0.0f, coatRoughness = 0.0f, coatIor = 1.5f, coatDarkening = 1.0f, coatAnisotropy = 0.0f;
   glm::vec3 coatColor{1.0f};
   bool hasFuzz = false;
   float fuzz = 0.0f, fuzzRoughness = 0.5f;

@@ -77,8 +77,11 @@ const Shape kSheen{{numbers("sheenColorFactor", 3), object("sheenColorTexture", 
                     number("sheenRoughnessFactor"), object("sheenRoughnessTexture", kTextureInfo)}};
 const Shape kVolume{{number("thicknessFactor"), object("thicknessTexture", kTextureInfo), number("attenuationDistance"),
                      numbers("attenuationColor", 3)}};
-const Shape kCoat{{number("coatFactor"), number("coatRoughnessFactor"), number("coatIor"), number("coatDarkeningFactor"),
-                   numbers("coatColorFactor", 3)}};
+const Shape kCoat{{number("coatFactor"), object("coatTexture", kTextureInfo), number("coatRoughnessFactor"),
+                   object("coatRoughnessTexture", kTextureInfo), object("coatNormalTexture", kNormalTextureInfo),
+                   number("coatIor"), numbers("coatColorFactor", 3), object("coatColorTexture", kTextureInfo),
+                   number("coatDarkeningFactor"), number("coatAnisotropyStrength"), number("coatAnisotropyRotation"),
+                   object("coatAnisotropyTexture", kTextureInfo)}};
 const Shape kFuzz{{number("fuzzFactor"), object("fuzzTexture", kTextureInfo), numbers("fuzzColorFactor", 3),
                    object("fuzzColorTexture", kTextureInfo), number("fuzzRoughnessFactor"),
                    object("fuzzRoughnessTexture", kTextureInfo)}};

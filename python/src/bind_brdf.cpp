@@ -279,19 +279,31 @@ void bindBrdf(py::module_& parent) {
       py::arg("model"), py::arg("params"), py::arg("path"),
       "Writes a MERL .binary file of the material: f at the centre of each of the database's 90 x 90 x 180 bins, as "
       "`raylab brdf tabulate` does (docs/fitting.md).");
+  // pybind11 keeps the pointer: the text lives as long as the module.
+  static const std::string fitDoc =
+      "Fits the analytic models (all, or `models`) to target: a MERL .binary file, a MERL phi_d = 90 .slice, a "
+      ".csv of samples (optional weight column), or 'MODEL[:k=v,...]'. Returns the ranking of `raylab brdf fit "
+      "--json`: a list of dicts with model, params (name -> value, RGB as a list), param_list (as --material takes "
+      "it), error, relative_error, seconds, iterations, starts, failed_starts, warnings, metric, isotropic and "
+      "target, best first (docs/fitting.md). metric is 'cosine' (Ngan et al. 2005) or 'log'; search points of the "
+      "nonlinear parameters pick the `starts` Levenberg-Marquardt starts (None: each model's own, " +
+          describeStarts(FitOptions{}) + "); isotropic ties x and y parameters (None: "
+      "as the target says, True for MERL files and slices).";
   m.def(
       "fit",
       [](const py::object& targetObject, const std::optional<std::vector<std::string>>& models,
-         const std::string& metric, std::int64_t starts, std::int64_t search, std::int64_t seed, std::int64_t threads,
+         const std::string& metric, std::optional<std::int64_t> starts, std::int64_t search, std::int64_t seed, std::int64_t threads,
          std::optional<bool> isotropic) {
         // Signed, and checked here: an unsigned argument turns starts=-1 into pybind11's list of overloads.
         const std::string target = pathArgument(targetObject, "raylab.brdf.fit: target");
-        if (starts < 1 || starts > 64) usage("raylab.brdf.fit: starts must be within 1..64, not " + std::to_string(starts));
+        if (starts && (*starts < 1 || *starts > 64)) {
+          usage("raylab.brdf.fit: starts must be within 1..64 or None, not " + std::to_string(*starts));
+        }
         if (search < 0 || search > 65536) usage("raylab.brdf.fit: search must be within 0..65536, not " + std::to_string(search));
         if (seed < 0 || seed > std::int64_t(UINT32_MAX)) usage("raylab.brdf.fit: seed must be within 0..4294967295");
         if (threads < 0 || threads > 256) usage("raylab.brdf.fit: threads must be within 0..256 (0: one per core)");
         FitOptions options;
-        options.starts = int(starts);
+        options.starts = starts ? int(*starts) : 0;
         options.searchPoints = int(search);
         options.seed = unsigned(seed);
         options.threads = int(threads);
@@ -335,15 +347,9 @@ void bindBrdf(py::module_& parent) {
         return table;
       },
       py::arg("target"), py::kw_only(), py::arg("models") = py::none(), py::arg("metric") = "cosine",
-      py::arg("starts") = 4, py::arg("search") = 256, py::arg("seed") = 1, py::arg("threads") = 0,
+      py::arg("starts") = py::none(), py::arg("search") = 256, py::arg("seed") = 1, py::arg("threads") = 0,
       py::arg("isotropic") = py::none(),
-      "Fits the analytic models (all, or `models`) to target: a MERL .binary file, a MERL phi_d = 90 .slice, a "
-      ".csv of samples (optional weight column), or 'MODEL[:k=v,...]'. Returns the ranking of `raylab brdf fit "
-      "--json`: a list of dicts with model, params (name -> value, RGB as a list), param_list (as --material takes "
-      "it), error, relative_error, seconds, iterations, starts, failed_starts, warnings, metric, isotropic and "
-      "target, best first (docs/fitting.md). metric is 'cosine' (Ngan et al. 2005) or 'log'; search points of the "
-      "nonlinear parameters pick the `starts` Levenberg-Marquardt starts; isotropic ties x and y parameters (None: "
-      "as the target says, True for MERL files and slices).");
+      fitDoc.c_str());
   m.def("fittable_models", &fittableModels,
         "The models `fit` fits by default: every model of the library with a density that is not read from a file.");
   m.def(

@@ -1,6 +1,7 @@
 // Lafortune: generalised cosine lobes, a Lambert term plus two lobes [Cx ux vx + Cy uy vy + Cz uz vz]^n.
 // lobes: reflection diffuse glossy
 // sweep: rho_d=0.1, rho_s=0.9
+// fit: starts 16, a lobe's C's matter only by their ratio, a flat valley 4 starts left wrongly (docs/fitting.md)
 // look: rho_d=0.15/0.35/0.5, rho_s=0.6, cx=-0.6, cy=-0.6, cz=0.55, n=80, rho_s2=0.3, cxy2=0.577, cz2=0.577, n2=4
 // figure: rho_d=0, rho_s=1, cx=-0.6, cy=-0.6, cz=0.5, n=40, rho_s2=0
 // figure retro: rho_d=0, rho_s=0.5, n=60, rho_s2=0.5, cxy2=0.577, cz2=0.577, n2=8

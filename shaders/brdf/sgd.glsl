@@ -3,6 +3,7 @@
 // sweep: rho_d=0.1
 // look: rho_d=0.1/0.25/0.5, rho_s=300, alpha=0.01, p=0.5, f0=0.05, f1=0, lambda=1, c=1, k=2, theta0=0.5
 // figure: rho_d=0, rho_s=300, alpha=0.01, p=0.5, f0=0.05, f1=0, lambda=0
+// fit: start lambda=3.06 c=5.4e-7 k=24.5 theta0=0.226, Bagher's median shadowing; lambda = c = 0 is a saddle
 // figure shadowed: rho_d=0, rho_s=300, alpha=0.01, p=0.5, f0=0.05, f1=0, lambda=1, c=1, k=2, theta0=0.5
 // | parameter | range          | default | kind         | meaning                                                        |
 // |-----------|----------------|---------|--------------|----------------------------------------------------------------|

@@ -76,13 +76,14 @@ void applyTextures(inout MaterialRecord material, inout Surface s) {
     material.params[tintSlot + 2u] *= texel.b;
   }
   if (featureEnabled(kFeatureLayerTextures) && uses.layerModel == material.model) {
-    // One texture read in a loop kept rolled, not seven inlined (the feature still costs a textured openpbr kernel
+    // One texture read in a loop kept rolled, not one inlined per use (the feature still costs a textured openpbr kernel
     // about a third more compile time: ClearCoatTest 72 -> 95 s cold).
     [[dont_unroll]] for (uint use = kFirstLayerTexture; use < kTextureUses; ++use) {
       const TextureRef layer = uses.refs[use];
       if (layer.texture < 0) continue;
-      const vec4 texel = sampleTextureRef(layer, s.uv, s.uv1, use == kTextureSheenColor);
-      if (use == kTextureSheenColor) {
+      const bool colour = use == kTextureSheenColor || use == kTextureCoatColor;
+      const vec4 texel = sampleTextureRef(layer, s.uv, s.uv1, colour);
+      if (colour) {
         material.params[layer.param] *= texel.r;
         material.params[layer.param + 1u] *= texel.g;
         material.params[layer.param + 2u] *= texel.b;

@@ -115,15 +115,18 @@ RL_CONST uint kTextureSpecularColor = 5;      // sRGB; RGB scales the specular_t
 // The layer textures of glTF's layered extensions, each scaling one parameter of the model they were read for
 // (openpbr): the parameter at slot `param` becomes param x (scale + (1 - scale) texel), scale being 0 but for the
 // film's thickness, which runs from iridescenceThicknessMinimum (scale = minimum / maximum) to the maximum.
-RL_CONST uint kTextureCoat = 6;                 // linear; R scales the coat's weight (clearcoatTexture)
-RL_CONST uint kTextureCoatRoughness = 7;        // linear; G its roughness (clearcoatRoughnessTexture)
-RL_CONST uint kTextureSheenColor = 8;           // sRGB; RGB the fuzz's colour (sheenColorTexture)
-RL_CONST uint kTextureSheenRoughness = 9;       // linear; A the fuzz's roughness (sheenRoughnessTexture)
+RL_CONST uint kTextureCoat = 6;                 // linear; R scales the coat's weight (clearcoatTexture, coatTexture)
+RL_CONST uint kTextureCoatRoughness = 7;        // linear; G its roughness (clearcoatRoughnessTexture, coatRoughness...)
+RL_CONST uint kTextureSheenColor = 8;           // sRGB; RGB the fuzz's colour (sheenColorTexture, fuzzColorTexture)
+RL_CONST uint kTextureSheenRoughness = 9;       // linear; A the fuzz's roughness (sheenRoughness..., fuzzRoughness...)
 RL_CONST uint kTextureIridescence = 10;         // linear; R the thin film's weight (iridescenceTexture)
 RL_CONST uint kTextureIridescenceThickness = 11;  // linear; G the film's thickness (iridescenceThicknessTexture)
 RL_CONST uint kTextureTransmission = 12;        // linear; R the transmission weight (transmissionTexture)
+RL_CONST uint kTextureCoatColor = 13;           // sRGB; RGB the coat's colour (coatColorTexture)
+RL_CONST uint kTextureFuzz = 14;                // linear; R the fuzz's weight (fuzzTexture)
+RL_CONST uint kTextureDiffuseRoughness = 15;    // linear; R the diffuse roughness (diffuseRoughnessTexture)
 RL_CONST uint kFirstLayerTexture = 6;
-RL_CONST uint kTextureUses = 13;
+RL_CONST uint kTextureUses = 16;
 
 // MaterialTextures.alphaMode (glTF alphaMode). Opaque surfaces are opaque geometry: traversal never asks.
 RL_CONST uint kAlphaOpaque = 0;
@@ -138,7 +141,7 @@ struct MaterialTextures {
   uint layerModel;    // the model whose slots the layer textures name (kNoParam: none); they apply to it only (a
                       // material switched to another model in the viewer reads them again when switched back)
 };
-RL_CHECK_SIZE(MaterialTextures, 536);
+RL_CHECK_SIZE(MaterialTextures, 656);
 
 // One light for next event estimation, of any kind (generated/light_kinds.h, from shaders/lights/lights.cmake):
 // punctual lights, emitting triangles and spheres in world space, the environment. What p0, p1, p2 and radiance

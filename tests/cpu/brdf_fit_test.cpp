@@ -11,6 +11,8 @@
 
 #include "brdf_params/material_params.h"
 #include "fit/fit.h"
+#include "fit/fit_plan.h"
+#include "fit/fit_search.h"
 #include "fit_test_support.h"
 #include "measured/merl.h"
 #include "reference/brdf_reference.h"
@@ -114,6 +116,41 @@ TEST(BrdfFit, TheSameSeedGivesTheSameFits) {
     EXPECT_EQ(a[i].model, b[i].model);
     EXPECT_EQ(a[i].error, b[i].error);
     EXPECT_EQ(fitParamList(a[i]), fitParamList(b[i]));
+  }
+}
+
+// A fit that names no start count gives each model its registry's: Lafortune's `fit: starts 16` (its flat valleys,
+// docs/fitting.md), and SGD's `fit: start` point (Bagher's median shadowing) is one of its starts.
+TEST(BrdfFit, TheRegistrysStartCountAndStartAreAFitsDefaults) {
+  const FitTarget target = loadFitTarget("lambert:rho_d=0.5");
+  FitOptions o = options({"lafortune"}, 0);
+  EXPECT_EQ(fitModels(target, o)[0].starts, 16);
+  o.starts = 4;
+  EXPECT_EQ(fitModels(target, o)[0].starts, 4) << "a count the fit names is every model's";
+
+  const ModelInfo& sgd = *findModel("sgd");
+  ASSERT_FALSE(sgd.fitStart.empty());
+  const fitting::ModelPlan plan = fitting::planOf(sgd, true);
+  ASSERT_EQ(plan.declaredStart.size(), plan.variables.size());
+  std::mt19937_64 random(1);
+  const std::vector<fitting::Scored> starts =
+      fitting::searchBasins(fitting::coarseTarget(target), plan, FitMetric::kCosine, 64, 4, random);
+  bool found = false;
+  for (const fitting::Scored& start : starts) {
+    bool same = true;
+    for (int j : plan.nonlinear) same &= start.x[std::size_t(j)] == plan.declaredStart[std::size_t(j)];
+    found |= same;
+  }
+  EXPECT_TRUE(found) << "the declared start is among the search's " << starts.size();
+  reference::Material at = plan.base;
+  fitting::applyVariables(plan.variables, plan.declaredStart.data(), at);
+  for (const auto& [name, value] : sgd.fitStart) {
+    const ParamInfo* param = nullptr;
+    for (const ParamInfo& p : sgd.params) {
+      if (p.name == name) param = &p;
+    }
+    ASSERT_NE(param, nullptr) << name;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(at.params[param->slot + c], value, 1e-9 * value) << name << " " << c;
   }
 }
 

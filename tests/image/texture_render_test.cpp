@@ -205,10 +205,10 @@ TEST_F(TextureRenderTest, SpecularTexturesScaleTheDielectricsStrengthAndColour) 
   expectTexturesActAsHostScaling(device(), textured, plain);
 }
 
-// The layered extensions' textures (glTF's clearcoat, sheen, iridescence and transmission on openpbr): each scales
-// its parameter by its channel, R the weights, G the coat's roughness and the film's thickness (from the floor
-// minimum / maximum up), A the fuzz's roughness, the sRGB RGB the fuzz's colour; the same render as white texels with
-// the parameters scaled on the host. On another model (a material switched away in the viewer) they read nothing.
+// The layered extensions' textures (glTF's clearcoat, sheen, iridescence, transmission and the coat, fuzz and diffuse
+// roughness drafts on openpbr): each scales its parameter by its channel, R the weights and the diffuse roughness, G
+// the coat's roughness and the film's thickness (from the floor minimum / maximum up), A the fuzz's roughness, the sRGB
+// RGB the fuzz's and the coat's colours; the same render as white texels with the parameters scaled on the host. On another model (a material switched away in the viewer) they read nothing.
 TEST_F(TextureRenderTest, LayerTexturesScaleTheLayersParameters) {
   gpu::MaterialRecord record = defaultRecord(modelId("openpbr"));
   const std::vector<std::pair<const char*, float>> layers = {
@@ -216,6 +216,8 @@ TEST_F(TextureRenderTest, LayerTexturesScaleTheLayersParameters) {
       {"thin_film_weight", 0.7f}, {"thin_film_thickness", 0.5f}, {"transmission_weight", 0.6f}};
   for (const auto& [name, value] : layers) setParam(record, name, glm::vec3(value), "test");
   setParam(record, "fuzz_color", glm::vec3(1.0f, 0.8f, 0.6f), "test");
+  setParam(record, "coat_color", glm::vec3(0.9f, 0.7f, 1.0f), "test");
+  setParam(record, "base_diffuse_roughness", glm::vec3(0.5f), "test");
   const std::uint8_t texel[4] = {200, 100, 50, 90};
   constexpr float kThicknessFloor = 0.25f;
   Scene textured = quadScene(record, gpu::kTextureCoat, solidTexture({texel[0], texel[1], texel[2], texel[3]}),
@@ -233,6 +235,9 @@ TEST_F(TextureRenderTest, LayerTexturesScaleTheLayersParameters) {
   layer(gpu::kTextureIridescence, "thin_film_weight");
   layer(gpu::kTextureIridescenceThickness, "thin_film_thickness");
   layer(gpu::kTextureTransmission, "transmission_weight");
+  layer(gpu::kTextureCoatColor, "coat_color");
+  layer(gpu::kTextureFuzz, "fuzz_weight");
+  layer(gpu::kTextureDiffuseRoughness, "base_diffuse_roughness");
   uses.layerModel = record.model;
   ASSERT_TRUE(hasLayerTextures(textured, textured.materials[0].record));
   ASSERT_NE(featuresOf(textured).features & gpu::kFeatureLayerTextures, 0u);
@@ -246,8 +251,11 @@ TEST_F(TextureRenderTest, LayerTexturesScaleTheLayersParameters) {
   setParam(scaled, "thin_film_weight", glm::vec3(0.7f * r), "test");
   setParam(scaled, "thin_film_thickness", glm::vec3(0.5f * (kThicknessFloor + (1.0f - kThicknessFloor) * g)), "test");
   setParam(scaled, "transmission_weight", glm::vec3(0.6f * r), "test");
+  setParam(scaled, "fuzz_weight", glm::vec3(0.8f * r), "test");
+  setParam(scaled, "base_diffuse_roughness", glm::vec3(0.5f * r), "test");
   const glm::vec3 tint(srgbToLinear(texel[0] / 255.0), srgbToLinear(texel[1] / 255.0), srgbToLinear(texel[2] / 255.0));
   setParam(scaled, "fuzz_color", glm::vec3(1.0f, 0.8f, 0.6f) * tint, "test");
+  setParam(scaled, "coat_color", glm::vec3(0.9f, 0.7f, 1.0f) * tint, "test");
   expectTexturesActAsHostScaling(device(), textured, plain);
   // For another model (a material switched away in the viewer) they read nothing.
   Scene switched = textured;

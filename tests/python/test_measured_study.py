@@ -174,7 +174,7 @@ def test_fit_arguments_are_checked_as_the_command_line_checks_them(work):
         fits = raylab.brdf.fit(target, models=["lambert"], starts=np.int64(1))
         assert fits[0]["params"]["rho_d"] == pytest.approx([0.1 * math.pi] * 3, rel=1e-6), "the 0-weight sample counts"
         assert fits[0]["warnings"] == [] and fits[0]["isotropic"] is False
-    for arguments, says in (({"starts": -1}, "starts must be within 1..64, not -1"), ({"search": -5}, "search"),
+    for arguments, says in (({"starts": -1}, "starts must be within 1..64 or None, not -1"), ({"search": -5}, "search"),
                             ({"threads": 1000}, "threads"), ({"seed": -1}, "seed")):
         with pytest.raises(ValueError, match=says):
             raylab.brdf.fit(csv, models=["lambert"], **arguments)

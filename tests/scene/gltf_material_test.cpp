@@ -512,7 +512,7 @@ TEST(GltfMaterial, TheOpenPbrAlignedDraftsMapOntoTheirOwnParameters) {
                                                {"coatColorFactor", {0.9, 0.8, 0.7}}, {"coatDarkeningFactor", 0.5}}},
                        {"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}}},
                        {"KHR_materials_fuzz", {{"fuzzFactor", 0.6}, {"fuzzColorFactor", {0.2, 0.4, 0.6}},
-                                               {"fuzzRoughnessFactor", 0.7}, {"fuzzTexture", {{"index", 0}}}}},
+                                               {"fuzzRoughnessFactor", 0.7}}},
                        {"KHR_materials_sheen", {{"sheenColorFactor", {1.0, 1.0, 1.0}}}},
                        {"KHR_materials_diffuse_roughness", {{"diffuseRoughnessFactor", 0.9}}}}}});
   const gpu::MaterialRecord& r = scene.materials[0].record;
@@ -526,7 +526,6 @@ TEST(GltfMaterial, TheOpenPbrAlignedDraftsMapOntoTheirOwnParameters) {
   expectNear(getParam(r, "fuzz_color"), {0.2f, 0.4f, 0.6f}, "fuzz colour");
   EXPECT_FLOAT_EQ(getParam(r, "fuzz_roughness").x, 0.7f);
   EXPECT_FLOAT_EQ(getParam(r, "base_diffuse_roughness").x, 0.9f);
-  EXPECT_EQ(warnings.count("fuzzTexture"), 1) << "its texture is not yet read, and says so";
   // KHR_materials_anisotropy: the ratio alpha_b / alpha_t of glTF's stretch, mix(alpha, 1, s^2) against alpha.
   const Scene brushed = loadMaterial({{"pbrMetallicRoughness", {{"metallicFactor", 1.0}, {"roughnessFactor", 0.5}}},
                                       {"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.6},
@@ -541,6 +540,48 @@ TEST(GltfMaterial, TheOpenPbrAlignedDraftsMapOntoTheirOwnParameters) {
     const std::string error = materialError({{"name", "bad draft"}, {"extensions", bad}});
     EXPECT_NE(error.find("KHR_materials_"), std::string::npos) << error;
   }
+}
+
+// The drafts' textures in their texts' channels (coat R weight, G roughness, sRGB colour; fuzz R weight, sRGB colour,
+// A roughness; diffuse roughness R) scale the parameters their factors set, and where a draft replaces a ratified
+// extension (coat over clear coat, fuzz over sheen) the replaced one's textures are reported and not read.
+TEST(GltfMaterial, TheDraftsTexturesScaleTheirParametersAndReplaceTheRatifiedOnes) {
+  WarningCapture warnings;
+  GltfBuilder builder = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+  const json texture = {{"index", 0}};
+  builder.doc()["materials"][0]["extensions"] = {
+      {"KHR_materials_coat", {{"coatFactor", 0.8}, {"coatTexture", texture}, {"coatRoughnessFactor", 0.3},
+                              {"coatRoughnessTexture", texture}, {"coatColorTexture", texture},
+                              {"coatAnisotropyStrength", 0.5}}},
+      {"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}, {"clearcoatTexture", texture}}},
+      {"KHR_materials_fuzz", {{"fuzzFactor", 0.6}, {"fuzzTexture", texture}, {"fuzzColorTexture", texture},
+                              {"fuzzRoughnessTexture", texture}}},
+      {"KHR_materials_sheen", {{"sheenColorFactor", {1.0, 1.0, 1.0}}, {"sheenRoughnessTexture", texture}}},
+      {"KHR_materials_diffuse_roughness", {{"diffuseRoughnessFactor", 0.9}, {"diffuseRoughnessTexture", texture}}}};
+  const Scene scene = builder.load();
+  const gpu::MaterialRecord& r = scene.materials[0].record;
+  ASSERT_EQ(r.model, modelId("openpbr"));
+  ASSERT_GE(r.textures, 0);
+  const gpu::MaterialTextures& uses = scene.materialTextures[std::size_t(r.textures)];
+  EXPECT_EQ(uses.layerModel, r.model);
+  const ModelInfo& openpbr = modelInfo(r.model);
+  for (const auto& [use, param] : std::vector<std::pair<std::uint32_t, const char*>>{
+           {gpu::kTextureCoat, "coat_weight"}, {gpu::kTextureCoatRoughness, "coat_roughness"},
+           {gpu::kTextureCoatColor, "coat_color"}, {gpu::kTextureFuzz, "fuzz_weight"},
+           {gpu::kTextureSheenColor, "fuzz_color"}, {gpu::kTextureSheenRoughness, "fuzz_roughness"},
+           {gpu::kTextureDiffuseRoughness, "base_diffuse_roughness"}}) {
+    EXPECT_GE(uses.refs[use].texture, 0) << param;
+    EXPECT_EQ(uses.refs[use].param, findParam(openpbr, param)->slot) << param;
+    EXPECT_EQ(uses.refs[use].scale, 0.0f) << param;
+  }
+  EXPECT_EQ(warnings.count("clearcoatTexture (KHR_materials_coat replaces"), 1);
+  EXPECT_EQ(warnings.count("sheenRoughnessTexture (KHR_materials_fuzz replaces"), 1);
+  for (const char* read : {"coatTexture", "coatColorTexture", "fuzzTexture", "diffuseRoughnessTexture"}) {
+    EXPECT_EQ(warnings.count(std::string("KHR_materials_") + (read[0] == 'c' ? "coat." : read[0] == 'f' ? "fuzz." : "diffuse_roughness.") + read), 0)
+        << read << " is read, not ignored";
+  }
+  // coatAnisotropyStrength as KHR_materials_anisotropy's strength, on the coat's roughness.
+  EXPECT_NEAR(getParam(r, "coat_roughness_anisotropy").x, 1.0f - 0.09f / (0.09f + 0.91f * 0.25f), 1e-6f);
 }
 
 // Each layered extension at its neutral value is no layer: beside a clear coat (which makes the material openpbr

@@ -37,7 +37,8 @@ def parse_model(name, prefix, include, path):
     """The lobes, parameter table, sweep line, presets and tool lines (look, figures, sweep scenes) of the comment
     a model's GLSL file opens with."""
     lobes, params, sweep, slot, preset_lines = None, [], "", 0, []
-    look, figure_lines, sweep_scene_lines, non_reciprocal, fit_by_name = None, [], [], "", ""
+    look, figure_lines, sweep_scene_lines, non_reciprocal, fit_by_name, fit_starts = None, [], [], "", "", 0
+    fit_start_line = None
     feature_lines, medium, sampled_albedo = [], None, None
     with open(path, encoding="utf-8") as f:
         for number, line in enumerate(f, 1):
@@ -69,9 +70,18 @@ def parse_model(name, prefix, include, path):
                 medium = (where, body[len("medium:"):].split())
             elif body.startswith("fit:"):
                 answer, _, why = body[len("fit:"):].partition(",")
-                if answer.strip() != "by name" or not why.strip():
-                    raise RegistryError(f"{where}: 'fit: by name, WHY' keeps a model out of the default fits")
-                fit_by_name = why.strip()
+                words = answer.split()
+                if answer.strip() == "by name" and why.strip():
+                    fit_by_name = why.strip()
+                elif len(words) == 2 and words[0] == "starts" and words[1].isdigit() and \
+                        1 <= int(words[1]) <= 64 and why.strip():
+                    fit_starts = int(words[1])
+                elif len(words) >= 2 and words[0] == "start" and why.strip():
+                    fit_start_line = (where, words[1:])
+                else:
+                    raise RegistryError(f"{where}: 'fit: by name, WHY' keeps a model out of the default fits; "
+                                        "'fit: starts N, WHY' gives it N (1..64) Levenberg-Marquardt starts by default; "
+                                        "'fit: start NAME=VALUE ..., WHY' is one more start, the defaults with these")
             elif body.startswith("sweep:"):
                 sweep = body[len("sweep:"):].strip()
             elif body.startswith("preset:"):
@@ -132,6 +142,18 @@ def parse_model(name, prefix, include, path):
             raise RegistryError(f"{where}: 'medium: PARAM...' names the parameters <prefix>MediumAbsorption takes, of "
                                 "a model with transmission and a density")
         medium_params = [by_name[w] for w in words]
+    fit_start = []
+    if fit_start_line is not None:
+        where, words = fit_start_line
+        for word in words:
+            pname, _, text = word.partition("=")
+            try:
+                value = float(text)
+            except ValueError:
+                value = None
+            if pname not in by_name or value is None or not by_name[pname]["min"] <= value <= by_name[pname]["max"]:
+                raise RegistryError(f"{where}: '{word}' is not NAME=VALUE for a parameter of the model within its range")
+            fit_start.append((pname, value))
     sampled_albedo_param = None
     if sampled_albedo is not None:
         where, words = sampled_albedo
@@ -152,7 +174,9 @@ def parse_model(name, prefix, include, path):
     sweep_scenes = [parse_sweep_scene(where, text, why, params, keys) for where, text, why in sweep_scene_lines]
     return dict(name=name, prefix=prefix, include=include, path=path, lobes=lobes, params=params, sweep=sweep,
                 presets=presets, look=look[1] if look else None, figures=figures, sweep_scenes=sweep_scenes,
-                non_reciprocal=non_reciprocal, fit_by_name=fit_by_name, features=features, medium=medium_params,
+                non_reciprocal=non_reciprocal, fit_by_name=fit_by_name, fit_starts=fit_starts, fit_start=fit_start,
+                features=features,
+                medium=medium_params,
                 sampled_albedo=sampled_albedo_param)
 
 
@@ -328,6 +352,7 @@ def cpp_table(models, source_dir):
         glsl = os.path.relpath(m["path"], source_dir)
         features = ", ".join("{" + f"{cpp_string(f['name'])}, {cpp_string(f['param'])}, {f['bit']}u" + "}"
                              for f in m["features"])
+        fit_start = ", ".join("{" + f"{cpp_string(name)}, {repr(float(value))}" + "}" for name, value in m["fit_start"])
         presets = ", ".join(
             "{" + f"{cpp_string(p['key'])}, {cpp_string(p['name'])}, {{" + ", ".join(
                 "{" + f"{cpp_string(param)}, glm::vec3({', '.join(cpp_float(c) for c in channels)})" + "}"
@@ -335,7 +360,7 @@ def cpp_table(models, source_dir):
             for p in m["presets"])
         out.append(f"      {{{cpp_string(m['name'])}, {i}u, {m['lobes']}u, {{{params}}}, {cpp_string(m['sweep'])}, "
                    f"{cpp_string(glsl)}, {cpp_string(m['reference'])}, {{{presets}}}, "
-                   f"{cpp_string(m['non_reciprocal'])}, {cpp_string(m['fit_by_name'])}, {{{features}}}}},")
+                   f"{cpp_string(m['non_reciprocal'])}, {cpp_string(m['fit_by_name'])}, {m['fit_starts']}u, {{{fit_start}}}, {{{features}}}}},")
     out += ["  };", "  return table;", "}", "", "}  // namespace raylab", ""]
     return "\n".join(out)
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -27,7 +28,7 @@ struct FitCommandOptions {
   std::string target;
   std::string models;
   std::string metric = "cosine";
-  std::uint32_t starts = 4;
+  std::optional<std::uint32_t> starts;  // empty: each model's own (fit.h)
   std::uint32_t seed = 1;
   std::uint32_t search = 256;
   std::uint32_t threads = 0;
@@ -62,7 +63,7 @@ int fit(const FitCommandOptions& o) {
     }
   }
   FitOptions options;
-  options.starts = int(o.starts);
+  options.starts = o.starts ? int(*o.starts) : 0;
   options.seed = o.seed;
   options.threads = int(o.threads);
   options.searchPoints = int(o.search);
@@ -81,9 +82,9 @@ int fit(const FitCommandOptions& o) {
   const FitTarget target = loadFitTarget(o.target);
   const bool isotropic = options.isotropic.value_or(target.isotropic);
   std::fprintf(stderr, "%s: %s: %s\n", kCommand, o.target.c_str(), summarizeTarget(target).text().c_str());
-  std::fprintf(stderr, "%s: %s error, %s, search of %u points, %u LM starts per model\n", kCommand,
+  std::fprintf(stderr, "%s: %s error, %s, search of %u points, %s\n", kCommand,
                fitMetricName(options.metric), isotropic ? "isotropic (x and y parameters tied)" : "anisotropic",
-               o.search, o.starts);
+               o.search, describeStarts(options).c_str());
   // One line per finished start on a log, redrawn on a terminal: starts done, elapsed, ETA.
   options.progress = [&](int done, int total, const std::string& model, double seconds) {
     const double elapsed = clock.seconds();
@@ -113,7 +114,7 @@ int fit(const FitCommandOptions& o) {
                     {"metric", fitMetricName(options.metric)}, {"isotropic", isotropic}, {"target", o.target}});
   }
   if (!o.jsonPath.empty()) writeFileAtomically(o.jsonPath, json.dump(2) + "\n");
-  std::fprintf(stderr, "%s: %zu models, %u starts each, in %s%s%s\n", kCommand, fits.size(), o.starts,
+  std::fprintf(stderr, "%s: %zu models in %s%s%s\n", kCommand, fits.size(),
                formatSeconds(clock.seconds()).c_str(), o.jsonPath.empty() ? "" : "; wrote ", o.jsonPath.c_str());
   return kExitOk;
 }
@@ -144,8 +145,10 @@ void addBrdfFitCommand(CLI::App& brdf) {
     return list;
   }() + ")");
   addChoice(command, "--metric", o->metric, {"cosine", "log"}, "the error minimised and reported");
-  addCount(command, "--starts", o->starts, "Levenberg-Marquardt starts per model: the search's best distinct points", 1,
-           64);
+  addOptionalCount(command, "--starts", o->starts,
+                   "Levenberg-Marquardt starts per model: the search's best distinct points (default: " +
+                       describeStarts(FitOptions{}) + ")",
+                   1, 64);
   addCount(command, "--search", o->search,
            "points of the search per model (0: no search; the starts are the defaults, then random points)", 0,
            65536);
