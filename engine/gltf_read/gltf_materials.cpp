@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -662,11 +663,10 @@ void convertMaterials(Document& document, Scene& scene) {
     if (const json* anisotropy = findPath(materialJson, {"extensions", "KHR_materials_anisotropy"})) {
       const std::string name = "KHR_materials_anisotropy";
       readFactor(*anisotropy, "anisotropyStrength", name, 0.0, 1.0, input.anisotropy);
-      float rotation = 0.0f;
       readFactor(*anisotropy, "anisotropyRotation", name, -std::numeric_limits<float>::max(),
-                 std::numeric_limits<float>::max(), rotation);
-      if (rotation != 0.0f) document.ignore(name + ".anisotropyRotation (the highlight stretches along the tangent)");
-      if (anisotropy->contains("anisotropyTexture")) document.ignore(name + ".anisotropyTexture (its strength applies alone)");
+                 std::numeric_limits<float>::max(), input.anisotropyRotation);
+      // The angle only turns the direction: within one turn it is exact in single precision.
+      input.anisotropyRotation = float(std::remainder(double(input.anisotropyRotation), 2.0 * std::numbers::pi));
     }
     if (const json* diffuse = findPath(materialJson, {"extensions", "KHR_materials_diffuse_roughness"})) {
       const std::string name = "KHR_materials_diffuse_roughness";
@@ -749,6 +749,19 @@ void convertMaterials(Document& document, Scene& scene) {
       uses.refs[layer.use] = ref;
       uses.layerModel = record.model;
     }
+    // KHR_materials_anisotropy's direction (its rotation and texture), where the material has the anisotropy.
+    if (const ParamInfo* ratio = findParam(modelInfo(record.model), "specular_roughness_anisotropy");
+        ratio != nullptr && input.anisotropy > 0.0f) {
+      if (const json* info = use({"extensions", "KHR_materials_anisotropy", "anisotropyTexture"})) {
+        uses.refs[gpu::kTextureAnisotropy] = convertUse(info, "KHR_materials_anisotropy.anisotropyTexture");
+        uses.refs[gpu::kTextureAnisotropy].param = ratio->slot;
+        uses.refs[gpu::kTextureAnisotropy].scale = input.anisotropy;
+      }
+      uses.anisotropyRotation = input.anisotropyRotation;
+      if (uses.refs[gpu::kTextureAnisotropy].texture >= 0 || uses.anisotropyRotation != 0.0f) uses.layerModel = record.model;
+    } else if (use({"extensions", "KHR_materials_anisotropy", "anisotropyTexture"})) {
+      document.ignore("KHR_materials_anisotropy.anisotropyTexture (the anisotropy is absent)");
+    }
     if (const json* info = use({"normalTexture"})) uses.refs[gpu::kTextureNormal] = convertUse(info, "normalTexture");
     if (const json* info = use({"occlusionTexture"})) convertUse(info, "occlusionTexture");
     // glTF's emissive factor and strength; a model with its own emission (openpbr) takes it as its parameters unless
@@ -767,7 +780,7 @@ void convertMaterials(Document& document, Scene& scene) {
     }
     const bool textured = std::any_of(std::begin(uses.refs), std::end(uses.refs),
                                       [](const gpu::TextureRef& ref) { return ref.texture >= 0; });
-    if (textured || uses.alphaMode != gpu::kAlphaOpaque) {
+    if (textured || uses.alphaMode != gpu::kAlphaOpaque || uses.anisotropyRotation != 0.0f) {
       record.textures = int(scene.materialTextures.size());
       scene.materialTextures.push_back(uses);
     }

@@ -38,6 +38,7 @@ struct MetallicRoughness {
   // where both appear), KHR_materials_fuzz (it replaces the sheen), KHR_materials_diffuse_roughness.
   bool hasCoat = false;
   float coat = 0.0f, coatRoughness = 0.0f, coatIor = 1.5f, coatDarkening = 1.0f, coatAnisotropy = 0.0f;
+  float anisotropyRotation = 0.0f;  // KHR_materials_anisotropy, radians from the tangent towards the bitangent
   glm::vec3 coatColor{1.0f};
   bool hasFuzz = false;
   float fuzz = 0.0f, fuzzRoughness = 0.5f;

@@ -33,6 +33,7 @@ gpu::MaterialTextures noMaterialTextures() {
   textures.alpha = 1.0f;
   textures.alphaCutoff = 0.5f;
   textures.layerModel = gpu::kNoParam;  // no model: no layer textures
+  textures.anisotropyRotation = 0.0f;
   return textures;
 }
 
@@ -43,7 +44,7 @@ bool hasLayerTextures(const Scene& scene, const gpu::MaterialRecord& record) {
   for (std::uint32_t use = gpu::kFirstLayerTexture; use < gpu::kTextureUses; ++use) {
     if (uses.refs[use].texture >= 0) return true;
   }
-  return false;
+  return uses.anisotropyRotation != 0.0f;
 }
 
 bool hasAlpha(const Scene& scene, const gpu::MaterialRecord& record) {

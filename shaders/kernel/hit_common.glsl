@@ -43,6 +43,32 @@ void applyNormalMap(inout Surface s, TextureRef ref) {
 // strength and colour (roles `specular_weight`, `specular_tint`), the layered extensions' textures the layer
 // parameters they name (kTextureCoat...), and the normal map bends the shading normal.
 // The emissive texture is read where emission is (kernel/emission.glsl).
+// KHR_materials_anisotropy's direction: the tangent turned by anisotropyRotation plus the texture's angle (its RG, in
+// the frame of the tangent and the bitangent cross(n, t) w) about the shading normal; the texture's B scales the
+// strength, mapped as the loader maps the factor (gltf_materials.cpp, anisotropyOf). The shading frame's x axis is
+// the tangent (shadingSide), and the anisotropic GGX stretches along it.
+void applyAnisotropyDirection(inout MaterialRecord material, inout Surface s, MaterialTextures uses) {
+  const TextureRef anisotropy = uses.refs[kTextureAnisotropy];
+  vec2 direction = vec2(1.0, 0.0);
+  if (anisotropy.texture >= 0) {
+    const vec3 texel = sampleTextureRef(anisotropy, s.uv, s.uv1, false).rgb;
+    direction = 2.0 * texel.rg - 1.0;
+    const uint roughnessSlot = material.textureParams & 0xFFu;
+    const float roughness = roughnessSlot != kNoTextureParam ? material.params[roughnessSlot] : 0.0;
+    const float alpha = max(roughness * roughness, 1e-3);
+    const float strength = anisotropy.scale * texel.b;
+    material.params[anisotropy.param] = clamp(1.0 - alpha / (alpha + (1.0 - alpha) * strength * strength), 0.0, 1.0);
+  }
+  // A texel of (0.5, 0.5) has no direction: the tangent's, as the factor alone.
+  const float angle = uses.anisotropyRotation + (dot(direction, direction) > 0.0 ? atan(direction.y, direction.x) : 0.0);
+  const vec3 n = s.shadingNormal;
+  const vec3 t = s.tangent - n * dot(n, s.tangent);
+  if (angle == 0.0 || !(dot(t, t) > 0.0)) return;
+  const vec3 tangent = normalize(t);
+  const float handedness = s.normalTangent.w < 0.0 ? -1.0 : 1.0;
+  s.tangent = cos(angle) * tangent + sin(angle) * handedness * cross(n, tangent);
+}
+
 void applyTextures(inout MaterialRecord material, inout Surface s) {
   if (!featureEnabled(kFeatureTextures) || material.textures < 0) return;
   const MaterialTextures uses = materialTextures[material.textures];
@@ -78,7 +104,7 @@ void applyTextures(inout MaterialRecord material, inout Surface s) {
   if (featureEnabled(kFeatureLayerTextures) && uses.layerModel == material.model) {
     // One texture read in a loop kept rolled, not one inlined per use (the feature still costs a textured openpbr kernel
     // about a third more compile time: ClearCoatTest 72 -> 95 s cold).
-    [[dont_unroll]] for (uint use = kFirstLayerTexture; use < kTextureUses; ++use) {
+    [[dont_unroll]] for (uint use = kFirstLayerTexture; use < kLayerTexturesEnd; ++use) {
       const TextureRef layer = uses.refs[use];
       if (layer.texture < 0) continue;
       const bool colour = use == kTextureSheenColor || use == kTextureCoatColor;
@@ -95,6 +121,7 @@ void applyTextures(inout MaterialRecord material, inout Surface s) {
                                                                                          : texel.r;
       material.params[layer.param] *= layer.scale + (1.0 - layer.scale) * t;
     }
+    applyAnisotropyDirection(material, s, uses);
   }
   const TextureRef normal = uses.refs[kTextureNormal];
   if (normal.texture >= 0) applyNormalMap(s, normal);

@@ -11,7 +11,8 @@ struct Surface {
   vec3 geometricNormal;  // world space, unit, outward (counter-clockwise winding; outside of a sphere)
   vec3 shadingNormal;    // world space, unit, on the same side as geometricNormal
   vec3 tangent;          // world space; a hint for the shading frame (may be zero)
-  vec4 normalTangent;    // a normal map's tangent (world space) and bitangent sign; xyz zero: none
+  vec4 normalTangent;    // a normal map's tangent (world space; xyz zero: none) and the bitangent's sign (w; without
+                         // a mesh's tangents, the UV parameterisation's)
   vec2 uv;               // TEXCOORD_0
   vec2 uv1;              // TEXCOORD_1
   bool normalMapped;     // shadingNormal comes from a normal map (hit_common.glsl, applyNormalMap)
@@ -89,7 +90,13 @@ Surface triangleSurface(Hit hit, InstanceRecord instance) {
     s.uv = uv0 + hit.barycentrics.x * duv1 + hit.barycentrics.y * duv2;
     // dp/du from the UV parameterisation (pbrt-v4 Triangle::InteractionFromIntersection).
     const float determinant = duv1.x * duv2.y - duv1.y * duv2.x;
-    if (abs(determinant) > 1e-20) s.tangent = transformVector(hit.objectToWorld, (duv2.y * e1 - duv1.y * e2) / determinant);
+    if (abs(determinant) > 1e-20) {
+      s.tangent = transformVector(hit.objectToWorld, (duv2.y * e1 - duv1.y * e2) / determinant);
+      // Without a mesh's tangents, the bitangent's sign is the parameterisation's: +1 where cross(n, dp/du) runs
+      // along dp/dv (what a generated tangent's w would say; the anisotropy's direction turns towards it).
+      const vec3 dpdv = transformVector(hit.objectToWorld, (duv1.x * e2 - duv2.x * e1) / determinant);
+      s.normalTangent.w = dot(cross(s.shadingNormal, s.tangent), dpdv) < 0.0 ? -1.0 : 1.0;
+    }
   }
   if ((instance.vertexFlags & kVertexHasUvs1) != 0u) {
     s.uv1 = weights.x * uvs1[i0] + weights.y * uvs1[i1] + weights.z * uvs1[i2];

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -261,6 +262,58 @@ TEST_F(TextureRenderTest, LayerTexturesScaleTheLayersParameters) {
   Scene switched = textured;
   switched.materialTextures[0].layerModel = modelId("gltf_pbr");
   EXPECT_FALSE(hasLayerTextures(switched, switched.materials[0].record));
+}
+
+// KHR_materials_anisotropy's direction: the anisotropic base turned by anisotropyRotation = pi/4, from the tangent
+// (+u, along +x) towards the bitangent (+v, along +z), renders as the unturned material on a quad whose u runs along
+// x + z (turned the other way, along x - z, it would not: the light is off the diagonal); and the texture's RG
+// direction and B strength render as that angle and the strength's ratio set on the host.
+TEST_F(TextureRenderTest, TheAnisotropysRotationAndTextureTurnAndScaleTheStretch) {
+  gpu::MaterialRecord record = defaultRecord(modelId("openpbr"));
+  setParam(record, "base_metalness", glm::vec3(1.0f), "test");
+  setParam(record, "base_color", glm::vec3(0.9f, 0.7f, 0.5f), "test");
+  setParam(record, "specular_roughness", glm::vec3(0.45f), "test");
+  setParam(record, "specular_roughness_anisotropy", glm::vec3(0.85f), "test");
+  const auto sceneOf = [&](const Mesh& mesh, float rotation) {
+    Scene scene = quadScene(record, gpu::kTextureBaseColor, solidTexture({255, 255, 255, 255}), mesh);
+    scene.materialTextures[0].anisotropyRotation = rotation;
+    scene.materialTextures[0].layerModel = record.model;
+    return scene;
+  };
+  Mesh turnedUvs = texturedQuad();
+  turnedUvs.uvs = {{0, 0.5f}, {0.5f, 0}, {1, 0.5f}, {0.5f, 1}};  // u' = (u + v) / 2: dp/du' along x + z
+  const Scene turned = sceneOf(texturedQuad(), float(std::numbers::pi / 4.0));
+  ASSERT_NE(featuresOf(turned).features & gpu::kFeatureLayerTextures, 0u) << "a rotation alone needs the feature";
+  const auto render = [&](const Scene& scene) {
+    return renderImage(device(), scene, settingsFor(scene, gpu::kIntegratorSlides), 1);
+  };
+  const Image a = render(turned);
+  const Image b = render(sceneOf(turnedUvs, 0.0f));
+  const Image unturned = render(sceneOf(texturedQuad(), 0.0f));
+  double difference = 0.0, total = 0.0;
+  for (std::size_t i = 0; i < a.rgba.size(); ++i) {
+    ASSERT_NEAR(a.rgba[i], b.rgba[i], 1e-4f * b.rgba[i] + 1e-7f) << "value " << i;
+    difference += std::abs(a.rgba[i] - unturned.rgba[i]);
+    total += unturned.rgba[i];
+  }
+  EXPECT_GT(difference, 0.05 * total) << "the turn shows: the stretch is not along the first tangent any more";
+
+  // The texture: RG (0, 128) is the direction (-1, 1/255), B 170 two thirds of the strength 0.6.
+  const std::uint8_t texel[4] = {0, 128, 170, 255};
+  Scene textured = sceneOf(texturedQuad(), 0.3f);
+  textured.textures[0] = solidTexture({texel[0], texel[1], texel[2], texel[3]});
+  textured.materialTextures[0].refs[gpu::kTextureBaseColor] = noTextureRef();
+  textured.materialTextures[0].refs[gpu::kTextureAnisotropy] = textureRef(0);
+  textured.materialTextures[0].refs[gpu::kTextureAnisotropy].param =
+      findParam(modelInfo(record.model), "specular_roughness_anisotropy")->slot;
+  textured.materialTextures[0].refs[gpu::kTextureAnisotropy].scale = 0.6f;
+  const double strength = 0.6 * texel[2] / 255.0, alpha = 0.45 * 0.45;
+  Scene host = sceneOf(texturedQuad(), float(0.3 + std::atan2(2.0 * texel[1] / 255.0 - 1.0, 2.0 * texel[0] / 255.0 - 1.0)));
+  setParam(host.materials[0].record, "specular_roughness_anisotropy",
+           glm::vec3(float(1.0 - alpha / (alpha + (1.0 - alpha) * strength * strength))), "test");
+  const Image t = render(textured);
+  const Image h = render(host);
+  for (std::size_t i = 0; i < t.rgba.size(); ++i) ASSERT_NEAR(t.rgba[i], h.rgba[i], 1e-4f * h.rgba[i] + 1e-7f) << i;
 }
 
 // A 2x1 texture, red then green, read by the nearest texel: TEXCOORD_1 constant at u = 0.25 reads red, and a

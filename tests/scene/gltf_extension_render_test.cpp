@@ -6,7 +6,8 @@
 //     mapping table of docs/gltf.md, not by the loader, and f comes from the double-precision reference.
 // The loader's own mapping is tested parameter by parameter in gltf_material_test.cpp; this checks that what it
 // reads reaches the image as the table says. Not here: KHR_materials_anisotropy's non-neutral value (the quad has
-// no UVs, so no tangent of the file's to check it along; its mapping is tested there) and KHR_materials_volume's
+// no UVs, so no tangent of the file's to check it along; its mapping is tested there, its direction in
+// texture_render_test.cpp) and KHR_materials_volume's
 // (attenuation along a path inside, the path integrator's Beer-Lambert test).
 #include <gtest/gtest.h>
 

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <tuple>
 
 #include "gltf_test_support.h"
@@ -533,7 +534,27 @@ TEST(GltfMaterial, TheOpenPbrAlignedDraftsMapOntoTheirOwnParameters) {
   const gpu::MaterialRecord& b = brushed.materials[0].record;
   EXPECT_EQ(b.model, modelId("openpbr"));
   EXPECT_NEAR(getParam(b, "specular_roughness_anisotropy").x, 1.0f - 0.25f / (0.25f + 0.75f * 0.36f), 1e-6f);
-  EXPECT_EQ(warnings.count("anisotropyRotation"), 1) << "the rotation is not yet applied, and says so";
+  EXPECT_EQ(warnings.count("anisotropyRotation"), 0) << "read, not ignored";
+  ASSERT_GE(b.textures, 0) << "a rotation alone gives the material its texture record, which holds it";
+  EXPECT_FLOAT_EQ(brushed.materialTextures[std::size_t(b.textures)].anisotropyRotation, 0.3f);
+  EXPECT_EQ(brushed.materialTextures[std::size_t(b.textures)].layerModel, b.model);
+  EXPECT_TRUE(hasLayerTextures(brushed, b));
+  // A rotation of more than a turn is the same direction.
+  const Scene turns = loadMaterial({{"pbrMetallicRoughness", {{"metallicFactor", 1.0}}},
+                                    {"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.6},
+                                                                                  {"anisotropyRotation", 0.3 + 8.0 * std::numbers::pi}}}}}});
+  EXPECT_NEAR(turns.materialTextures[std::size_t(turns.materials[0].record.textures)].anisotropyRotation, 0.3f, 1e-5f);
+  // The texture: its slot names the anisotropy's parameter and holds the factor's strength (hit_common.glsl).
+  GltfBuilder texturedBuilder = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+  texturedBuilder.doc()["materials"][0]["extensions"] = {
+      {"KHR_materials_anisotropy", {{"anisotropyStrength", 0.6}, {"anisotropyTexture", {{"index", 0}}}}}};
+  const Scene anisotropyTextured = texturedBuilder.load();
+  const gpu::MaterialRecord& at = anisotropyTextured.materials[0].record;
+  ASSERT_GE(at.textures, 0);
+  const gpu::TextureRef& direction = anisotropyTextured.materialTextures[std::size_t(at.textures)].refs[gpu::kTextureAnisotropy];
+  EXPECT_GE(direction.texture, 0);
+  EXPECT_EQ(direction.param, findParam(modelInfo(at.model), "specular_roughness_anisotropy")->slot);
+  EXPECT_FLOAT_EQ(direction.scale, 0.6f);
   for (const json& bad : {json{{"KHR_materials_coat", {{"coatFactor", 2.0}}}},
                           json{{"KHR_materials_fuzz", {{"fuzzColorFactor", {0.5, -0.1, 0.5}}}}},
                           json{{"KHR_materials_diffuse_roughness", {{"diffuseRoughnessFactor", "rough"}}}}}) {
