@@ -390,6 +390,23 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
       setParam(record, "transmission_color", input.baseColor, through);
     }
   }
+  // KHR_materials_diffuse_transmission: the diffuse lobe becomes mix(diffuse BRDF of the base colour, diffuse BTDF
+  // of diffuseTransmissionColor, factor), which is openpbr's thin-walled subsurface that passes all its light
+  // (subsurface_scatter_anisotropy 1) mixed in by subsurface_weight: exact, below the same specular layer. glTF's
+  // surfaces without a volume are thin; with one, the text's translucent volume needs the random walk raylab does not
+  // have (one warning; the volume is kept).
+  if (input.diffuseTransmission > 0.0f && input.transmission < 1.0f) {
+    const std::string diffuse = where + " (KHR_materials_diffuse_transmission)";
+    if (input.volumeThickness > 0.0f && std::isfinite(input.attenuationDistance)) {
+      warn(diffuse + ": with KHR_materials_volume it is not applied (raylab's diffuse transmission is a thin "
+                     "wall's; the volume is kept)");
+    } else {
+      setParam(record, "geometry_thin_walled", glm::vec3(1.0f), diffuse);
+      setParam(record, "subsurface_weight", glm::vec3(input.diffuseTransmission), diffuse);
+      setParam(record, "subsurface_color", input.diffuseTransmissionColor, diffuse);
+      setParam(record, "subsurface_scatter_anisotropy", glm::vec3(1.0f), diffuse);
+    }
+  }
   if (input.hasFuzz && input.fuzz > 0.0f) {
     const std::string fuzz = where + " (KHR_materials_fuzz)";
     setParam(record, "fuzz_weight", glm::vec3(input.fuzz), fuzz);
@@ -407,7 +424,8 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
 
 // The layered extensions' textures (each text's channels: kernel/hit_common.glsl), each scaling the openpbr
 // parameter its factor sets. The drafts' channels are their texts' (KhronosGroup/glTF, extensions/2.0/Khronos): coat
-// R weight, G roughness, sRGB colour; fuzz R weight, sRGB colour, A roughness; diffuse roughness R.
+// R weight, G roughness, sRGB colour; fuzz R weight, sRGB colour, A roughness; diffuse roughness R. Diffuse
+// transmission's (ratified): A the factor, sRGB RGB the colour.
 struct LayerTexture {
   const char* extension;
   const char* key;
@@ -433,6 +451,10 @@ constexpr LayerTexture kLayerTextures[] = {
     {"KHR_materials_fuzz", "fuzzRoughnessTexture", "fuzz_roughness", "fuzz_weight", gpu::kTextureSheenRoughness, nullptr},
     {"KHR_materials_diffuse_roughness", "diffuseRoughnessTexture", "base_diffuse_roughness", "base_diffuse_roughness",
      gpu::kTextureDiffuseRoughness, nullptr},
+    {"KHR_materials_diffuse_transmission", "diffuseTransmissionTexture", "subsurface_weight", "subsurface_weight",
+     gpu::kTextureDiffuseTransmission, nullptr},
+    {"KHR_materials_diffuse_transmission", "diffuseTransmissionColorTexture", "subsurface_color", "subsurface_weight",
+     gpu::kTextureDiffuseTransmissionColor, nullptr},
     {"KHR_materials_iridescence", "iridescenceTexture", "thin_film_weight", "thin_film_weight", gpu::kTextureIridescence,
      nullptr},
     {"KHR_materials_iridescence", "iridescenceThicknessTexture", "thin_film_thickness", "thin_film_weight",
@@ -455,7 +477,7 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
   const bool sheen = input.sheenColor != glm::vec3(0.0f);
   const bool layered = input.clearcoat > 0.0f || input.iridescence > 0.0f || sheen || (input.hasCoat && input.coat > 0.0f) ||
                        (input.hasFuzz && input.fuzz > 0.0f) || input.diffuseRoughness > 0.0f ||
-                       input.anisotropy > 0.0f;
+                       input.anisotropy > 0.0f || (input.diffuseTransmission > 0.0f && input.transmission < 1.0f);
   const bool volume = input.volumeThickness > 0.0f && std::isfinite(input.attenuationDistance);
   if (input.transmission >= 1.0f && !volume && !layered) {
     // Glass: smooth up to a roughness of 0.001, rough (ggx_dielectric, alpha = roughness^2 as glTF's own BRDF)
@@ -671,6 +693,11 @@ void convertMaterials(Document& document, Scene& scene) {
     if (const json* diffuse = findPath(materialJson, {"extensions", "KHR_materials_diffuse_roughness"})) {
       const std::string name = "KHR_materials_diffuse_roughness";
       readFactor(*diffuse, "diffuseRoughnessFactor", name, 0.0, 1.0, input.diffuseRoughness);
+    }
+    if (const json* diffuse = findPath(materialJson, {"extensions", "KHR_materials_diffuse_transmission"})) {
+      const std::string name = "KHR_materials_diffuse_transmission";
+      readFactor(*diffuse, "diffuseTransmissionFactor", name, 0.0, 1.0, input.diffuseTransmission);
+      readColour(*diffuse, "diffuseTransmissionColorFactor", name, input.diffuseTransmissionColor);
     }
     if (const json* sheen = findPath(materialJson, {"extensions", "KHR_materials_sheen"})) {
       const std::string name = "KHR_materials_sheen";

@@ -39,6 +39,8 @@ struct MetallicRoughness {
   bool hasCoat = false;
   float coat = 0.0f, coatRoughness = 0.0f, coatIor = 1.5f, coatDarkening = 1.0f, coatAnisotropy = 0.0f;
   float anisotropyRotation = 0.0f;  // KHR_materials_anisotropy, radians from the tangent towards the bitangent
+  float diffuseTransmission = 0.0f;  // KHR_materials_diffuse_transmission
+  glm::vec3 diffuseTransmissionColor{1.0f};
   glm::vec3 coatColor{1.0f};
   bool hasFuzz = false;
   float fuzz = 0.0f, fuzzRoughness = 0.5f;

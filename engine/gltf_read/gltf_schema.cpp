@@ -86,6 +86,9 @@ const Shape kFuzz{{number("fuzzFactor"), object("fuzzTexture", kTextureInfo), nu
                    object("fuzzColorTexture", kTextureInfo), number("fuzzRoughnessFactor"),
                    object("fuzzRoughnessTexture", kTextureInfo)}};
 const Shape kDiffuseRoughness{{number("diffuseRoughnessFactor"), object("diffuseRoughnessTexture", kTextureInfo)}};
+const Shape kDiffuseTransmission{{number("diffuseTransmissionFactor"), object("diffuseTransmissionTexture", kTextureInfo),
+                                  numbers("diffuseTransmissionColorFactor", 3),
+                                  object("diffuseTransmissionColorTexture", kTextureInfo)}};
 const Shape kAnisotropy{{number("anisotropyStrength"), number("anisotropyRotation"),
                          object("anisotropyTexture", kTextureInfo)}};
 const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
@@ -99,7 +102,8 @@ const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                        object("KHR_materials_volume", kVolume), object("KHR_materials_coat", kCoat),
                        object("KHR_materials_fuzz", kFuzz),
                        object("KHR_materials_diffuse_roughness", kDiffuseRoughness),
-                       object("KHR_materials_anisotropy", kAnisotropy)}};
+                       object("KHR_materials_anisotropy", kAnisotropy),
+                       object("KHR_materials_diffuse_transmission", kDiffuseTransmission)}};
 const Shape kPrimitive{{required(indexMap("attributes")), index("indices"), index("material"), index("mode"),
                         indexMaps("targets")}};
 const Shape kMesh{{string("name"), required(objects("primitives", kPrimitive)), numbers("weights")}};

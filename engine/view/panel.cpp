@@ -25,7 +25,8 @@ void drawMaterialTextures(const Scene& scene, const gpu::MaterialRecord& record)
   static const char* const kUses[gpu::kTextureUses] = {
       "base colour", "metallic-roughness", "normal", "emissive", "specular", "specular colour", "coat weight",
       "coat roughness", "fuzz colour", "fuzz roughness", "thin-film weight", "thin-film thickness", "transmission",
-      "coat colour", "fuzz weight", "diffuse roughness", "anisotropy"};
+      "coat colour", "fuzz weight", "diffuse roughness", "diffuse transmission", "diffuse transmission colour",
+      "anisotropy"};
   const gpu::MaterialTextures& uses = scene.materialTextures[std::size_t(record.textures)];
   for (std::uint32_t use = 0; use < gpu::kTextureUses; ++use) {
     const gpu::TextureRef& ref = uses.refs[use];

@@ -41,6 +41,7 @@
 // | transmission_depth            | [0, 1000] | 0      |                   | that depth in scene units; 0: no volume, tinted at the surface |
 // | subsurface_weight             | [0, 1]   | 0       |                   | the dielectric's share that scatters below the surface |
 // | subsurface_color              | [0, 1]   | 0.8     | rgb               | the albedo of that scattering             |
+// | subsurface_scatter_anisotropy | [-1, 1]  | 0       |                   | on a thin wall, the share through: (1 + g) / 2 |
 // | geometry_thin_walled          | [0, 1]   | 0       |                   | 1: a thin shell (leaf, paper, bubble); 0: a solid |
 // | emission_luminance            | [0, 1000000] | 0   | emission_luminance | emitted luminance in nits (raylab's radiance unit) |
 // | emission_color                | [0, 1]   | 1       | rgb emission_color | the emission's colour                    |
@@ -409,20 +410,24 @@ const float kOpenpbrInterfaceShare = 0.75;
 // A thin-walled surface (geometry_thin_walled, compiled only where a scene has one) is a shell with the same
 // material on both faces and no inside: what the translucent base passes goes straight through, the base's GGX
 // lobe mirrored through the surface with (1 - F), and the subsurface becomes a thin translucent sheet that
-// scatters half of its light back and half through, both diffusely, tinted by subsurface_color.
+// scatters the share (1 + g) / 2 of its light through and the rest back (g = subsurface_scatter_anisotropy), both
+// diffusely, tinted by subsurface_color.
 bool openpbrThinWalled(float thinWalled) { return featureEnabled(kOpenpbrFeatureThinWalled) && thinWalled >= 0.5; }
+float openpbrThinThrough(float subsurfaceAnisotropy) { return 0.5 * (1.0 + clamp(subsurfaceAnisotropy, -1.0, 1.0)); }
 
 // The glossy-diffuse base's albedo: base_weight base_color, mixed with the subsurface in its short-radius limit (a
-// diffuse lobe of subsurface_color, half of it on a thin wall), of the share 1 - T that does not transmit.
+// diffuse lobe of subsurface_color, less the share `through` a thin wall passes), of the share 1 - T that does not
+// transmit.
 vec3 openpbrDiffuseAlbedo(float baseWeight, vec3 baseColor, float subsurfaceWeight, vec3 subsurfaceColor, float T,
-                          bool thin) {
-  return (1.0 - T) * mix(baseWeight * baseColor, (thin ? 0.5 : 1.0) * subsurfaceColor, subsurfaceWeight);
+                          float through) {
+  return (1.0 - T) * mix(baseWeight * baseColor, (1.0 - through) * subsurfaceColor, subsurfaceWeight);
 }
 
 // The probability that the reflection's mixture sends its sample through a thin wall (mirrored): the share of the
-// diffuse light that the thin subsurface passes.
-float openpbrThinMirrorShare(float metalness, float subsurfaceWeight, float T, bool thin) {
-  return thin ? 0.5 * subsurfaceWeight * (1.0 - T) * (1.0 - metalness) : 0.0;
+// diffuse light that the thin subsurface passes, at most 0.9 so that the reflection keeps a share of the samples (its
+// specular lobes are sampled only there when nothing transmits).
+float openpbrThinMirrorShare(float metalness, float subsurfaceWeight, float T, float through) {
+  return min(through * subsurfaceWeight * (1.0 - T) * (1.0 - metalness), 0.9);
 }
 
 // What the coat and the fuzz pass of light crossing them along w (outside): the coat's 1 - E_coat and its absorption
@@ -461,7 +466,8 @@ vec3 openpbrMediumAbsorption(float transmissionWeight, float metalness, vec3 tra
 vec3 openpbrThinTransmission(float metalness, float specularWeight, float specularRoughness, float specularAnisotropy,
                              float specularIor, float coatWeight, vec3 coatColor, float coatRoughness,
                              float coatAnisotropy, float coatIor, float fuzzWeight, float fuzzRoughness, float T,
-                             vec3 transmissionColor, float subsurfaceWeight, vec3 subsurfaceColor, vec3 wi, vec3 wo) {
+                             vec3 transmissionColor, float subsurfaceWeight, vec3 subsurfaceColor, float through,
+                             vec3 wi, vec3 wo) {
   const float C = openpbrCoat(coatWeight);
   wo = liftOffHorizon(wo);
   const vec3 mirrored = liftOffHorizon(vec3(wi.xy, -wi.z));
@@ -471,7 +477,7 @@ vec3 openpbrThinTransmission(float metalness, float specularWeight, float specul
   const vec3 straight = T * transmissionColor * (1.0 - openpbrFresnel(openpbrCosineToHalfVector(wo, h), eps)) *
                         openpbrMicrofacet(mirrored, wo, h, alpha);
   const float passed = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
-  const vec3 diffuse = (1.0 - T) * (1.0 - metalness) * subsurfaceWeight * 0.5 * subsurfaceColor * passed * kInvPi;
+  const vec3 diffuse = (1.0 - T) * (1.0 - metalness) * subsurfaceWeight * through * subsurfaceColor * passed * kInvPi;
   return (straight + diffuse) * openpbrLayersPassed(wo, coatWeight, coatColor, coatRoughness, coatAnisotropy, coatIor,
                                                     fuzzWeight, fuzzRoughness);
 }
@@ -497,8 +503,8 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
                  float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
                  vec3 transmissionColor, float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor,
-                 float thinWalled, float emissionLuminance, vec3 emissionColor, float geometryOpacity, vec3 wi,
-                 vec3 wo) {
+                 float subsurfaceAnisotropy, float thinWalled, float emissionLuminance, vec3 emissionColor,
+                 float geometryOpacity, vec3 wi, vec3 wo) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
   const bool thin = openpbrThinWalled(thinWalled);
   if (T > 0.0 && !thin && !(wi.z > 0.0 && wo.z > 0.0)) {
@@ -520,14 +526,16 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
   if (thin && wi.z < 0.0 && wo.z > 0.0) {
     return openpbrThinTransmission(metalness, specularWeight, specularRoughness, specularAnisotropy, specularIor,
                                    coatWeight, coatColor, coatRoughness, coatAnisotropy, coatIor, fuzzWeight,
-                                   fuzzRoughness, T, transmissionColor, subsurfaceWeight, subsurfaceColor, wi, wo);
+                                   fuzzRoughness, T, transmissionColor, subsurfaceWeight, subsurfaceColor,
+                                   openpbrThinThrough(subsurfaceAnisotropy), wi, wo);
   }
   return openpbrReflection(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                            specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor, coatRoughness,
                            coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
                            fuzzWeight, fuzzColor, fuzzRoughness,
-                           openpbrDiffuseAlbedo(baseWeight, baseColor, subsurfaceWeight, subsurfaceColor, T, thin), wi,
-                           wo);
+                           openpbrDiffuseAlbedo(baseWeight, baseColor, subsurfaceWeight, subsurfaceColor, T,
+                                                thin ? openpbrThinThrough(subsurfaceAnisotropy) : 0.0),
+                           wi, wo);
 }
 
 float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffuseRoughness, float specularWeight,
@@ -536,8 +544,8 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
                  float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
                  vec3 transmissionColor, float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor,
-                 float thinWalled, float emissionLuminance, vec3 emissionColor, float geometryOpacity, vec3 wi,
-                 vec3 wo) {
+                 float subsurfaceAnisotropy, float thinWalled, float emissionLuminance, vec3 emissionColor,
+                 float geometryOpacity, vec3 wi, vec3 wo) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
   const bool thin = openpbrThinWalled(thinWalled);
   float interfaceDensity = 0.0, share = 0.0;
@@ -559,7 +567,8 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
   }
   if (!(share < 1.0)) return interfaceDensity;
   // The reflection's mixture, a share q of it mirrored through a thin wall.
-  const float q = openpbrThinMirrorShare(metalness, subsurfaceWeight, T, thin);
+  const float q =
+      openpbrThinMirrorShare(metalness, subsurfaceWeight, T, thin ? openpbrThinThrough(subsurfaceAnisotropy) : 0.0);
   const bool through = wi.z < 0.0;
   if (through && !(q > 0.0)) return share * interfaceDensity;
   const float mixture = openpbrReflectionPdf(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight,
@@ -576,7 +585,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                          float coatAnisotropy, float coatIor, float coatDarkening, float thinFilmWeight,
                          float thinFilmThickness, float thinFilmIor, float fuzzWeight, vec3 fuzzColor,
                          float fuzzRoughness, float transmissionWeight, vec3 transmissionColor,
-                         float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor, float thinWalled,
+                         float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor,
+                         float subsurfaceAnisotropy, float thinWalled,
                          float emissionLuminance, vec3 emissionColor, float geometryOpacity,
                          vec3 wo, vec3 u) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
@@ -600,7 +610,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
       wi = ggxDielectricSample(alpha.x, alpha.y, openpbrTransmissionEta(specularIor), vec3(1.0), w, vec3(v, u.yz)).wi;
     }
   } else {
-    const float q = openpbrThinMirrorShare(metalness, subsurfaceWeight, T, thin);
+    const float q =
+      openpbrThinMirrorShare(metalness, subsurfaceWeight, T, thin ? openpbrThinThrough(subsurfaceAnisotropy) : 0.0);
     float v = min((u.x - share) / (1.0 - share), 0.99999994);
     const bool mirror = v < q;
     v = mirror ? v / q : (v - q) / (1.0 - q);
@@ -616,8 +627,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                                specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor, coatRoughness,
                                coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
                                fuzzWeight, fuzzColor, fuzzRoughness, transmissionWeight, transmissionColor,
-                               transmissionDepth, subsurfaceWeight, subsurfaceColor, thinWalled, emissionLuminance,
-                               emissionColor, geometryOpacity, wi, wo);
+                               transmissionDepth, subsurfaceWeight, subsurfaceColor, subsurfaceAnisotropy, thinWalled,
+                               emissionLuminance, emissionColor, geometryOpacity, wi, wo);
   if (!(pdf > 0.0)) return noSample();
   return BsdfSample(wi,
                     openpbrEval(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
@@ -625,7 +636,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                                 coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight,
                                 thinFilmThickness, thinFilmIor, fuzzWeight, fuzzColor, fuzzRoughness,
                                 transmissionWeight, transmissionColor, transmissionDepth, subsurfaceWeight,
-                                subsurfaceColor, thinWalled, emissionLuminance, emissionColor, geometryOpacity, wi, wo),
+                                subsurfaceColor, subsurfaceAnisotropy, thinWalled, emissionLuminance, emissionColor,
+                                geometryOpacity, wi, wo),
                     pdf);
 }
 

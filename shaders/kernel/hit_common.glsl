@@ -107,7 +107,8 @@ void applyTextures(inout MaterialRecord material, inout Surface s) {
     [[dont_unroll]] for (uint use = kFirstLayerTexture; use < kLayerTexturesEnd; ++use) {
       const TextureRef layer = uses.refs[use];
       if (layer.texture < 0) continue;
-      const bool colour = use == kTextureSheenColor || use == kTextureCoatColor;
+      const bool colour =
+          use == kTextureSheenColor || use == kTextureCoatColor || use == kTextureDiffuseTransmissionColor;
       const vec4 texel = sampleTextureRef(layer, s.uv, s.uv1, colour);
       if (colour) {
         material.params[layer.param] *= texel.r;
@@ -115,10 +116,11 @@ void applyTextures(inout MaterialRecord material, inout Surface s) {
         material.params[layer.param + 2u] *= texel.b;
         continue;
       }
-      // Each extension's channel: R for weights, G for roughness and thickness, A for the sheen's roughness.
-      const float t = use == kTextureCoatRoughness || use == kTextureIridescenceThickness ? texel.g
-                      : use == kTextureSheenRoughness                                    ? texel.a
-                                                                                         : texel.r;
+      // Each extension's channel: R for weights, G for roughness and thickness, A for the sheen's roughness and
+      // the diffuse transmission.
+      const float t = use == kTextureCoatRoughness || use == kTextureIridescenceThickness      ? texel.g
+                      : use == kTextureSheenRoughness || use == kTextureDiffuseTransmission ? texel.a
+                                                                                              : texel.r;
       material.params[layer.param] *= layer.scale + (1.0 - layer.scale) * t;
     }
     applyAnisotropyDirection(material, s, uses);

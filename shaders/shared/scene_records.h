@@ -125,13 +125,15 @@ RL_CONST uint kTextureTransmission = 12;        // linear; R the transmission we
 RL_CONST uint kTextureCoatColor = 13;           // sRGB; RGB the coat's colour (coatColorTexture)
 RL_CONST uint kTextureFuzz = 14;                // linear; R the fuzz's weight (fuzzTexture)
 RL_CONST uint kTextureDiffuseRoughness = 15;    // linear; R the diffuse roughness (diffuseRoughnessTexture)
+RL_CONST uint kTextureDiffuseTransmission = 16;       // linear; A the subsurface weight (diffuseTransmissionTexture)
+RL_CONST uint kTextureDiffuseTransmissionColor = 17;  // sRGB; RGB its colour (diffuseTransmissionColorTexture)
 RL_CONST uint kFirstLayerTexture = 6;
-RL_CONST uint kLayerTexturesEnd = 16;  // the layer textures are the uses kFirstLayerTexture .. kLayerTexturesEnd - 1
+RL_CONST uint kLayerTexturesEnd = 18;  // the layer textures are the uses kFirstLayerTexture .. kLayerTexturesEnd - 1
 // KHR_materials_anisotropy's texture: linear; RG the direction in the tangent plane (2 c - 1, from the tangent
 // towards the bitangent), B scales the strength, which `scale` holds; `param` is the anisotropy's slot. The strength
 // reaches it through glTF's map onto openpbr's ratio (gltf_materials.cpp, anisotropyOf), the roughness role's value.
-RL_CONST uint kTextureAnisotropy = 16;
-RL_CONST uint kTextureUses = 17;
+RL_CONST uint kTextureAnisotropy = 18;
+RL_CONST uint kTextureUses = 19;
 
 // MaterialTextures.alphaMode (glTF alphaMode). Opaque surfaces are opaque geometry: traversal never asks.
 RL_CONST uint kAlphaOpaque = 0;
@@ -149,7 +151,7 @@ struct MaterialTextures {
   // anisotropyRotation), with the layer textures (layerModel's only).
   float anisotropyRotation;
 };
-RL_CHECK_SIZE(MaterialTextures, 700);
+RL_CHECK_SIZE(MaterialTextures, 780);
 
 // One light for next event estimation, of any kind (generated/light_kinds.h, from shaders/lights/lights.cmake):
 // punctual lights, emitting triangles and spheres in world space, the environment. What p0, p1, p2 and radiance

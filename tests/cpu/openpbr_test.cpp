@@ -228,9 +228,9 @@ TEST(OpenPbr, TheTranslucentBaseConservesEnergy) {
 
 // Subsurface (its short-radius limit, a diffuse lobe of subsurface_color) and thin walls: a white subsurface keeps
 // the furnace; a smooth white thin translucent wall and a white thin subsurface sheet reflect and pass all the light
-// (the sheet half back and half through, the straight-through lobe with what the reflection leaves; rough, the
-// wall loses what single-scattering GGX loses, as the solid translucent base does). Seen from the other
-// face they are the same (the device's sampling test draws them from both).
+// (the sheet back and through as its scatter anisotropy splits it, the straight-through lobe with what the
+// reflection leaves; rough, the wall loses what single-scattering GGX loses, as the solid translucent base does).
+// Seen from the other face they are the same (the device's sampling test draws them from both).
 TEST(OpenPbr, SubsurfaceAndThinWallsConserveEnergy) {
   double worst = 0.0;
   const std::vector<std::pair<std::string, std::vector<ParamValue>>> cases = {
@@ -239,6 +239,11 @@ TEST(OpenPbr, SubsurfaceAndThinWallsConserveEnergy) {
       {"thin subsurface sheet", {{"geometry_thin_walled", 1.0}, {"subsurface_weight", 1.0}, {"subsurface_color", 1.0}}},
       {"thin half and half", {{"geometry_thin_walled", 1.0}, {"transmission_weight", 0.5}, {"subsurface_weight", 1.0},
                               {"subsurface_color", 1.0}, {"specular_roughness", 0.0}}},
+      // The sheet's split (1 + g) / 2 through: all through (glTF's diffuse transmission), and mostly back.
+      {"thin sheet all through", {{"geometry_thin_walled", 1.0}, {"subsurface_weight", 1.0}, {"subsurface_color", 1.0},
+                                  {"subsurface_scatter_anisotropy", 1.0}}},
+      {"thin sheet mostly back", {{"geometry_thin_walled", 1.0}, {"subsurface_weight", 1.0}, {"subsurface_color", 1.0},
+                                  {"subsurface_scatter_anisotropy", -0.6}}},
   };
   for (const auto& [label, params] : cases) {
     const Material m = makeMaterial("openpbr", params);

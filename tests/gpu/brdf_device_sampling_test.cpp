@@ -86,6 +86,10 @@ std::vector<SamplingCase> samplingCases() {
       // A thin wall, half translucent and half a subsurface sheet: through it straight and diffusely, from both faces.
       {"openpbr", {{"base_color", 0.5f}, {"specular_roughness", 0.3f}, {"transmission_weight", 0.5f},
                    {"subsurface_weight", 1.0f}, {"subsurface_color", 0.8f}, {"geometry_thin_walled", 1.0f}}},
+      // A sheet that passes everything (glTF's diffuse transmission): the mirrored share at its cap of 0.9, the
+      // reflection's specular lobe still sampled.
+      {"openpbr", {{"base_color", 0.5f}, {"specular_roughness", 0.3f}, {"subsurface_weight", 1.0f},
+                   {"subsurface_color", 0.8f}, {"geometry_thin_walled", 1.0f}, {"subsurface_scatter_anisotropy", 1.0f}}},
   };
   std::vector<SamplingCase> cases;
   std::set<std::string, std::less<>> covered;

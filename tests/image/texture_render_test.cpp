@@ -219,6 +219,8 @@ TEST_F(TextureRenderTest, LayerTexturesScaleTheLayersParameters) {
   setParam(record, "fuzz_color", glm::vec3(1.0f, 0.8f, 0.6f), "test");
   setParam(record, "coat_color", glm::vec3(0.9f, 0.7f, 1.0f), "test");
   setParam(record, "base_diffuse_roughness", glm::vec3(0.5f), "test");
+  setParam(record, "subsurface_weight", glm::vec3(0.7f), "test");
+  setParam(record, "subsurface_color", glm::vec3(0.6f, 0.8f, 0.4f), "test");
   const std::uint8_t texel[4] = {200, 100, 50, 90};
   constexpr float kThicknessFloor = 0.25f;
   Scene textured = quadScene(record, gpu::kTextureCoat, solidTexture({texel[0], texel[1], texel[2], texel[3]}),
@@ -239,6 +241,8 @@ TEST_F(TextureRenderTest, LayerTexturesScaleTheLayersParameters) {
   layer(gpu::kTextureCoatColor, "coat_color");
   layer(gpu::kTextureFuzz, "fuzz_weight");
   layer(gpu::kTextureDiffuseRoughness, "base_diffuse_roughness");
+  layer(gpu::kTextureDiffuseTransmission, "subsurface_weight");
+  layer(gpu::kTextureDiffuseTransmissionColor, "subsurface_color");
   uses.layerModel = record.model;
   ASSERT_TRUE(hasLayerTextures(textured, textured.materials[0].record));
   ASSERT_NE(featuresOf(textured).features & gpu::kFeatureLayerTextures, 0u);
@@ -254,9 +258,11 @@ TEST_F(TextureRenderTest, LayerTexturesScaleTheLayersParameters) {
   setParam(scaled, "transmission_weight", glm::vec3(0.6f * r), "test");
   setParam(scaled, "fuzz_weight", glm::vec3(0.8f * r), "test");
   setParam(scaled, "base_diffuse_roughness", glm::vec3(0.5f * r), "test");
+  setParam(scaled, "subsurface_weight", glm::vec3(0.7f * a), "test");
   const glm::vec3 tint(srgbToLinear(texel[0] / 255.0), srgbToLinear(texel[1] / 255.0), srgbToLinear(texel[2] / 255.0));
   setParam(scaled, "fuzz_color", glm::vec3(1.0f, 0.8f, 0.6f) * tint, "test");
   setParam(scaled, "coat_color", glm::vec3(0.9f, 0.7f, 1.0f) * tint, "test");
+  setParam(scaled, "subsurface_color", glm::vec3(0.6f, 0.8f, 0.4f) * tint, "test");
   expectTexturesActAsHostScaling(device(), textured, plain);
   // For another model (a material switched away in the viewer) they read nothing.
   Scene switched = textured;

@@ -142,6 +142,12 @@ std::vector<Case> nonNeutralCases() {
               {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}},
               {{"transmission_weight", glm::vec3(0.5f)}, {"transmission_color", {0.7f, 0.9f, 0.8f}},
                {"transmission_depth", glm::vec3(0.0f)}}),
+      // Diffuse transmission, lit from below too: a thin wall whose subsurface sheet passes all its light.
+      layered("KHR_materials_diffuse_transmission", {0.3f, 0.6f, 0.3f}, 0.0f, 0.5f,
+              {{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.6},
+                                                       {"diffuseTransmissionColorFactor", {0.9, 0.5, 0.2}}}}},
+              {{"geometry_thin_walled", glm::vec3(1.0f)}, {"subsurface_weight", glm::vec3(0.6f)},
+               {"subsurface_color", {0.9f, 0.5f, 0.2f}}, {"subsurface_scatter_anisotropy", glm::vec3(1.0f)}}),
   };
 }
 
@@ -164,7 +170,8 @@ std::vector<json> neutralRow() {
           with("KHR_materials_anisotropy", {{"anisotropyStrength", 0.0}}),
           with("KHR_materials_diffuse_roughness", {{"diffuseRoughnessFactor", 0.0}}),
           with("KHR_materials_transmission", {{"transmissionFactor", 0.0}}),
-          with("KHR_materials_volume", {{"thicknessFactor", 0.0}})};
+          with("KHR_materials_volume", {{"thicknessFactor", 0.0}}),
+          with("KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.0}})};
 }
 
 std::vector<json> materialsOf(const std::vector<Case>& cases) {

@@ -563,6 +563,45 @@ TEST(GltfMaterial, TheOpenPbrAlignedDraftsMapOntoTheirOwnParameters) {
   }
 }
 
+// KHR_materials_diffuse_transmission: the diffuse lobe's mix of the base colour's BRDF and the transmission colour's
+// BTDF is openpbr's thin-walled subsurface that passes all its light; with a volume it is not applied (one warning).
+TEST(GltfMaterial, KhrMaterialsDiffuseTransmissionIsAThinSubsurfaceSheetThatPassesItsLight) {
+  WarningCapture warnings;
+  const json extension = {{"diffuseTransmissionFactor", 0.4}, {"diffuseTransmissionColorFactor", {1.0, 0.5, 0.2}}};
+  const Scene scene = loadMaterial({{"extensions", {{"KHR_materials_diffuse_transmission", extension}}}});
+  const gpu::MaterialRecord& r = scene.materials[0].record;
+  EXPECT_EQ(r.model, modelId("openpbr"));
+  EXPECT_FLOAT_EQ(getParam(r, "geometry_thin_walled").x, 1.0f);
+  EXPECT_FLOAT_EQ(getParam(r, "subsurface_weight").x, 0.4f);
+  expectNear(getParam(r, "subsurface_color"), {1.0f, 0.5f, 0.2f}, "transmission colour");
+  EXPECT_FLOAT_EQ(getParam(r, "subsurface_scatter_anisotropy").x, 1.0f);
+  EXPECT_EQ(warnings.count("KHR_materials_diffuse_transmission"), 0) << "read, not ignored";
+  const Scene withVolume = loadMaterial(
+      {{"extensions", {{"KHR_materials_diffuse_transmission", extension},
+                       {"KHR_materials_transmission", {{"transmissionFactor", 0.5}}},
+                       {"KHR_materials_volume", {{"thicknessFactor", 1.0}, {"attenuationDistance", 2.0}}}}}});
+  EXPECT_FLOAT_EQ(getParam(withVolume.materials[0].record, "geometry_thin_walled").x, 0.0f);
+  EXPECT_EQ(warnings.count("with KHR_materials_volume it is not applied"), 1);
+  const Scene none = loadMaterial({{"extensions", {{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.0}}}}}});
+  EXPECT_EQ(none.materials[0].record.model, modelId("gltf_pbr"));
+  // Its textures: A scales subsurface_weight, the sRGB RGB subsurface_color.
+  GltfBuilder builder = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+  builder.doc()["materials"][0]["extensions"] = {
+      {"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.4},
+                                              {"diffuseTransmissionTexture", {{"index", 0}}},
+                                              {"diffuseTransmissionColorTexture", {{"index", 0}}}}}};
+  const Scene textured = builder.load();
+  const gpu::MaterialRecord& t = textured.materials[0].record;
+  ASSERT_GE(t.textures, 0);
+  const gpu::MaterialTextures& uses = textured.materialTextures[std::size_t(t.textures)];
+  EXPECT_EQ(uses.refs[gpu::kTextureDiffuseTransmission].param, findParam(modelInfo(t.model), "subsurface_weight")->slot);
+  EXPECT_EQ(uses.refs[gpu::kTextureDiffuseTransmissionColor].param, findParam(modelInfo(t.model), "subsurface_color")->slot);
+  for (const json& bad : {json{{"diffuseTransmissionFactor", 1.5}}, json{{"diffuseTransmissionColorFactor", {0.5, 0.5}}}}) {
+    const std::string error = materialError({{"name", "bad leaf"}, {"extensions", {{"KHR_materials_diffuse_transmission", bad}}}});
+    EXPECT_NE(error.find("KHR_materials_diffuse_transmission"), std::string::npos) << error;
+  }
+}
+
 // The drafts' textures in their texts' channels (coat R weight, G roughness, sRGB colour; fuzz R weight, sRGB colour,
 // A roughness; diffuse roughness R) scale the parameters their factors set, and where a draft replaces a ratified
 // extension (coat over clear coat, fuzz over sheen) the replaced one's textures are reported and not read.

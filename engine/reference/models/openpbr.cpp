@@ -277,14 +277,19 @@ GgxDielectricParams interfaceOf(const OpenpbrParams& p) {
 constexpr double kInterfaceShare = 0.75;  // of the sampler's choices when wo is outside (openpbr.glsl)
 
 // A thin wall (geometry_thin_walled): the same material on both faces, the translucent base's light straight
-// through, the subsurface a sheet that scatters half back and half through (openpbr.glsl).
+// through, the subsurface a sheet that scatters the share (1 + g) / 2 through and the rest back, g its
+// subsurface_scatter_anisotropy (openpbr.glsl).
 bool thinWalled(const OpenpbrParams& p) { return p.geometry_thin_walled >= 0.5; }
+double thinThrough(const OpenpbrParams& p) {
+  return thinWalled(p) ? 0.5 * (1.0 + std::clamp(p.subsurface_scatter_anisotropy, -1.0, 1.0)) : 0.0;
+}
 dvec3 diffuseAlbedoOf(const OpenpbrParams& p, double T) {
-  const double sheet = thinWalled(p) ? 0.5 : 1.0, S = p.subsurface_weight;
+  const double sheet = 1.0 - thinThrough(p), S = p.subsurface_weight;
   return (1.0 - T) * ((1.0 - S) * p.base_weight * p.base_color + S * sheet * p.subsurface_color);
 }
+// At most 0.9: the reflection keeps a share of the samples (openpbr.glsl).
 double thinMirrorShare(const OpenpbrParams& p, double T) {
-  return thinWalled(p) ? 0.5 * p.subsurface_weight * (1.0 - T) * (1.0 - p.base_metalness) : 0.0;
+  return std::min(thinThrough(p) * p.subsurface_weight * (1.0 - T) * (1.0 - p.base_metalness), 0.9);
 }
 
 // What the coat and the fuzz pass of light crossing them along the outside direction w.
@@ -311,8 +316,8 @@ dvec3 thinTransmission(const OpenpbrParams& p, double T, const dvec3& wi, const 
   const dvec3 straight = T * p.transmission_color * (1.0 - fresnel(cosineToHalfVector(wo, mirrored + wo), eps)) *
                          microfacet(mirrored, wo, alpha);
   const double passed = dielectricReflectionLoss(wo.z, projectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
-  const dvec3 diffuse = (1.0 - T) * (1.0 - p.base_metalness) * p.subsurface_weight * 0.5 * p.subsurface_color *
-                        passed * kInvPi;
+  const dvec3 diffuse = (1.0 - T) * (1.0 - p.base_metalness) * p.subsurface_weight * thinThrough(p) *
+                        p.subsurface_color * passed * kInvPi;
   return (straight + diffuse) * layersPassed(p, wo);
 }
 double thinInterfacePdf(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
