@@ -194,7 +194,8 @@ def main(argv=None) -> int:
         slices = find_slices(args.slices, materials)
         check_slices(slices)
         raylab = md.import_raylab()
-        known = list(raylab.brdf.fittable_models())
+        # Every model raylab can fit, those fitted only by name (openpbr) included: the study ranks them all.
+        known = list(raylab.brdf.fittable_models(by_name=True))
         models = args.models.split(",") if args.models else known
         unknown = [m for m in models if m not in known]
         if unknown:

@@ -74,6 +74,8 @@ struct ModelInfo {
   std::uint32_t fitStarts;
   // One more start of a fit (`// fit: start NAME=VALUE ...`): the defaults with these values, every channel alike.
   std::vector<std::pair<std::string_view, double>> fitStart;
+  // The parameters a fit frees (`// fit: free NAME ...`), the rest held at their defaults; empty: all it can.
+  std::vector<std::string_view> fitFree;
   std::vector<ModelFeature> features;  // its `feature:` lines
 };
 

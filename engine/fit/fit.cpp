@@ -209,14 +209,14 @@ FitMetric parseFitMetric(const std::string& text, const std::string& where) {
 
 const char* fitMetricName(FitMetric metric) { return metric == FitMetric::kCosine ? "cosine" : "log"; }
 
-std::vector<std::string> fittableModels() {
+std::vector<std::string> fittableModels(bool byName) {
   std::vector<std::string> names;
   for (const ModelInfo& model : allModels()) {
     bool file = false;
     for (const ParamInfo& p : model.params) file |= isFileParam(p);
     // The library's models: a model of the test tree (registered by test builds) is fitted only when named.
     // A model whose registry line says `fit: by name` likewise.
-    if (!isDeltaOnly(model) && !file && !model.glslFile.starts_with("tests/") && model.fitByName.empty()) {
+    if (!isDeltaOnly(model) && !file && !model.glslFile.starts_with("tests/") && (byName || model.fitByName.empty())) {
       names.emplace_back(model.name);
     }
   }

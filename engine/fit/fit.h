@@ -56,7 +56,8 @@ struct FitResult {
 
 // The models fitted by default: every model of the library with a density that is not read from a file (not delta,
 // not measured); a test-tree model (tests/models) is fitted only when named.
-std::vector<std::string> fittableModels();
+// The models a fit tries when it names none; with byName also those fitted only when named (`fit: by name`).
+std::vector<std::string> fittableModels(bool byName = false);
 // "4 LM starts per model, lafortune 16": the starts a fit with these options gives each model, for messages.
 std::string describeStarts(const FitOptions& options);
 

@@ -33,6 +33,9 @@ std::vector<Variable> variablesOf(const ModelInfo& model, bool isotropic) {
     return nullptr;
   };
   for (const ParamInfo& param : model.params) {
+    if (!model.fitFree.empty() && std::find(model.fitFree.begin(), model.fitFree.end(), param.name) == model.fitFree.end()) {
+      continue;  // held at its default: the registry's `fit: free` line leaves it out
+    }
     // Not fitted: a file, a 0/1 switch, a transmittance (the pairs are reflections: it changes nothing), and
     // KHR_materials_specular's strength and colour (gltf_pbr's F0 is its ior's to fit; with them it would have
     // many equal answers).

@@ -350,8 +350,9 @@ void bindBrdf(py::module_& parent) {
       py::arg("starts") = py::none(), py::arg("search") = 256, py::arg("seed") = 1, py::arg("threads") = 0,
       py::arg("isotropic") = py::none(),
       fitDoc.c_str());
-  m.def("fittable_models", &fittableModels,
-        "The models `fit` fits by default: every model of the library with a density that is not read from a file.");
+  m.def("fittable_models", &fittableModels, py::kw_only(), py::arg("by_name") = false,
+        "The models `fit` fits by default: every model of the library with a density that is not read from a file; "
+        "with by_name=True also those it fits only when named (openpbr: its fit costs several of the others').");
   m.def(
       "fit_error",
       [](const py::object& targetObject, const std::string& model, const py::object& params,

@@ -8,7 +8,9 @@
 // feature: thin_walled geometry_thin_walled
 // medium: transmission_weight base_metalness transmission_color transmission_depth geometry_thin_walled
 // albedo sampled when: geometry_thin_walled
-// fit: by name, its layers give one look many ways: which of them a fit frees is not yet designed (issue 38)
+// fit: free base_color base_metalness base_diffuse_roughness specular_roughness specular_ior coat_weight coat_roughness
+// fit: free fuzz_weight fuzz_roughness, the layers an opaque isotropic reflection shows: metal or dielectric, coat, fuzz
+// fit: by name, its fit costs several of the others' (7-9 s of CPU a slice): named, or in the study (fitting.md)
 // reciprocal: no, albedo scaling by 1 - E(wo) conserves energy but weighs wo and wi differently (OpenPBR)
 // look: base_color=0.8/0.25/0.1, specular_roughness=0.35, coat_weight=1, coat_roughness=0.05
 // figure: base_color=0.8/0.25/0.1, specular_roughness=0.4, coat_weight=1, coat_roughness=0.1

@@ -3,6 +3,7 @@
 // noise); the same seed gives the same fits; bad targets are refused with the file and line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -151,6 +152,29 @@ TEST(BrdfFit, TheRegistrysStartCountAndStartAreAFitsDefaults) {
     }
     ASSERT_NE(param, nullptr) << name;
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(at.params[param->slot + c], value, 1e-9 * value) << name << " " << c;
+  }
+}
+
+// openpbr is fitted only when named (`fit: by name`), and then only in what its `fit: free` line frees: every other
+// parameter stays at its default.
+TEST(BrdfFit, OpenPbrIsFittedByNameInTheParametersItsRegistryFrees) {
+  const std::vector<std::string> defaults = fittableModels(), all = fittableModels(true);
+  EXPECT_EQ(std::count(defaults.begin(), defaults.end(), "openpbr"), 0);
+  EXPECT_EQ(std::count(all.begin(), all.end(), "openpbr"), 1);
+  EXPECT_EQ(all.size(), defaults.size() + 1);
+  const ModelInfo& openpbr = *findModel("openpbr");
+  ASSERT_FALSE(openpbr.fitFree.empty());
+  const fitting::ModelPlan plan = fitting::planOf(openpbr, true);
+  std::size_t expected = 0;
+  for (std::string_view name : openpbr.fitFree) expected += findParam(openpbr, name)->rgb ? 3 : 1;
+  EXPECT_EQ(plan.variables.size(), expected);
+  for (const fitting::Variable& v : plan.variables) {
+    bool freed = false;
+    for (std::string_view name : openpbr.fitFree) {
+      const ParamInfo* p = findParam(openpbr, name);
+      freed |= v.slots.front() >= p->slot && v.slots.front() < p->slot + (p->rgb ? 3u : 1u);
+    }
+    EXPECT_TRUE(freed) << "slot " << v.slots.front();
   }
 }
 

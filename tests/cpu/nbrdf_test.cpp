@@ -203,7 +203,9 @@ TEST(Nbrdf, AScenesFilesAreBoundedByTheTablesDirectory) {
     writeKerasFiles(path, layers, kerasArchitecture());
     if (i == kMaxFilesPerScene) fs::resize_file(path, 10);  // refused before reading: never read, never damaged
     message = errorOf([&] { loadMeasured(path); });
-    if (i < kMaxFilesPerScene) ASSERT_EQ(message, "") << "file " << i;
+    if (i < kMaxFilesPerScene) {
+      ASSERT_EQ(message, "") << "file " << i;
+    }
   }
   EXPECT_NE(message.find("more than 64 measured and neural BRDF files"), std::string::npos) << message;
   // Networks stay in memory (19 KB each): the bound on resident tables is for MERL's 33 MiB ones.

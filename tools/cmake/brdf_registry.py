@@ -38,7 +38,7 @@ def parse_model(name, prefix, include, path):
     a model's GLSL file opens with."""
     lobes, params, sweep, slot, preset_lines = None, [], "", 0, []
     look, figure_lines, sweep_scene_lines, non_reciprocal, fit_by_name, fit_starts = None, [], [], "", "", 0
-    fit_start_line = None
+    fit_start_line, fit_free_lines = None, []
     feature_lines, medium, sampled_albedo = [], None, None
     with open(path, encoding="utf-8") as f:
         for number, line in enumerate(f, 1):
@@ -78,10 +78,13 @@ def parse_model(name, prefix, include, path):
                     fit_starts = int(words[1])
                 elif len(words) >= 2 and words[0] == "start" and why.strip():
                     fit_start_line = (where, words[1:])
+                elif len(words) >= 2 and words[0] == "free":
+                    fit_free_lines.append((where, words[1:], why.strip()))  # continued on more lines, one says why
                 else:
                     raise RegistryError(f"{where}: 'fit: by name, WHY' keeps a model out of the default fits; "
                                         "'fit: starts N, WHY' gives it N (1..64) Levenberg-Marquardt starts by default; "
-                                        "'fit: start NAME=VALUE ..., WHY' is one more start, the defaults with these")
+                                        "'fit: start NAME=VALUE ..., WHY' is one more start, the defaults with these; "
+                                        "'fit: free NAME ..., WHY' fits only these parameters (the rest at defaults)")
             elif body.startswith("sweep:"):
                 sweep = body[len("sweep:"):].strip()
             elif body.startswith("preset:"):
@@ -154,6 +157,13 @@ def parse_model(name, prefix, include, path):
             if pname not in by_name or value is None or not by_name[pname]["min"] <= value <= by_name[pname]["max"]:
                 raise RegistryError(f"{where}: '{word}' is not NAME=VALUE for a parameter of the model within its range")
             fit_start.append((pname, value))
+    fit_free = []
+    for where, words, _ in fit_free_lines:
+        if any(w not in by_name for w in words):
+            raise RegistryError(f"{where}: 'fit: free' names parameters of the model: {[w for w in words if w not in by_name]}")
+        fit_free += words
+    if fit_free_lines and not any(why for _, _, why in fit_free_lines):
+        raise RegistryError(f"{fit_free_lines[0][0]}: 'fit: free NAME ..., WHY': one of its lines says why")
     sampled_albedo_param = None
     if sampled_albedo is not None:
         where, words = sampled_albedo
@@ -175,7 +185,7 @@ def parse_model(name, prefix, include, path):
     return dict(name=name, prefix=prefix, include=include, path=path, lobes=lobes, params=params, sweep=sweep,
                 presets=presets, look=look[1] if look else None, figures=figures, sweep_scenes=sweep_scenes,
                 non_reciprocal=non_reciprocal, fit_by_name=fit_by_name, fit_starts=fit_starts, fit_start=fit_start,
-                features=features,
+                fit_free=fit_free, features=features,
                 medium=medium_params,
                 sampled_albedo=sampled_albedo_param)
 
@@ -353,6 +363,7 @@ def cpp_table(models, source_dir):
         features = ", ".join("{" + f"{cpp_string(f['name'])}, {cpp_string(f['param'])}, {f['bit']}u" + "}"
                              for f in m["features"])
         fit_start = ", ".join("{" + f"{cpp_string(name)}, {repr(float(value))}" + "}" for name, value in m["fit_start"])
+        fit_free = ", ".join(cpp_string(name) for name in m["fit_free"])
         presets = ", ".join(
             "{" + f"{cpp_string(p['key'])}, {cpp_string(p['name'])}, {{" + ", ".join(
                 "{" + f"{cpp_string(param)}, glm::vec3({', '.join(cpp_float(c) for c in channels)})" + "}"
@@ -360,7 +371,7 @@ def cpp_table(models, source_dir):
             for p in m["presets"])
         out.append(f"      {{{cpp_string(m['name'])}, {i}u, {m['lobes']}u, {{{params}}}, {cpp_string(m['sweep'])}, "
                    f"{cpp_string(glsl)}, {cpp_string(m['reference'])}, {{{presets}}}, "
-                   f"{cpp_string(m['non_reciprocal'])}, {cpp_string(m['fit_by_name'])}, {m['fit_starts']}u, {{{fit_start}}}, {{{features}}}}},")
+                   f"{cpp_string(m['non_reciprocal'])}, {cpp_string(m['fit_by_name'])}, {m['fit_starts']}u, {{{fit_start}}}, {{{fit_free}}}, {{{features}}}}},")
     out += ["  };", "  return table;", "}", "", "}  // namespace raylab", ""]
     return "\n".join(out)
 
