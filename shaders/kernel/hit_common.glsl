@@ -37,12 +37,6 @@ void applyNormalMap(inout Surface s, TextureRef ref) {
   s.normalMapped = true;
 }
 
-// The material's textures (MaterialTextures): the base colour multiplies the model's diffuse colour (the
-// parameter of its `diffuse` role), the metallic-roughness texture's G and B its roughness and metallic
-// parameters (roles `roughness`, `metallic`), KHR_materials_specular's textures its A and RGB the specular
-// strength and colour (roles `specular_weight`, `specular_tint`), the layered extensions' textures the layer
-// parameters they name (kTextureCoat...), and the normal map bends the shading normal.
-// The emissive texture is read where emission is (kernel/emission.glsl).
 // KHR_materials_anisotropy's direction: the tangent turned by anisotropyRotation plus the texture's angle (its RG, in
 // the frame of the tangent and the bitangent cross(n, t) w) about the shading normal; the texture's B scales the
 // strength, mapped as the loader maps the factor (gltf_materials.cpp, anisotropyOf). The shading frame's x axis is
@@ -60,7 +54,8 @@ void applyAnisotropyDirection(inout MaterialRecord material, inout Surface s, Ma
     material.params[anisotropy.param] = clamp(1.0 - alpha / (alpha + (1.0 - alpha) * strength * strength), 0.0, 1.0);
   }
   // A texel of (0.5, 0.5) has no direction: the tangent's, as the factor alone.
-  const float angle = uses.anisotropyRotation + (dot(direction, direction) > 0.0 ? atan(direction.y, direction.x) : 0.0);
+  const float angle =
+      uses.anisotropyRotation + (dot(direction, direction) > 0.0 ? atan(direction.y, direction.x) : 0.0);
   const vec3 n = s.shadingNormal;
   const vec3 t = s.tangent - n * dot(n, s.tangent);
   if (angle == 0.0 || !(dot(t, t) > 0.0)) return;
@@ -69,6 +64,12 @@ void applyAnisotropyDirection(inout MaterialRecord material, inout Surface s, Ma
   s.tangent = cos(angle) * tangent + sin(angle) * handedness * cross(n, tangent);
 }
 
+// The material's textures (MaterialTextures): the base colour multiplies the model's diffuse colour (the
+// parameter of its `diffuse` role), the metallic-roughness texture's G and B its roughness and metallic
+// parameters (roles `roughness`, `metallic`), KHR_materials_specular's textures its A and RGB the specular
+// strength and colour (roles `specular_weight`, `specular_tint`), the layered extensions' textures the layer
+// parameters they name (kTextureCoat...), and the normal map bends the shading normal.
+// The emissive texture is read where emission is (kernel/emission.glsl).
 void applyTextures(inout MaterialRecord material, inout Surface s) {
   if (!featureEnabled(kFeatureTextures) || material.textures < 0) return;
   const MaterialTextures uses = materialTextures[material.textures];
@@ -102,8 +103,8 @@ void applyTextures(inout MaterialRecord material, inout Surface s) {
     material.params[tintSlot + 2u] *= texel.b;
   }
   if (featureEnabled(kFeatureLayerTextures) && uses.layerModel == material.model) {
-    // One texture read in a loop kept rolled, not one inlined per use (the feature still costs a textured openpbr kernel
-    // about a third more compile time: ClearCoatTest 72 -> 95 s cold).
+    // One texture read in a loop kept rolled, not one inlined per use (the feature still costs a textured openpbr
+    // kernel about a third more compile time: ClearCoatTest 72 -> 95 s cold).
     [[dont_unroll]] for (uint use = kFirstLayerTexture; use < kLayerTexturesEnd; ++use) {
       const TextureRef layer = uses.refs[use];
       if (layer.texture < 0) continue;
