@@ -185,9 +185,7 @@ def parse_model(name, prefix, include, path):
     return dict(name=name, prefix=prefix, include=include, path=path, lobes=lobes, params=params, sweep=sweep,
                 presets=presets, look=look[1] if look else None, figures=figures, sweep_scenes=sweep_scenes,
                 non_reciprocal=non_reciprocal, fit_by_name=fit_by_name, fit_starts=fit_starts, fit_start=fit_start,
-                fit_free=fit_free, features=features,
-                medium=medium_params,
-                sampled_albedo=sampled_albedo_param)
+                fit_free=fit_free, features=features, medium=medium_params, sampled_albedo=sampled_albedo_param)
 
 
 def check_param_list(where, text, keys):
@@ -371,7 +369,8 @@ def cpp_table(models, source_dir):
             for p in m["presets"])
         out.append(f"      {{{cpp_string(m['name'])}, {i}u, {m['lobes']}u, {{{params}}}, {cpp_string(m['sweep'])}, "
                    f"{cpp_string(glsl)}, {cpp_string(m['reference'])}, {{{presets}}}, "
-                   f"{cpp_string(m['non_reciprocal'])}, {cpp_string(m['fit_by_name'])}, {m['fit_starts']}u, {{{fit_start}}}, {{{fit_free}}}, {{{features}}}}},")
+                   f"{cpp_string(m['non_reciprocal'])}, {cpp_string(m['fit_by_name'])}, {m['fit_starts']}u, "
+                   f"{{{fit_start}}}, {{{fit_free}}}, {{{features}}}}},")
     out += ["  };", "  return table;", "}", "", "}  // namespace raylab", ""]
     return "\n".join(out)
 
