@@ -288,10 +288,7 @@ ModelPlan planOf(const ModelInfo& model, bool isotropic) {
   if (!model.fitStart.empty()) {
     for (const Variable& v : plan.variables) plan.declaredStart.push_back(v.start);
     for (const auto& [name, value] : model.fitStart) {
-      const ParamInfo* param = nullptr;
-      for (const ParamInfo& p : model.params) {
-        if (p.name == name) param = &p;
-      }
+      const ParamInfo* param = findParam(model, name);  // the registry checked the name
       for (std::size_t i = 0; param != nullptr && i < plan.variables.size(); ++i) {
         const Variable& v = plan.variables[i];
         if (v.slots.front() < param->slot || v.slots.front() >= param->slot + (param->rgb ? 3u : 1u)) continue;

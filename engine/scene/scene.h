@@ -108,8 +108,9 @@ gpu::MaterialTextures noMaterialTextures();
 // True when the material is alpha-tested or blended, or its model's opacity (openpbr's geometry_opacity) is below 1:
 // its meshes are non-opaque geometry, and the kernel needs the alpha feature.
 bool hasAlpha(const Scene& scene, const gpu::MaterialRecord& record);
-// True when the material reads textures of glTF's layered extensions (its layers' parameters): the kernel needs
-// the layer-texture feature, which costs a textured openpbr kernel about a third more compile time.
+// True when the material reads textures of glTF's layered extensions (its layers' parameters) or turns its
+// anisotropy's direction (MaterialTextures::anisotropyRotation): the kernel needs the layer-texture feature, which
+// costs a textured openpbr kernel about a third more compile time.
 bool hasLayerTextures(const Scene& scene, const gpu::MaterialRecord& record);
 
 // True when some mesh instance or sphere has a material with emission > 0 (the path integrator's emitters).

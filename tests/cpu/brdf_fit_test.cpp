@@ -146,10 +146,7 @@ TEST(BrdfFit, TheRegistrysStartCountAndStartAreAFitsDefaults) {
   reference::Material at = plan.base;
   fitting::applyVariables(plan.variables, plan.declaredStart.data(), at);
   for (const auto& [name, value] : sgd.fitStart) {
-    const ParamInfo* param = nullptr;
-    for (const ParamInfo& p : sgd.params) {
-      if (p.name == name) param = &p;
-    }
+    const ParamInfo* param = findParam(sgd, name);
     ASSERT_NE(param, nullptr) << name;
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(at.params[param->slot + c], value, 1e-9 * value) << name << " " << c;
   }
