@@ -41,13 +41,14 @@ AlbedoEstimate albedoBySampling(const Device& device, BrdfSampler& sampler, cons
   const glm::vec3 wo(reference::directionFromAngles(thetaDegrees * kDegree, phiDegrees * kDegree));
   const std::vector<gpu::BrdfSampleValue> draws = drawBrdfSamples(device, sampler, material, wo, uniforms(seed, samples));
   // A two-sided model (rough glass) counts what it transmits as the cubature does: a direction inside weighs
-  // eta^2, which by generalised reciprocity makes the sum the fraction of the light arriving from wo.
-  const std::optional<double> eta = reference::transmissionEta(reference::fromRecord(material));
+  // eta^2, which by generalised reciprocity makes the sum the fraction of the light arriving from wo (each channel
+  // its own index where the material disperses; 1 through a thin wall, which light passes without bending).
+  const std::optional<glm::dvec3> etas = reference::transmissionEtas(reference::fromRecord(material));
   glm::dvec3 sum(0.0), sumSquares(0.0);
   for (const gpu::BrdfSampleValue& draw : draws) {
     if (!(draw.pdf > 0.0f)) continue;
-    const double inside = eta && draw.wi.z < 0.0f ? *eta * *eta : 1.0;
-    const glm::dvec3 weight = glm::dvec3(draw.f) * (inside * std::abs(double(draw.wi.z)) / double(draw.pdf));
+    const glm::dvec3 inside = etas && draw.wi.z < 0.0f ? *etas * *etas : glm::dvec3(1.0);
+    const glm::dvec3 weight = glm::dvec3(draw.f) * inside * (std::abs(double(draw.wi.z)) / double(draw.pdf));
     sum += weight;
     sumSquares += weight * weight;
   }

@@ -205,8 +205,10 @@ void setParam(gpu::MaterialRecord& record, std::string_view name, glm::vec3 valu
   const int channels = param->rgb ? 3 : 1;
   for (int c = 0; c < channels; ++c) {
     if (!std::isfinite(value[c]) || value[c] < param->min || value[c] > param->max) {
+      // A value outside its range is a usage error wherever it comes from (a scene's material, --material, a
+      // script): exit 2, as for the command line.
       throw Error(where + ": " + std::string(name) + " = " + numberText(value[c]) + " is outside " +
-                  formatRange(*param));
+                  formatRange(*param), kExitUsage);
     }
   }
   if (param == &kDelta) record.delta = value.x;

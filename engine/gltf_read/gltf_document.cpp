@@ -24,7 +24,7 @@ const char* const kSupportedExtensions[] = {"KHR_lights_punctual", "KHR_material
                                             "KHR_materials_volume", "KHR_materials_coat", "KHR_materials_fuzz",
                                             "KHR_materials_diffuse_roughness", "KHR_materials_anisotropy",
                                             "KHR_materials_specular", "KHR_materials_transmission",
-                                            "KHR_materials_diffuse_transmission",
+                                            "KHR_materials_diffuse_transmission", "KHR_materials_dispersion",
                                             "KHR_texture_transform"};
 constexpr std::size_t kMaxFileBytes = std::size_t(1) << 31;  // tinygltf takes sizes as unsigned int
 

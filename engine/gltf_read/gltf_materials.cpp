@@ -31,8 +31,9 @@ constexpr glm::vec3 kDefaultGrey{0.8f};
 // A glTF factor must lie in [low, high]; the error names the material and the property.
 float checkedFactor(double value, double low, double high, const std::string& where, const std::string& property) {
   if (!(value >= low && value <= high)) {
+    // Exit 2, as a material parameter out of its range is wherever it comes from (brdf_params, setParam).
     throw Error(where + ": " + property + " = " + formatNumber(value) + " is outside [" + formatNumber(low) + ", " +
-                formatNumber(high) + "]");
+                formatNumber(high) + "]", kExitUsage);
   }
   return static_cast<float>(value);
 }
@@ -389,6 +390,26 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
     } else {
       setParam(record, "transmission_color", input.baseColor, through);
     }
+    // KHR_materials_dispersion: dispersion = 20 / V_d, and openpbr's V = abbe_number / scale, so scale = dispersion
+    // with abbe_number 20 up to 1, then scale 1 with abbe_number = 20 / dispersion (down to openpbr's least Abbe
+    // number). The extension builds on the volume: a surface without one (thicknessFactor 0) is thin and does not
+    // refract, so it does not disperse either.
+    if (input.dispersion > 0.0f) {
+      const std::string dispersion = where + " (KHR_materials_dispersion)";
+      if (!(input.volumeThickness > 0.0f)) {
+        warn(dispersion + ": not applied: without KHR_materials_volume's thickness the surface is thin and does not "
+                          "refract");
+      } else {
+        const ParamInfo& abbe = *findParam(modelInfo(record.model), "transmission_dispersion_abbe_number");
+        const float scale = std::min(input.dispersion, 1.0f), abbeNumber = 20.0f / std::max(input.dispersion, 1.0f);
+        if (abbeNumber < abbe.min) {
+          warn(dispersion + ": dispersion " + formatNumber(input.dispersion) + " is used as openpbr's least Abbe " +
+               "number, " + formatNumber(abbe.min) + " (dispersion " + formatNumber(20.0f / abbe.min) + ")");
+        }
+        setParam(record, "transmission_dispersion_scale", glm::vec3(scale), dispersion);
+        setParam(record, "transmission_dispersion_abbe_number", glm::vec3(std::max(abbeNumber, abbe.min)), dispersion);
+      }
+    }
   }
   // KHR_materials_diffuse_transmission: the diffuse lobe becomes mix(diffuse BRDF of the base colour, diffuse BTDF
   // of diffuseTransmissionColor, factor), which is openpbr's thin-walled subsurface that passes all its light
@@ -477,7 +498,8 @@ gpu::MaterialRecord mapMetallicRoughness(const MetallicRoughness& input, const s
   const bool sheen = input.sheenColor != glm::vec3(0.0f);
   const bool layered = input.clearcoat > 0.0f || input.iridescence > 0.0f || sheen || (input.hasCoat && input.coat > 0.0f) ||
                        (input.hasFuzz && input.fuzz > 0.0f) || input.diffuseRoughness > 0.0f ||
-                       input.anisotropy > 0.0f || (input.diffuseTransmission > 0.0f && input.transmission < 1.0f);
+                       input.anisotropy > 0.0f || (input.diffuseTransmission > 0.0f && input.transmission < 1.0f) ||
+                       (input.dispersion > 0.0f && input.transmission > 0.0f && input.volumeThickness > 0.0f);
   const bool volume = input.volumeThickness > 0.0f && std::isfinite(input.attenuationDistance);
   if (input.transmission >= 1.0f && !volume && !layered) {
     // Glass: smooth up to a roughness of 0.001, rough (ggx_dielectric, alpha = roughness^2 as glTF's own BRDF)
@@ -658,6 +680,10 @@ void convertMaterials(Document& document, Scene& scene) {
       readFactor(*volume, "attenuationDistance", name, 1e-30, kLargest, input.attenuationDistance);
       readColour(*volume, "attenuationColor", name, input.attenuationColor);
       if (volume->contains("thicknessTexture")) document.ignore(name + ".thicknessTexture (only whether there is a volume matters)");
+    }
+    if (const json* dispersion = findPath(materialJson, {"extensions", "KHR_materials_dispersion"})) {
+      readFactor(*dispersion, "dispersion", "KHR_materials_dispersion", 0.0, std::numeric_limits<float>::max(),
+                 input.dispersion);
     }
     if (const json* coat = findPath(materialJson, {"extensions", "KHR_materials_coat"})) {
       const std::string name = "KHR_materials_coat";

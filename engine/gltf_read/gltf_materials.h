@@ -34,6 +34,7 @@ struct MetallicRoughness {
   float volumeThickness = 0.0f;         // KHR_materials_volume.thicknessFactor (0: thin-walled, no volume)
   float attenuationDistance = std::numeric_limits<float>::infinity();  // KHR_materials_volume
   glm::vec3 attenuationColor{1.0f};     // KHR_materials_volume.attenuationColor
+  float dispersion = 0.0f;              // KHR_materials_dispersion.dispersion, 20 / the Abbe number
   // The OpenPBR-aligned drafts, which name openpbr's own parameters: KHR_materials_coat (it replaces the clear coat
   // where both appear), KHR_materials_fuzz (it replaces the sheen), KHR_materials_diffuse_roughness.
   bool hasCoat = false;

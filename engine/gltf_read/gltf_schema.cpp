@@ -91,6 +91,7 @@ const Shape kDiffuseTransmission{{number("diffuseTransmissionFactor"), object("d
                                   object("diffuseTransmissionColorTexture", kTextureInfo)}};
 const Shape kAnisotropy{{number("anisotropyStrength"), number("anisotropyRotation"),
                          object("anisotropyTexture", kTextureInfo)}};
+const Shape kDispersion{{number("dispersion")}};
 const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                        object("normalTexture", kNormalTextureInfo), object("occlusionTexture", kOcclusionTextureInfo),
                        object("emissiveTexture", kTextureInfo), numbers("emissiveFactor", 3), string("alphaMode"),
@@ -103,7 +104,8 @@ const Shape kMaterial{{string("name"), object("pbrMetallicRoughness", kPbr),
                        object("KHR_materials_fuzz", kFuzz),
                        object("KHR_materials_diffuse_roughness", kDiffuseRoughness),
                        object("KHR_materials_anisotropy", kAnisotropy),
-                       object("KHR_materials_diffuse_transmission", kDiffuseTransmission)}};
+                       object("KHR_materials_diffuse_transmission", kDiffuseTransmission),
+                       object("KHR_materials_dispersion", kDispersion)}};
 const Shape kPrimitive{{required(indexMap("attributes")), index("indices"), index("material"), index("mode"),
                         indexMaps("targets")}};
 const Shape kMesh{{string("name"), required(objects("primitives", kPrimitive)), numbers("weights")}};

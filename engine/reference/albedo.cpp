@@ -159,11 +159,26 @@ Albedo directionalAlbedo(const Material& material, const dvec3& wo, const Albedo
   }
   CubatureResult transmission;
   transmission.converged = true;
-  const std::optional<double> eta = transmissionEta(material);
-  if (const std::optional<SpecularLobe> lobe = specularLobe(material); lobe && eta) {
-    transmission = integrate2d(
-        [&](double v, double psi) { return transmissionIntegrand(material, *lobe, *eta, wo, v, psi); },
-        dvec2(0.0, 0.0), dvec2(1.0, 2.0 * kPi), cubature);
+  const std::optional<dvec3> etas = transmissionEtas(material);
+  if (const std::optional<SpecularLobe> lobe = specularLobe(material); lobe && etas) {
+    // A dispersive material refracts each channel by its own index: each channel integrated about its own.
+    const bool dispersive = etas->x != etas->y || etas->y != etas->z;
+    for (int c = 0; c < (dispersive ? 3 : 1); ++c) {
+      const CubatureResult channel = integrate2d(
+          [&](double v, double psi) {
+            const dvec3 value = transmissionIntegrand(material, *lobe, (*etas)[c], wo, v, psi);
+            return dispersive ? dvec3(c == 0 ? value.x : 0.0, c == 1 ? value.y : 0.0, c == 2 ? value.z : 0.0) : value;
+          },
+          dvec2(0.0, 0.0), dvec2(1.0, 2.0 * kPi), cubature);
+      if (!dispersive) {
+        transmission = channel;
+        break;
+      }
+      transmission.value[c] = channel.value[c];
+      transmission.errorEstimate = std::max(transmission.errorEstimate, channel.errorEstimate);
+      transmission.evaluations += channel.evaluations;
+      transmission.converged = transmission.converged && channel.converged;
+    }
   }
   albedo.diffuse = diffuse.value;
   albedo.specular = specular.value;

@@ -61,8 +61,9 @@ std::optional<double> pdfTwoSided(const Material& material, const dvec3& wi, con
 // The absorption coefficient per unit length inside a transmissive material (a model's `medium:` line: openpbr's
 // volume); zero for every other model and material.
 dvec3 mediumAbsorption(const Material& material);
-// A two-sided model's index of refraction, inside over outside (its parameter of kind eta); empty for the others.
-std::optional<double> transmissionEta(const Material& material);
+// A two-sided model's index of refraction, inside over outside, per channel (they differ where it disperses; 1
+// through a thin wall); empty for the others.
+std::optional<dvec3> transmissionEtas(const Material& material);
 // A model whose f is a table read from a file (measured): a step function of the directions, which the albedo
 // integrates by sampling rather than by adaptive cubature.
 bool isTabulated(const Material& material);

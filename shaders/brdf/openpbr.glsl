@@ -6,6 +6,7 @@
 // feature: fuzz fuzz_weight
 // feature: transmission transmission_weight
 // feature: thin_walled geometry_thin_walled
+// feature: dispersion transmission_dispersion_scale
 // medium: transmission_weight base_metalness transmission_color transmission_depth geometry_thin_walled
 // albedo sampled when: geometry_thin_walled
 // fit: free base_color base_metalness base_diffuse_roughness specular_roughness specular_ior coat_weight coat_roughness
@@ -41,6 +42,8 @@
 // | transmission_weight           | [0, 1]   | 0       |                   | the dielectric's share that lets light through |
 // | transmission_color            | [0, 1]   | 1       | rgb               | the colour the volume reaches at transmission_depth |
 // | transmission_depth            | [0, 1000] | 0      |                   | that depth in scene units; 0: no volume, tinted at the surface |
+// | transmission_dispersion_scale | [0, 1]   | 0       |                   | the dispersion's strength: 0 none, 1 the Abbe number's |
+// | transmission_dispersion_abbe_number | [1, 1000] | 20 |                 | the Abbe number V_d at scale 1 (glass 60, polycarbonate 32) |
 // | subsurface_weight             | [0, 1]   | 0       |                   | the dielectric's share that scatters below the surface |
 // | subsurface_color              | [0, 1]   | 0.8     | rgb               | the albedo of that scattering             |
 // | subsurface_scatter_anisotropy | [-1, 1]  | 0       |                   | on a thin wall, the share through: (1 + g) / 2 |
@@ -115,6 +118,27 @@ float openpbrSpecularEps(float specularWeight, float specularIor, float coatWeig
   eta = eta < 1.0 ? 1.0 / eta : eta;
   const float F0 = (eta - 1.0) * (eta - 1.0) / ((eta + 1.0) * (eta + 1.0));
   return sqrt(clamp(specularWeight * F0, 0.0, 1.0));
+}
+
+// ggx_dielectric's index floor: an index of 1 has no refraction half vector.
+float openpbrTransmissionEta(float specularIor) { return max(specularIor, 1.001); }
+
+// Dispersion (transmission_dispersion_scale, compiled only where a scene has one): the index at the three Fraunhofer
+// lines that define the Abbe number, C (656.3 nm) for red, d (587.6 nm) for green and F (486.1 nm) for blue, from
+// Cauchy's two terms as KHR_materials_dispersion writes them, n = max(n_d + (n_d - 1) / V (523655 / lambda^2 -
+// 1.5168), 1) with V = abbe_number / scale: green keeps specular_ior (to 2e-4 of the spread) and blue less red is
+// (n_d - 1) / V, the Abbe number's own definition. The dielectric's Fresnel term and the solid's refraction take each
+// channel's index, so each channel keeps the furnace; the albedo tables of the layering keep specular_ior (a part in
+// 10^3 of the spread).
+bool openpbrDispersive(float dispersionScale) {
+  return featureEnabled(kOpenpbrFeatureDispersion) && dispersionScale > 0.0;
+}
+vec3 openpbrDispersedEtas(float specularIor, float dispersionScale, float abbeNumber) {
+  if (!openpbrDispersive(dispersionScale)) return vec3(openpbrTransmissionEta(specularIor));
+  const vec3 lambda = vec3(656.3, 587.6, 486.1);
+  const vec3 n = specularIor + (specularIor - 1.0) * dispersionScale / max(abbeNumber, 1.0) *
+                 (523655.0 / (lambda * lambda) - 1.5168);
+  return max(n, vec3(1.001));  // the floor of openpbrTransmissionEta
 }
 
 // The exact Fresnel reflectance from outside at cosine c of the index (1 + eps)/(1 - eps); eps near 1 is a
@@ -269,7 +293,8 @@ vec3 openpbrReflection(float baseWeight, vec3 baseColor, float metalness, float 
                  vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
-                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, vec3 diffuseAlbedo, vec3 wi, vec3 wo) {
+                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float dispersionScale, float abbeNumber,
+                 vec3 diffuseAlbedo, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return vec3(0.0);  // one-sided; also false for NaN directions
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
@@ -286,6 +311,10 @@ vec3 openpbrReflection(float baseWeight, vec3 baseColor, float metalness, float 
   const float loss = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
   const float cosH = openpbrCosineToHalfVector(wo, h);
   vec3 F = vec3(openpbrFresnel(cosH, eps)), passed = vec3(loss);
+  if (openpbrDispersive(dispersionScale)) {  // each channel's Fresnel term at its own index, as its refraction's
+    const vec3 etas = openpbrDispersedEtas(specularIor, dispersionScale, abbeNumber);
+    [[dont_unroll]] for (int c = 0; c < 3; ++c) F[c] = openpbrFresnel(cosH, openpbrSpecularEps(specularWeight, etas[c], C, coatIor));
+  }
   const vec3 b = openpbrF82B(rho, specularColor);
   vec3 metalF = openpbrF82(rho, b, cosH);
   // The thin film (reference: openpbr.cpp), compiled only where a scene has one: over the dielectric at wo.H and at
@@ -403,8 +432,31 @@ vec3 openpbrReflectionDirection(float baseWeight, vec3 baseColor, float metalnes
 float openpbrTransmissionShare(float transmissionWeight, float metalness) {
   return featureEnabled(kOpenpbrFeatureTransmission) ? transmissionWeight * (1.0 - metalness) : 0.0;
 }
-// ggx_dielectric's index floor: an index of 1 has no refraction half vector.
-float openpbrTransmissionEta(float specularIor) { return max(specularIor, 1.001); }
+// The solid's interface with an index per channel: each channel of f is that channel of ggx_dielectric at its own
+// index; the sampler picks a channel uniformly and refracts by its index, so the density is the three channels'
+// mean (where the lobes part, a sample carries one channel's light, three times over).
+vec3 openpbrInterfaceEval(vec2 alpha, vec3 etas, bool dispersive, vec3 tint, vec3 wi, vec3 wo) {
+  if (!dispersive) return ggxDielectricEval(alpha.x, alpha.y, etas.g, tint, wi, wo);
+  vec3 f;
+  [[dont_unroll]] for (int c = 0; c < 3; ++c) f[c] = ggxDielectricEval(alpha.x, alpha.y, etas[c], tint, wi, wo)[c];
+  return f;
+}
+float openpbrInterfacePdf(vec2 alpha, vec3 etas, bool dispersive, vec3 wi, vec3 wo) {
+  if (!dispersive) return ggxDielectricPdf(alpha.x, alpha.y, etas.g, vec3(1.0), wi, wo);
+  float pdf = 0.0;
+  [[dont_unroll]] for (int c = 0; c < 3; ++c) pdf += ggxDielectricPdf(alpha.x, alpha.y, etas[c], vec3(1.0), wi, wo);
+  return pdf / 3.0;
+}
+vec3 openpbrInterfaceDirection(vec2 alpha, vec3 etas, bool dispersive, vec3 wo, vec3 u) {
+  float eta = etas.g;
+  if (dispersive) {
+    const float channel = min(floor(3.0 * u.x), 2.0);
+    eta = etas[int(channel)];
+    u.x = min(3.0 * u.x - channel, 0.99999994);
+  }
+  return ggxDielectricSample(alpha.x, alpha.y, eta, vec3(1.0), wo, u).wi;
+}
+
 // The share of the sampler's choices that go to the interface's own sampler (reflect or refract by F) when wo is
 // outside, against the reflection's mixture (the coat's and fuzz's lobes, the diffuse the rest keeps).
 const float kOpenpbrInterfaceShare = 0.75;
@@ -504,7 +556,8 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
                  float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
-                 vec3 transmissionColor, float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor,
+                 vec3 transmissionColor, float transmissionDepth, float dispersionScale, float abbeNumber,
+                 float subsurfaceWeight, vec3 subsurfaceColor,
                  float subsurfaceAnisotropy, float thinWalled, float emissionLuminance, vec3 emissionColor,
                  float geometryOpacity, vec3 wi, vec3 wo) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
@@ -514,7 +567,8 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
     const float C = openpbrCoat(coatWeight);
     const vec2 alpha = openpbrBaseAlphas(specularRoughness, specularAnisotropy, C, coatRoughness);
     const vec3 tint = transmissionDepth > 0.0 ? vec3(1.0) : transmissionColor;
-    vec3 f = T * ggxDielectricEval(alpha.x, alpha.y, openpbrTransmissionEta(specularIor), tint, wi, wo);
+    vec3 f = T * openpbrInterfaceEval(alpha, openpbrDispersedEtas(specularIor, dispersionScale, abbeNumber),
+                                      openpbrDispersive(dispersionScale), tint, wi, wo);
     if (wi.z * wo.z < 0.0) {
       f *= openpbrLayersPassed(liftOffHorizon(wi.z > 0.0 ? wi : wo), coatWeight, coatColor, coatRoughness,
                                coatAnisotropy, coatIor, fuzzWeight, fuzzRoughness);
@@ -534,7 +588,7 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
   return openpbrReflection(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                            specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor, coatRoughness,
                            coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
-                           fuzzWeight, fuzzColor, fuzzRoughness,
+                           fuzzWeight, fuzzColor, fuzzRoughness, dispersionScale, abbeNumber,
                            openpbrDiffuseAlbedo(baseWeight, baseColor, subsurfaceWeight, subsurfaceColor, T,
                                                 thin ? openpbrThinThrough(subsurfaceAnisotropy) : 0.0),
                            wi, wo);
@@ -545,7 +599,8 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
                  float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
-                 vec3 transmissionColor, float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor,
+                 vec3 transmissionColor, float transmissionDepth, float dispersionScale, float abbeNumber,
+                 float subsurfaceWeight, vec3 subsurfaceColor,
                  float subsurfaceAnisotropy, float thinWalled, float emissionLuminance, vec3 emissionColor,
                  float geometryOpacity, vec3 wi, vec3 wo) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
@@ -555,7 +610,8 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
     if (!(abs(wi.z) > 0.0 && abs(wo.z) > 0.0)) return 0.0;
     const float C = openpbrCoat(coatWeight);
     const vec2 alpha = openpbrBaseAlphas(specularRoughness, specularAnisotropy, C, coatRoughness);
-    interfaceDensity = ggxDielectricPdf(alpha.x, alpha.y, openpbrTransmissionEta(specularIor), vec3(1.0), wi, wo);
+    interfaceDensity = openpbrInterfacePdf(alpha, openpbrDispersedEtas(specularIor, dispersionScale, abbeNumber),
+                                           openpbrDispersive(dispersionScale), wi, wo);
     share = wo.z > 0.0 ? kOpenpbrInterfaceShare * T : 1.0;
   } else if (wo.z < 0.0) {
     wi.z = -wi.z;
@@ -587,7 +643,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                          float coatAnisotropy, float coatIor, float coatDarkening, float thinFilmWeight,
                          float thinFilmThickness, float thinFilmIor, float fuzzWeight, vec3 fuzzColor,
                          float fuzzRoughness, float transmissionWeight, vec3 transmissionColor,
-                         float transmissionDepth, float subsurfaceWeight, vec3 subsurfaceColor,
+                         float transmissionDepth, float dispersionScale, float abbeNumber,
+                         float subsurfaceWeight, vec3 subsurfaceColor,
                          float subsurfaceAnisotropy, float thinWalled,
                          float emissionLuminance, vec3 emissionColor, float geometryOpacity,
                          vec3 wo, vec3 u) {
@@ -609,7 +666,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
       const float F = openpbrFresnel(clamp(dot(w, m), 0.0, 1.0), openpbrSpecularEps(specularWeight, specularIor, C, coatIor));
       if (!(v < F)) wi.z = -wi.z;  // straight through
     } else {
-      wi = ggxDielectricSample(alpha.x, alpha.y, openpbrTransmissionEta(specularIor), vec3(1.0), w, vec3(v, u.yz)).wi;
+      wi = openpbrInterfaceDirection(alpha, openpbrDispersedEtas(specularIor, dispersionScale, abbeNumber),
+                                     openpbrDispersive(dispersionScale), w, vec3(v, u.yz));
     }
   } else {
     const float q =
@@ -629,7 +687,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                                specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor, coatRoughness,
                                coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
                                fuzzWeight, fuzzColor, fuzzRoughness, transmissionWeight, transmissionColor,
-                               transmissionDepth, subsurfaceWeight, subsurfaceColor, subsurfaceAnisotropy, thinWalled,
+                               transmissionDepth, dispersionScale, abbeNumber, subsurfaceWeight, subsurfaceColor,
+                               subsurfaceAnisotropy, thinWalled,
                                emissionLuminance, emissionColor, geometryOpacity, wi, wo);
   if (!(pdf > 0.0)) return noSample();
   return BsdfSample(wi,
@@ -637,7 +696,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                                 specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor,
                                 coatRoughness, coatAnisotropy, coatIor, coatDarkening, thinFilmWeight,
                                 thinFilmThickness, thinFilmIor, fuzzWeight, fuzzColor, fuzzRoughness,
-                                transmissionWeight, transmissionColor, transmissionDepth, subsurfaceWeight,
+                                transmissionWeight, transmissionColor, transmissionDepth, dispersionScale,
+                                abbeNumber, subsurfaceWeight,
                                 subsurfaceColor, subsurfaceAnisotropy, thinWalled, emissionLuminance, emissionColor,
                                 geometryOpacity, wi, wo),
                     pdf);

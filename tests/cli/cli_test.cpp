@@ -109,6 +109,43 @@ TEST(CliTest, BadModelParametersNameTheMaterialParameterAndRangeAndWriteNothing)
   }
 }
 
+// The same from a scene file: a glTF material's layer value out of its range, by an extension or by extras.raylab,
+// exits 2 naming the material and the parameter, and writes nothing (issue 38).
+TEST(CliTest, BadLayerValuesInASceneExitTwoNamingTheMaterialAndWriteNothing) {
+  const std::filesystem::path dir = std::filesystem::path(scratchDir()) / "bad_scene_values";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ifstream in(std::string(RAYLAB_SOURCE_DIR) + "/assets/scenes/minimal.gltf");
+  const std::string minimal((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string ground = "\"name\": \"ground\",\n      \"extras\"";
+  ASSERT_NE(minimal.find(ground), std::string::npos);
+  struct Case {
+    std::string material;  // replaces the ground's extras
+    std::string mentions;
+  };
+  const Case cases[] = {
+      {"\"extensions\": {\"KHR_materials_clearcoat\": {\"clearcoatFactor\": 1.5}}, \"extras\"",
+       "'ground': KHR_materials_clearcoat.clearcoatFactor = 1.5 is outside [0, 1]"},
+      {"\"extensions\": {\"KHR_materials_dispersion\": {\"dispersion\": -1}}, \"extras\"",
+       "'ground': KHR_materials_dispersion.dispersion = -1 is outside"},
+      {"\"extras\": {\"raylab\": {\"model\": \"openpbr\", \"transmission_depth\": -1}}, \"unused\"",
+       "'ground': extras.raylab: transmission_depth = -1 is outside [0, 1000]"},
+  };
+  const std::string out = (dir / "image.exr").string(), png = (dir / "image.png").string();
+  for (const Case& c : cases) {
+    std::string text = minimal;
+    text.replace(text.find(ground), ground.size(), "\"name\": \"ground\", " + c.material);
+    const std::string scene = (dir / "scene.gltf").string();
+    std::ofstream(scene) << text;
+    const CommandResult result = runRaylab({"render", scene, "--out", out, "--png", png, "--spp", "1", "--width", "8",
+                                            "--height", "8"});
+    EXPECT_EQ(result.exitCode, 2) << c.material << ": " << result.output;
+    EXPECT_NE(result.output.find(c.mentions), std::string::npos) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(out)) << c.material;
+    EXPECT_FALSE(std::filesystem::exists(png)) << c.material;
+  }
+}
+
 // A missing, unreadable or non-finite environment image: exit 1, a message naming the file, and no output.
 TEST(CliTest, ABadEnvironmentImageExitsOneNamingItAndWritesNothing) {
   const std::filesystem::path dir = std::filesystem::path(scratchDir()) / "environment";

@@ -129,6 +129,9 @@ TEST(AlbedoQuadrature, LobeCoordinatesAgreeWithPlainHemisphere) {
     for (const auto& [name, value] : generic.params) params.push_back({name, value});
     allCases.push_back({generic.model, params});
   }
+  // A dispersive solid: the cubature integrates each channel about its own refraction, this one the whole sphere.
+  allCases.push_back({"openpbr", {{"specular_roughness", 0.6}, {"transmission_weight", 1.0},
+                                  {"transmission_dispersion_scale", 1.0}, {"transmission_dispersion_abbe_number", 4.0}}});
   reference::CubatureOptions options;
   options.relTolerance = 1e-9;
   options.maxRegions = 100000;
@@ -138,20 +141,23 @@ TEST(AlbedoQuadrature, LobeCoordinatesAgreeWithPlainHemisphere) {
     const Material material = makeMaterial(c.model, c.params);
     // A two-sided model (rough glass) transmits too: the plain integration covers the sphere, directions inside
     // weighted by eta^2 as the albedo counts them (the fraction of the light arriving from wo).
-    const std::optional<double> eta = reference::transmissionEta(material);
+    const std::optional<dvec3> etas = reference::transmissionEtas(material);
     for (double theta : {0.0, 60.0, 89.0}) {
       const dvec3 wo = directionFromAngles(theta * kDegree, 30.0 * kDegree);
       const reference::CubatureResult plain = reference::integrate2d(
           [&](double cosTheta, double phi) {
             const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
             const dvec3 wi(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
-            const double weight = cosTheta < 0.0 ? -cosTheta * *eta * *eta : cosTheta;
-            return reference::eval(material, wi, wo) * weight;
+            return reference::eval(material, wi, wo) * (cosTheta < 0.0 ? -cosTheta * *etas * *etas : dvec3(cosTheta));
           },
-          {eta ? -1.0 : 0.0, 0.0}, {1.0, 2.0 * kPi}, options);
+          {etas ? -1.0 : 0.0, 0.0}, {1.0, 2.0 * kPi}, options);
       ASSERT_TRUE(plain.converged);
-      const double lobe = albedoAt(material, theta, 30.0);
-      EXPECT_NEAR(lobe, plain.value.x, 1e-7 * plain.value.x) << materialLabel(c.model, c.params) << " at " << theta;
+      Albedo lobes;
+      albedoAt(material, theta, 30.0, 1e-9, &lobes);
+      for (int channel = 0; channel < 3; ++channel) {
+        EXPECT_NEAR(lobes.value[channel], plain.value[channel], 1e-7 * plain.value[channel])
+            << materialLabel(c.model, c.params) << " at " << theta << ", channel " << channel;
+      }
     }
   }
 }

@@ -244,7 +244,7 @@ TEST(MaterialTable, ModelFeaturesHaveTheirOwnBitsAboveTheFixedFeatures) {
     }
   }
   const ModelInfo& openpbr = *findModel("openpbr");
-  ASSERT_EQ(openpbr.features.size(), 5u);
+  ASSERT_EQ(openpbr.features.size(), 6u);
   EXPECT_EQ(openpbr.features[0].name, "coat");
   EXPECT_EQ(openpbr.features[0].param, "coat_weight");
   EXPECT_EQ(openpbr.features[1].name, "thin_film");
@@ -255,6 +255,8 @@ TEST(MaterialTable, ModelFeaturesHaveTheirOwnBitsAboveTheFixedFeatures) {
   EXPECT_EQ(openpbr.features[3].param, "transmission_weight");
   EXPECT_EQ(openpbr.features[4].name, "thin_walled");
   EXPECT_EQ(openpbr.features[4].param, "geometry_thin_walled");
+  EXPECT_EQ(openpbr.features[5].name, "dispersion");
+  EXPECT_EQ(openpbr.features[5].param, "transmission_dispersion_scale");
 }
 
 }  // namespace

@@ -148,6 +148,15 @@ std::vector<Case> nonNeutralCases() {
                                                        {"diffuseTransmissionColorFactor", {0.9, 0.5, 0.2}}}}},
               {{"geometry_thin_walled", glm::vec3(1.0f)}, {"subsurface_weight", glm::vec3(0.6f)},
                {"subsurface_color", {0.9f, 0.5f, 0.2f}}, {"subsurface_scatter_anisotropy", glm::vec3(1.0f)}}),
+      // Dispersion on a half transmission with a clear volume, lit from below too: each channel refracted by its own
+      // index (dispersion 0.8: V = 25).
+      layered("KHR_materials_dispersion", {0.9f, 0.9f, 0.9f}, 0.0f, 0.3f,
+              {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}},
+               {"KHR_materials_volume", {{"thicknessFactor", 1.0}}},
+               {"KHR_materials_dispersion", {{"dispersion", 0.8}}}},
+              {{"transmission_weight", glm::vec3(0.5f)}, {"transmission_color", {0.9f, 0.9f, 0.9f}},
+               {"transmission_depth", glm::vec3(0.0f)}, {"transmission_dispersion_scale", glm::vec3(0.8f)},
+               {"transmission_dispersion_abbe_number", glm::vec3(20.0f)}}),
   };
 }
 
@@ -171,7 +180,8 @@ std::vector<json> neutralRow() {
           with("KHR_materials_diffuse_roughness", {{"diffuseRoughnessFactor", 0.0}}),
           with("KHR_materials_transmission", {{"transmissionFactor", 0.0}}),
           with("KHR_materials_volume", {{"thicknessFactor", 0.0}}),
-          with("KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.0}})};
+          with("KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.0}}),
+          with("KHR_materials_dispersion", {{"dispersion", 0.0}})};
 }
 
 std::vector<json> materialsOf(const std::vector<Case>& cases) {

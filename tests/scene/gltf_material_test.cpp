@@ -602,6 +602,46 @@ TEST(GltfMaterial, KhrMaterialsDiffuseTransmissionIsAThinSubsurfaceSheetThatPass
   }
 }
 
+// KHR_materials_dispersion (dispersion = 20 / V_d) onto openpbr's V = abbe_number / scale: scale = dispersion with
+// abbe_number 20 up to 1, then abbe_number = 20 / dispersion. It builds on the volume: a clear gem (a thickness and no
+// attenuation) becomes openpbr rather than glass, a surface without a thickness is thin and does not disperse (one
+// warning), and without transmission it is neutral.
+TEST(GltfMaterial, KhrMaterialsDispersionSetsTheAbbeNumberOfTheVolume) {
+  WarningCapture warnings;
+  const auto gem = [](double dispersion) {
+    return json{{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                                {"KHR_materials_ior", {{"ior", 2.4}}},
+                                {"KHR_materials_volume", {{"thicknessFactor", 1.0}}},
+                                {"KHR_materials_dispersion", {{"dispersion", dispersion}}}}},
+                {"pbrMetallicRoughness", {{"roughnessFactor", 0.0}}}};
+  };
+  const gpu::MaterialRecord diamond = loadMaterial(gem(0.36)).materials[0].record;  // V_d 55
+  EXPECT_EQ(diamond.model, modelId("openpbr"));
+  EXPECT_FLOAT_EQ(getParam(diamond, "transmission_weight").x, 1.0f);
+  EXPECT_FLOAT_EQ(getParam(diamond, "specular_ior").x, 2.4f);
+  EXPECT_FLOAT_EQ(getParam(diamond, "transmission_dispersion_scale").x, 0.36f);
+  EXPECT_FLOAT_EQ(getParam(diamond, "transmission_dispersion_abbe_number").x, 20.0f);
+  const gpu::MaterialRecord rutile = loadMaterial(gem(2.04)).materials[0].record;  // V_d 9.8
+  EXPECT_FLOAT_EQ(getParam(rutile, "transmission_dispersion_scale").x, 1.0f);
+  EXPECT_NEAR(getParam(rutile, "transmission_dispersion_abbe_number").x, 20.0f / 2.04f, 1e-5f);
+  EXPECT_EQ(warnings.count("KHR_materials_dispersion"), 0) << "read, not ignored";
+  EXPECT_EQ(loadMaterial(gem(0.0)).materials[0].record.model, modelId("glass")) << "0: no dispersion, the clear gem";
+  const gpu::MaterialRecord extreme = loadMaterial(gem(50.0)).materials[0].record;
+  EXPECT_FLOAT_EQ(getParam(extreme, "transmission_dispersion_abbe_number").x, 1.0f);
+  EXPECT_EQ(warnings.count("is used as openpbr's least Abbe number"), 1);
+  json thin = gem(0.5);
+  thin["extensions"].erase("KHR_materials_volume");
+  thin["extensions"]["KHR_materials_transmission"]["transmissionFactor"] = 0.5;
+  EXPECT_FLOAT_EQ(getParam(loadMaterial(thin).materials[0].record, "transmission_dispersion_scale").x, 0.0f);
+  EXPECT_EQ(warnings.count("without KHR_materials_volume's thickness the surface is thin"), 1);
+  const json opaque = {{"extensions", {{"KHR_materials_dispersion", {{"dispersion", 1.0}}}}}};
+  EXPECT_EQ(loadMaterial(opaque).materials[0].record.model, modelId("gltf_pbr")) << "nothing to disperse";
+  for (const json& bad : {json{{"dispersion", -0.1}}, json{{"dispersion", "high"}}}) {
+    const std::string error = materialError({{"name", "bad gem"}, {"extensions", {{"KHR_materials_dispersion", bad}}}});
+    EXPECT_NE(error.find("KHR_materials_dispersion"), std::string::npos) << error;
+  }
+}
+
 // The drafts' textures in their texts' channels (coat R weight, G roughness, sRGB colour; fuzz R weight, sRGB colour,
 // A roughness; diffuse roughness R) scale the parameters their factors set, and where a draft replaces a ratified
 // extension (coat over clear coat, fuzz over sheen) the replaced one's textures are reported and not read.

@@ -401,6 +401,7 @@ def reference_header(models):
         if is_two_sided(m):
             out.append(f"dvec3 {m['prefix']}Sample(const {s}& p, const dvec3& wo, const dvec3& u);")
             out.append(f"double {m['prefix']}Pdf(const {s}& p, const dvec3& wi, const dvec3& wo);")
+            out.append(f"dvec3 {m['prefix']}TransmissionEtas(const {s}& p);")
         elif m["lobes"] & LOBES["glossy"]:
             out.append(f"dvec3 {m['prefix']}SampleSpecular(const {s}& p, const dvec3& wo, const dvec2& u);")
             out.append(f"double {m['prefix']}PdfSpecular(const {s}& p, const dvec3& wi, const dvec3& wo);")
@@ -439,9 +440,8 @@ def reference_dispatch(models):
            lambda m: f"{m['prefix']}Sample({params(m)}, wo, u)", "std::nullopt", is_two_sided)
     switch("std::optional<double> pdfTwoSided(const Material& material, const dvec3& wi, const dvec3& wo)",
            lambda m: f"{m['prefix']}Pdf({params(m)}, wi, wo)", "std::nullopt", is_two_sided)
-    eta_name = lambda m: next(p["name"] for p in m["params"] if p["role"] == "eta" and not p["rgb"])
-    switch("std::optional<double> transmissionEta(const Material& material)",
-           lambda m: f"{params(m)}.{eta_name(m)}", "std::nullopt", is_two_sided)
+    switch("std::optional<dvec3> transmissionEtas(const Material& material)",
+           lambda m: f"{m['prefix']}TransmissionEtas({params(m)})", "std::nullopt", is_two_sided)
     switch("dvec3 mediumAbsorption(const Material& material)",
            lambda m: f"{m['prefix']}MediumAbsorption({params(m)})", "dvec3(0.0)", lambda m: bool(m["medium"]))
     switch("std::optional<SpecularLobe> specularLobe(const Material& material)",

@@ -88,6 +88,8 @@ dvec3 ggxDielectricSample(const GgxDielectricParams& p, const dvec3& wo, const d
   return wi.z * wo.z < 0.0 ? wi : dvec3(0.0);
 }
 
+dvec3 ggxDielectricTransmissionEtas(const GgxDielectricParams& p) { return dvec3(p.eta); }
+
 double ggxDielectricPdf(const GgxDielectricParams& p, const dvec3& wi, const dvec3& wo) {
   if (!(wi.z != 0.0 && wo.z != 0.0)) return 0.0;
   const dvec3 woUp(wo.x, wo.y, std::abs(wo.z));

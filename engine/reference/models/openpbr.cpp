@@ -166,6 +166,28 @@ Lobes fuzzOver(const OpenpbrParams& p, const Lobes& below, const dvec3& wi, cons
           passed * below.specular};
 }
 
+// The solid's GGX interface of index specular_ior (the translucent base, below), tinted by transmission_color on the
+// way in when there is no volume.
+GgxDielectricParams interfaceOf(const OpenpbrParams& p) {
+  const Alphas a = baseAlphas(p);
+  return {a.t, a.b, std::max(p.specular_ior, 1.001),
+          p.transmission_depth > 0.0 ? dvec3(1.0) : p.transmission_color};
+}
+// Dispersion (openpbr.glsl says how): the index at the Fraunhofer lines C, d and F for red, green and blue, by
+// KHR_materials_dispersion's Cauchy form with V = abbe_number / scale; the interface then refracts each channel by
+// its own index, sampled by a channel drawn uniformly, and the dielectric's Fresnel term takes it too.
+bool dispersive(const OpenpbrParams& p) { return p.transmission_dispersion_scale > 0.0; }
+GgxDielectricParams channelInterface(const OpenpbrParams& p, int channel) {
+  GgxDielectricParams q = interfaceOf(p);
+  if (!dispersive(p)) return q;
+  constexpr double kLambda[3] = {656.3, 587.6, 486.1};
+  const double V = std::max(p.transmission_dispersion_abbe_number, 1.0) / p.transmission_dispersion_scale;
+  q.eta = std::max(p.specular_ior + (p.specular_ior - 1.0) / V *
+                                        (523655.0 / (kLambda[channel] * kLambda[channel]) - 1.5168),
+                   1.001);
+  return q;
+}
+
 // The reflection off the outside: every layer, the glossy-diffuse part of albedo diffuseAlbedo (diffuseAlbedoOf).
 Lobes reflectionLobes(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo, const dvec3& diffuseAlbedo) {
   if (!aboveHorizon(wi, wo)) return {};
@@ -181,6 +203,11 @@ Lobes reflectionLobes(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo, 
   const double W = p.thin_film_weight;
   const double loss = dielectricReflectionLoss(wo.z, projectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
   dvec3 F = dvec3(fresnel(cosH, eps)), passed(loss);
+  for (int c = 0; dispersive(p) && c < 3; ++c) {  // each channel's Fresnel term at its own index, as its refraction's
+    OpenpbrParams channel = p;
+    channel.specular_ior = channelInterface(p, c).eta;
+    F[c] = fresnel(cosH, specularEps(channel));
+  }
   if (W > 0.0 && M < 1.0) {  // the dielectric's film (a pure metal has none to show)
     F = (1.0 - W) * F + W * filmOverDielectric(p, eps, cosH);
     const dvec3 eFilm = filmAlbedo(p, eps, alpha, wo, 1.0 - loss);
@@ -269,10 +296,25 @@ double reflectionPdf(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
 // dielectric refracts through the base's own GGX interface of index specular_ior, tinted by transmission_color on
 // the way in when there is no volume (transmission_depth 0).
 double transmissionShare(const OpenpbrParams& p) { return p.transmission_weight * (1.0 - p.base_metalness); }
-GgxDielectricParams interfaceOf(const OpenpbrParams& p) {
-  const Alphas a = baseAlphas(p);
-  return {a.t, a.b, std::max(p.specular_ior, 1.001),
-          p.transmission_depth > 0.0 ? dvec3(1.0) : p.transmission_color};
+dvec3 interfaceEval(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
+  if (!dispersive(p)) return ggxDielectricEval(interfaceOf(p), wi, wo).sum();
+  dvec3 f;
+  for (int c = 0; c < 3; ++c) f[c] = ggxDielectricEval(channelInterface(p, c), wi, wo).sum()[c];
+  return f;
+}
+double interfacePdf(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo) {
+  if (!dispersive(p)) return ggxDielectricPdf(interfaceOf(p), wi, wo);
+  double pdf = 0.0;
+  for (int c = 0; c < 3; ++c) pdf += ggxDielectricPdf(channelInterface(p, c), wi, wo);
+  return pdf / 3.0;
+}
+dvec3 interfaceSample(const OpenpbrParams& p, const dvec3& wo, dvec3 u) {
+  int channel = 1;
+  if (dispersive(p)) {
+    channel = std::min(static_cast<int>(3.0 * u.x), 2);
+    u.x = std::min(3.0 * u.x - channel, 1.0 - 1e-12);
+  }
+  return ggxDielectricSample(channelInterface(p, channel), wo, u);
 }
 constexpr double kInterfaceShare = 0.75;  // of the sampler's choices when wo is outside (openpbr.glsl)
 
@@ -335,7 +377,7 @@ Lobes openpbrEval(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) 
   const bool thin = thinWalled(p);
   if (T > 0.0 && !thin && !(wi.z > 0.0 && wo.z > 0.0)) {
     if (!finiteAndOffTheSurface(wi) || !finiteAndOffTheSurface(wo)) return {};
-    dvec3 f = T * ggxDielectricEval(interfaceOf(p), wi, wo).sum();
+    dvec3 f = T * interfaceEval(p, wi, wo);
     if (wi.z * wo.z < 0.0) f *= layersPassed(p, wi.z > 0.0 ? wi : wo);
     return {dvec3(0.0), f};
   }
@@ -366,7 +408,7 @@ dvec3 openpbrSample(const OpenpbrParams& p, const dvec3& wo, const dvec3& u) {
       if (!(wi.z > 0.0)) return dvec3(0.0);
       if (!(v < fresnel(std::clamp(glm::dot(w, m), 0.0, 1.0), specularEps(p)))) wi.z = -wi.z;
     } else {
-      wi = ggxDielectricSample(interfaceOf(p), w, dvec3(v, u.y, u.z));
+      wi = interfaceSample(p, w, dvec3(v, u.y, u.z));
     }
   } else {
     const double q = thinMirrorShare(p, T);
@@ -388,7 +430,7 @@ double openpbrPdf(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) 
   double interfaceDensity = 0.0, share = 0.0;
   if (T > 0.0 && !thin) {
     if (!finiteAndOffTheSurface(wi) || !finiteAndOffTheSurface(wo)) return 0.0;
-    interfaceDensity = ggxDielectricPdf(interfaceOf(p), wi, wo);
+    interfaceDensity = interfacePdf(p, wi, wo);
     share = wo.z > 0.0 ? kInterfaceShare * T : 1.0;
   } else if (wo.z < 0.0) {
     wi.z = -wi.z;
@@ -405,6 +447,12 @@ double openpbrPdf(const OpenpbrParams& p, const dvec3& wiIn, const dvec3& woIn) 
   if (through && !(q > 0.0)) return share * interfaceDensity;
   const double mixture = reflectionPdf(p, dvec3(wi.x, wi.y, std::abs(wi.z)), wo);
   return share * interfaceDensity + (1.0 - share) * (through ? q : 1.0 - q) * mixture;
+}
+
+// Through a thin wall light keeps its medium: the ratio of indices across it is 1.
+dvec3 openpbrTransmissionEtas(const OpenpbrParams& p) {
+  if (thinWalled(p)) return dvec3(1.0);
+  return {channelInterface(p, 0).eta, channelInterface(p, 1).eta, channelInterface(p, 2).eta};
 }
 
 dvec3 openpbrMediumAbsorption(const OpenpbrParams& p) {
