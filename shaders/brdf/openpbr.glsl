@@ -48,6 +48,9 @@
 // | subsurface_color              | [0, 1]   | 0.8     | rgb               | the albedo of that scattering             |
 // | subsurface_scatter_anisotropy | [-1, 1]  | 0       |                   | on a thin wall, the share through: (1 + g) / 2 |
 // | geometry_thin_walled          | [0, 1]   | 0       |                   | 1: a thin shell (leaf, paper, bubble); 0: a solid |
+// | geometry_coat_normal_x        | [-1, 1]  | 0       |                   | the coat's own normal: its x in the base's shading frame (a coat normal map sets it) |
+// | geometry_coat_normal_y        | [-1, 1]  | 0       |                   | its y; z = sqrt(1 - x^2 - y^2)            |
+// | geometry_coat_tangent_angle   | [-3.1416, 3.1416] | 0 |                | turns the coat's tangent (its anisotropy's direction) from the base's, radians |
 // | emission_luminance            | [0, 1000000] | 0   | emission_luminance | emitted luminance in nits (raylab's radiance unit) |
 // | emission_color                | [0, 1]   | 1       | rgb emission_color | the emission's colour                    |
 // | geometry_opacity              | [0, 1]   | 1       | opacity           | coverage: 0 a hole, 1 solid; between, the chance a ray meets the surface |
@@ -90,6 +93,31 @@
 #include "brdf/ggx.glsl"
 #include "brdf/sampling.glsl"
 #include "brdf/thin_film.glsl"
+
+// The coat's own shading frame (OpenPBR's geometry_coat_normal and geometry_coat_tangent; glTF's coat normal map and
+// coat anisotropy rotation) in the base's: its normal (x, y, sqrt(1 - x^2 - y^2)), at most 88 degrees from the base's,
+// and its tangent, the base's turned by the angle and made orthogonal to that normal. The coat's lobe, its albedo and
+// its path lengths are taken in it, the base below in the base's frame; an orthonormal change of frame leaves the
+// densities as they are. The defaults are the base's frame itself.
+struct OpenpbrCoatFrame {
+  vec3 t;
+  vec3 b;
+  vec3 n;
+};
+OpenpbrCoatFrame openpbrCoatFrame(float normalX, float normalY, float tangentAngle) {
+  OpenpbrCoatFrame f = OpenpbrCoatFrame(vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0));
+  if (normalX == 0.0 && normalY == 0.0 && tangentAngle == 0.0) return f;
+  vec2 slope = vec2(normalX, normalY);
+  const float sine2 = dot(slope, slope), kMaxSine2 = 0.9988;  // sin^2 of 88 degrees
+  if (!(sine2 <= kMaxSine2)) slope *= sqrt(kMaxSine2 / max(sine2, kMaxSine2));  // NaN too: the clamp's length
+  f.n = vec3(slope, sqrt(1.0 - dot(slope, slope)));
+  const vec3 t = vec3(cos(tangentAngle), sin(tangentAngle), 0.0);
+  f.t = normalize(t - f.n * dot(f.n, t));  // t is horizontal and n at least 2 degrees above: never parallel
+  f.b = cross(f.n, f.t);
+  return f;
+}
+vec3 openpbrToCoat(OpenpbrCoatFrame f, vec3 w) { return vec3(dot(w, f.t), dot(w, f.b), dot(w, f.n)); }
+vec3 openpbrFromCoat(OpenpbrCoatFrame f, vec3 w) { return w.x * f.t + w.y * f.b + w.z * f.n; }
 
 // The GGX widths (alpha_t, alpha_b) of a roughness and an anisotropy (OpenPBR, "Microfacet model").
 vec2 openpbrAlphas(float roughness, float anisotropy) {
@@ -250,13 +278,23 @@ vec3 openpbrLobeProbabilities(float baseWeight, vec3 baseColor, float metalness,
 }
 
 // The coat over the substrate: its reflection, the absorption along the two refracted paths through it, and the
-// darkening by the light it reflects back onto the base.
-vec3 openpbrCoatOver(vec3 substrate, vec3 wi, vec3 wo, vec3 h, float C, vec3 coatColor, float coatRoughness,
-                     float coatAnisotropy, float coatIor, float coatDarkening, float alphaTable, float eps, vec3 rho,
-                     vec3 diffuseAlbedo, vec3 specularColor, float specularWeight, float specularRoughness, float M) {
+// darkening by the light it reflects back onto the base, all in the coat's frame (a direction below the coat's
+// horizon and above the base's meets the coat at grazing: it reflects nothing there). wiBase and woBase are above
+// the base's horizon (lifted).
+vec3 openpbrCoatOver(vec3 substrate, vec3 wiBase, vec3 woBase, float C, vec3 coatColor, float coatRoughness,
+                     float coatAnisotropy, float coatIor, float coatDarkening, OpenpbrCoatFrame frame,
+                     float alphaTable, float eps, vec3 rho, vec3 diffuseAlbedo, vec3 specularColor,
+                     float specularWeight, float specularRoughness, float M) {
+  const vec3 wiCoat = openpbrToCoat(frame, wiBase), woCoat = openpbrToCoat(frame, woBase);
+  const bool above = wiCoat.z > 0.0 && woCoat.z > 0.0;
+  const vec3 wi = liftOffHorizon(wiCoat), wo = liftOffHorizon(woCoat);
+  precise const vec3 h = wi + wo;
   const vec2 alphaCoat = openpbrAlphas(coatRoughness, coatAnisotropy);
   const float epsCoat = (coatIor - 1.0) / (coatIor + 1.0);
-  const vec3 coat = vec3(openpbrGgxReflection(wi, wo, h, alphaCoat, epsCoat));
+  // f cos is the coat's own (its f times the cosine to its normal, as a surface of that normal reflects), so that
+  // the coat never returns more than its albedo E_coat: the integrator multiplies f by the base's cosine.
+  const vec3 coat = above ? vec3(openpbrGgxReflection(wi, wo, h, alphaCoat, epsCoat) * (wi.z / wiBase.z))
+                          : vec3(0.0);
   const float coatPassed = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alphaCoat, wo), epsCoat);  // 1 - E_coat
   // Absorption along the two paths through the coat, refracted: cos_t^2 = 1 - (1 - cos^2) / coat_ior^2.
   const float inv2 = 1.0 / (coatIor * coatIor);
@@ -294,7 +332,7 @@ vec3 openpbrReflection(float baseWeight, vec3 baseColor, float metalness, float 
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
                  float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float dispersionScale, float abbeNumber,
-                 vec3 diffuseAlbedo, vec3 wi, vec3 wo) {
+                 OpenpbrCoatFrame coatFrame, vec3 diffuseAlbedo, vec3 wi, vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return vec3(0.0);  // one-sided; also false for NaN directions
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
@@ -364,9 +402,9 @@ vec3 openpbrReflection(float baseWeight, vec3 baseColor, float metalness, float 
   const vec3 metal = min(specularWeight * metalF, vec3(1.0)) * openpbrMicrofacet(wi, wo, h, alpha) +
                      openpbrMetalMultipleScattering(rho, b, specularWeight, alpha, wi, wo);
   const vec3 substrate = mix(dielectric, metal, M);
-  return openpbrFuzzOver(C > 0.0 ? openpbrCoatOver(substrate, wi, wo, h, C, coatColor, coatRoughness, coatAnisotropy,
-                                                   coatIor, coatDarkening, alphaTable, eps, rho, diffuseAlbedo,
-                                                   specularColor, specularWeight, specularRoughness, M)
+  return openpbrFuzzOver(C > 0.0 ? openpbrCoatOver(substrate, wi, wo, C, coatColor, coatRoughness, coatAnisotropy,
+                                                   coatIor, coatDarkening, coatFrame, alphaTable, eps, rho,
+                                                   diffuseAlbedo, specularColor, specularWeight, specularRoughness, M)
                                  : substrate,
                          wi, wo, fuzzWeight, fuzzColor, fuzzRoughness);
 }
@@ -376,7 +414,8 @@ float openpbrReflectionPdf(float baseWeight, vec3 baseColor, float metalness, fl
                  vec3 specularColor, float specularRoughness, float specularAnisotropy, float specularIor,
                  float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy, float coatIor,
                  float coatDarkening, float thinFilmWeight, float thinFilmThickness, float thinFilmIor,
-                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, vec3 wi, vec3 wo) {
+                 float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, OpenpbrCoatFrame coatFrame, vec3 wi,
+                 vec3 wo) {
   if (!(wi.z > 0.0 && wo.z > 0.0)) return 0.0;
   wi = liftOffHorizon(wi);
   wo = liftOffHorizon(wo);
@@ -389,7 +428,9 @@ float openpbrReflectionPdf(float baseWeight, vec3 baseColor, float metalness, fl
   float specular = (1.0 - p.y - p.z) * ggxReflectionPdf(h, wo, alpha.x, alpha.y);
   if (p.y > 0.0) {
     const vec2 alphaCoat = openpbrAlphas(coatRoughness, coatAnisotropy);
-    specular += p.y * ggxReflectionPdf(h, wo, alphaCoat.x, alphaCoat.y);
+    // In the coat's frame, from wo lifted off the coat's horizon as its sampler does.
+    specular += p.y * ggxReflectionPdf(openpbrToCoat(coatFrame, h), liftOffHorizon(openpbrToCoat(coatFrame, wo)),
+                                       alphaCoat.x, alphaCoat.y);
   }
   if (p.z > 0.0) specular += p.z * fuzzDensity(wi, wo, fuzzLobe(wo.z, fuzzRoughness));
   return (1.0 - p.x) * cosineHemispherePdf(wi) + p.x * specular;
@@ -399,7 +440,7 @@ float openpbrReflectionPdf(float baseWeight, vec3 baseColor, float metalness, fl
 vec3 openpbrReflectionDirection(float baseWeight, vec3 baseColor, float metalness, float specularWeight,
                                 float specularRoughness, float specularAnisotropy, float specularIor, float coatWeight,
                                 float coatRoughness, float coatAnisotropy, float coatIor, float fuzzWeight,
-                                vec3 fuzzColor, float fuzzRoughness, vec3 wo, vec3 u) {
+                                vec3 fuzzColor, float fuzzRoughness, OpenpbrCoatFrame coatFrame, vec3 wo, vec3 u) {
   if (!(wo.z > 0.0)) return vec3(0.0);
   coatWeight = openpbrCoat(coatWeight);  // as in openpbrReflection
   fuzzWeight = featureEnabled(kOpenpbrFeatureFuzz) ? fuzzWeight : 0.0;
@@ -410,11 +451,15 @@ vec3 openpbrReflectionDirection(float baseWeight, vec3 baseColor, float metalnes
     const vec3 w = liftOffHorizon(wo);  // as openpbrReflectionPdf reads the lobe
     return sampleFuzz(w, fuzzLobe(w.z, fuzzRoughness), vec2(min((u.y - p.y) / p.z, 0.99999994), u.z));
   }
+  if (u.x < p.x && u.y < p.y) {  // the coat's lobe, in its frame (openpbrReflectionPdf reads it there)
+    const vec2 alpha = openpbrAlphas(coatRoughness, coatAnisotropy);
+    const vec3 w = liftOffHorizon(openpbrToCoat(coatFrame, liftOffHorizon(wo)));
+    return openpbrFromCoat(coatFrame,
+                           reflectAbout(w, sampleGgxVisibleNormal(w, alpha.x, alpha.y, vec2(min(u.y / p.y, 0.99999994), u.z))));
+  }
   if (u.x < p.x) {
-    const bool coat = u.y < p.y;
-    const vec2 alpha = coat ? openpbrAlphas(coatRoughness, coatAnisotropy)
-                            : openpbrBaseAlphas(specularRoughness, specularAnisotropy, coatWeight, coatRoughness);
-    const float v = coat ? u.y / p.y : (u.y - p.y - p.z) / (1.0 - p.y - p.z);
+    const vec2 alpha = openpbrBaseAlphas(specularRoughness, specularAnisotropy, coatWeight, coatRoughness);
+    const float v = (u.y - p.y - p.z) / (1.0 - p.y - p.z);
     return reflectAbout(wo, sampleGgxVisibleNormal(liftOffHorizon(wo), alpha.x, alpha.y, vec2(min(v, 0.99999994), u.z)));
   }
   return sampleCosineHemisphere(u.yz);
@@ -487,11 +532,12 @@ float openpbrThinMirrorShare(float metalness, float subsurfaceWeight, float T, f
 // What the coat and the fuzz pass of light crossing them along w (outside): the coat's 1 - E_coat and its absorption
 // along one refracted crossing (coat_color is the transmittance there and back at normal incidence), the fuzz's
 // 1 - F E_fuzz.
-vec3 openpbrLayersPassed(vec3 w, float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy,
-                         float coatIor, float fuzzWeight, float fuzzRoughness) {
+vec3 openpbrLayersPassed(vec3 wBase, float coatWeight, vec3 coatColor, float coatRoughness, float coatAnisotropy,
+                         float coatIor, OpenpbrCoatFrame coatFrame, float fuzzWeight, float fuzzRoughness) {
   vec3 passed = vec3(1.0);
   const float C = openpbrCoat(coatWeight);
   if (C > 0.0) {
+    const vec3 w = liftOffHorizon(openpbrToCoat(coatFrame, wBase));  // the coat's terms in its frame
     const float epsCoat = (coatIor - 1.0) / (coatIor + 1.0);
     const float loss = openpbrDielectricLoss(w.z, openpbrProjectedAlpha(openpbrAlphas(coatRoughness, coatAnisotropy), w),
                                              epsCoat);
@@ -499,7 +545,7 @@ vec3 openpbrLayersPassed(vec3 w, float coatWeight, vec3 coatColor, float coatRou
     passed *= mix(vec3(1.0), pow(max(coatColor, vec3(0.0)), vec3(0.5 / cosT)) * loss, C);
   }
   const float F = featureEnabled(kOpenpbrFeatureFuzz) ? fuzzWeight : 0.0;
-  if (F > 0.0) passed *= 1.0 - F * fuzzLobe(w.z, fuzzRoughness).x;
+  if (F > 0.0) passed *= 1.0 - F * fuzzLobe(wBase.z, fuzzRoughness).x;
   return passed;
 }
 
@@ -521,7 +567,7 @@ vec3 openpbrThinTransmission(float metalness, float specularWeight, float specul
                              float specularIor, float coatWeight, vec3 coatColor, float coatRoughness,
                              float coatAnisotropy, float coatIor, float fuzzWeight, float fuzzRoughness, float T,
                              vec3 transmissionColor, float subsurfaceWeight, vec3 subsurfaceColor, float through,
-                             vec3 wi, vec3 wo) {
+                             OpenpbrCoatFrame coatFrame, vec3 wi, vec3 wo) {
   const float C = openpbrCoat(coatWeight);
   wo = liftOffHorizon(wo);
   const vec3 mirrored = liftOffHorizon(vec3(wi.xy, -wi.z));
@@ -533,7 +579,7 @@ vec3 openpbrThinTransmission(float metalness, float specularWeight, float specul
   const float passed = openpbrDielectricLoss(wo.z, openpbrProjectedAlpha(alpha, wo), eps);  // 1 - E_spec(wo)
   const vec3 diffuse = (1.0 - T) * (1.0 - metalness) * subsurfaceWeight * through * subsurfaceColor * passed * kInvPi;
   return (straight + diffuse) * openpbrLayersPassed(wo, coatWeight, coatColor, coatRoughness, coatAnisotropy, coatIor,
-                                                    fuzzWeight, fuzzRoughness);
+                                                    coatFrame, fuzzWeight, fuzzRoughness);
 }
 
 // The density of the thin wall's interface sampler: a visible normal of the base's GGX, reflecting with probability
@@ -558,10 +604,12 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
                  float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
                  vec3 transmissionColor, float transmissionDepth, float dispersionScale, float abbeNumber,
                  float subsurfaceWeight, vec3 subsurfaceColor,
-                 float subsurfaceAnisotropy, float thinWalled, float emissionLuminance, vec3 emissionColor,
+                 float subsurfaceAnisotropy, float thinWalled, float coatNormalX, float coatNormalY,
+                 float coatTangentAngle, float emissionLuminance, vec3 emissionColor,
                  float geometryOpacity, vec3 wi, vec3 wo) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
   const bool thin = openpbrThinWalled(thinWalled);
+  const OpenpbrCoatFrame coatFrame = openpbrCoatFrame(coatNormalX, coatNormalY, coatTangentAngle);
   if (T > 0.0 && !thin && !(wi.z > 0.0 && wo.z > 0.0)) {
     if (!(abs(wi.z) > 0.0 && abs(wo.z) > 0.0)) return vec3(0.0);  // on the surface, or NaN
     const float C = openpbrCoat(coatWeight);
@@ -571,7 +619,7 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
                                       openpbrDispersive(dispersionScale), tint, wi, wo);
     if (wi.z * wo.z < 0.0) {
       f *= openpbrLayersPassed(liftOffHorizon(wi.z > 0.0 ? wi : wo), coatWeight, coatColor, coatRoughness,
-                               coatAnisotropy, coatIor, fuzzWeight, fuzzRoughness);
+                               coatAnisotropy, coatIor, coatFrame, fuzzWeight, fuzzRoughness);
     }
     return f;
   }
@@ -583,12 +631,12 @@ vec3 openpbrEval(float baseWeight, vec3 baseColor, float metalness, float diffus
     return openpbrThinTransmission(metalness, specularWeight, specularRoughness, specularAnisotropy, specularIor,
                                    coatWeight, coatColor, coatRoughness, coatAnisotropy, coatIor, fuzzWeight,
                                    fuzzRoughness, T, transmissionColor, subsurfaceWeight, subsurfaceColor,
-                                   openpbrThinThrough(subsurfaceAnisotropy), wi, wo);
+                                   openpbrThinThrough(subsurfaceAnisotropy), coatFrame, wi, wo);
   }
   return openpbrReflection(baseWeight, baseColor, metalness, diffuseRoughness, specularWeight, specularColor,
                            specularRoughness, specularAnisotropy, specularIor, coatWeight, coatColor, coatRoughness,
                            coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
-                           fuzzWeight, fuzzColor, fuzzRoughness, dispersionScale, abbeNumber,
+                           fuzzWeight, fuzzColor, fuzzRoughness, dispersionScale, abbeNumber, coatFrame,
                            openpbrDiffuseAlbedo(baseWeight, baseColor, subsurfaceWeight, subsurfaceColor, T,
                                                 thin ? openpbrThinThrough(subsurfaceAnisotropy) : 0.0),
                            wi, wo);
@@ -601,7 +649,8 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
                  float fuzzWeight, vec3 fuzzColor, float fuzzRoughness, float transmissionWeight,
                  vec3 transmissionColor, float transmissionDepth, float dispersionScale, float abbeNumber,
                  float subsurfaceWeight, vec3 subsurfaceColor,
-                 float subsurfaceAnisotropy, float thinWalled, float emissionLuminance, vec3 emissionColor,
+                 float subsurfaceAnisotropy, float thinWalled, float coatNormalX, float coatNormalY,
+                 float coatTangentAngle, float emissionLuminance, vec3 emissionColor,
                  float geometryOpacity, vec3 wi, vec3 wo) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
   const bool thin = openpbrThinWalled(thinWalled);
@@ -633,7 +682,9 @@ float openpbrPdf(float baseWeight, vec3 baseColor, float metalness, float diffus
                                              specularColor, specularRoughness, specularAnisotropy, specularIor,
                                              coatWeight, coatColor, coatRoughness, coatAnisotropy, coatIor,
                                              coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
-                                             fuzzWeight, fuzzColor, fuzzRoughness, vec3(wi.xy, abs(wi.z)), wo);
+                                             fuzzWeight, fuzzColor, fuzzRoughness,
+                                             openpbrCoatFrame(coatNormalX, coatNormalY, coatTangentAngle),
+                                             vec3(wi.xy, abs(wi.z)), wo);
   return share * interfaceDensity + (1.0 - share) * (through ? q : 1.0 - q) * mixture;
 }
 
@@ -645,7 +696,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                          float fuzzRoughness, float transmissionWeight, vec3 transmissionColor,
                          float transmissionDepth, float dispersionScale, float abbeNumber,
                          float subsurfaceWeight, vec3 subsurfaceColor,
-                         float subsurfaceAnisotropy, float thinWalled,
+                         float subsurfaceAnisotropy, float thinWalled, float coatNormalX, float coatNormalY,
+                         float coatTangentAngle,
                          float emissionLuminance, vec3 emissionColor, float geometryOpacity,
                          vec3 wo, vec3 u) {
   const float T = openpbrTransmissionShare(transmissionWeight, metalness);
@@ -677,7 +729,9 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
     v = mirror ? v / q : (v - q) / (1.0 - q);
     wi = openpbrReflectionDirection(baseWeight, baseColor, metalness, specularWeight, specularRoughness,
                                     specularAnisotropy, specularIor, coatWeight, coatRoughness, coatAnisotropy, coatIor,
-                                    fuzzWeight, fuzzColor, fuzzRoughness, w, vec3(min(v, 0.99999994), u.yz));
+                                    fuzzWeight, fuzzColor, fuzzRoughness,
+                                    openpbrCoatFrame(coatNormalX, coatNormalY, coatTangentAngle), w,
+                                    vec3(min(v, 0.99999994), u.yz));
     if (!(wi.z > 0.0)) return noSample();
     if (mirror) wi.z = -wi.z;
   }
@@ -688,7 +742,7 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                                coatAnisotropy, coatIor, coatDarkening, thinFilmWeight, thinFilmThickness, thinFilmIor,
                                fuzzWeight, fuzzColor, fuzzRoughness, transmissionWeight, transmissionColor,
                                transmissionDepth, dispersionScale, abbeNumber, subsurfaceWeight, subsurfaceColor,
-                               subsurfaceAnisotropy, thinWalled,
+                               subsurfaceAnisotropy, thinWalled, coatNormalX, coatNormalY, coatTangentAngle,
                                emissionLuminance, emissionColor, geometryOpacity, wi, wo);
   if (!(pdf > 0.0)) return noSample();
   return BsdfSample(wi,
@@ -698,7 +752,8 @@ BsdfSample openpbrSample(float baseWeight, vec3 baseColor, float metalness, floa
                                 thinFilmThickness, thinFilmIor, fuzzWeight, fuzzColor, fuzzRoughness,
                                 transmissionWeight, transmissionColor, transmissionDepth, dispersionScale,
                                 abbeNumber, subsurfaceWeight,
-                                subsurfaceColor, subsurfaceAnisotropy, thinWalled, emissionLuminance, emissionColor,
+                                subsurfaceColor, subsurfaceAnisotropy, thinWalled, coatNormalX, coatNormalY,
+                                coatTangentAngle, emissionLuminance, emissionColor,
                                 geometryOpacity, wi, wo),
                     pdf);
 }

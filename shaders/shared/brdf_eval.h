@@ -19,7 +19,7 @@ struct BrdfEvalCase {
   vec3 n;
   vec3 t;  // may be zero or parallel to n: any tangent is used then
 };
-RL_CHECK_SIZE(BrdfEvalCase, 272);
+RL_CHECK_SIZE(BrdfEvalCase, 288);
 
 // What brdf_eval.comp computes for one case: f for BRDF models, the glass quantities for glass.
 struct BrdfEvalValue {
@@ -40,7 +40,7 @@ struct BrdfSampleParams {
   vec3 wo;  // local shading frame, unit length
   uint count;
 };
-RL_CHECK_SIZE(BrdfSampleParams, 240);
+RL_CHECK_SIZE(BrdfSampleParams, 256);
 
 // One bsdfSample draw, with bsdfEval and bsdfPdf evaluated again at its direction for the consistency
 // test. pdf 0: the sample failed.

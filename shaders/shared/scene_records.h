@@ -55,7 +55,7 @@ RL_CHECK_SIZE(SphereRecord, 20);
 
 // The parameters of a material's model, in the order of its GLSL table (shaders/brdf/<model>.glsl), an RGB
 // parameter taking three floats. The model registry assigns each parameter its slot (docs/extending.md).
-RL_CONST uint kMaxMaterialParams = 48;
+RL_CONST uint kMaxMaterialParams = 52;  // at most 52: BrdfSampleParams (a MaterialRecord in it) is a 256-byte push constant
 RL_CONST uint kNoParam = 0xFFFFFFFFu;
 
 struct MaterialRecord {
@@ -69,7 +69,7 @@ struct MaterialRecord {
                           // (16-23) and specular_tint's first (24-31) by KHR_materials_specular's
   float params[kMaxMaterialParams];
 };
-RL_CHECK_SIZE(MaterialRecord, 224);
+RL_CHECK_SIZE(MaterialRecord, 240);
 RL_CONST uint kNoTextureParam = 0xFFu;
 
 // TextureRecord.wrap: bits 0-1 for s (u), bits 2-3 for t (v), as glTF samplers define them.

@@ -90,6 +90,11 @@ std::vector<SamplingCase> samplingCases() {
       // reflection's specular lobe still sampled.
       {"openpbr", {{"base_color", 0.5f}, {"specular_roughness", 0.3f}, {"subsurface_weight", 1.0f},
                    {"subsurface_color", 0.8f}, {"geometry_thin_walled", 1.0f}, {"subsurface_scatter_anisotropy", 1.0f}}},
+      // A coat of its own frame (a coat normal map's tilt, a turned anisotropy) over a glossy base: the coat's lobe
+      // sampled in its frame.
+      {"openpbr", {{"base_color", 0.5f}, {"specular_roughness", 0.5f}, {"coat_weight", 1.0f}, {"coat_roughness", 0.2f},
+                   {"coat_roughness_anisotropy", 0.6f}, {"geometry_coat_normal_x", 0.4f},
+                   {"geometry_coat_normal_y", -0.2f}, {"geometry_coat_tangent_angle", 1.0f}}},
       // A dispersive solid, its spread exaggerated (V = 4) so that the channels' lobes part: a channel drawn per
       // sample, the density the channels' mean.
       {"openpbr", {{"specular_roughness", 0.3f}, {"transmission_weight", 1.0f}, {"transmission_dispersion_scale", 1.0f},

@@ -16,7 +16,7 @@ import os
 import re
 import sys
 
-MAX_PARAM_FLOATS = 48  # gpu::kMaxMaterialParams (shaders/shared/scene_records.h)
+MAX_PARAM_FLOATS = 52  # gpu::kMaxMaterialParams (shaders/shared/scene_records.h)
 LOBES = {"reflection": 1, "transmission": 2, "diffuse": 4, "glossy": 8, "specular": 16}
 ROLES = {"diffuse", "specular", "eta", "transmittance", "slope", "slope_x", "slope_y", "exponent", "mirror_exponent",
          "exponent_x", "exponent_y", "lobe_x", "lobe_y", "file", "network", "roughness", "metallic", "specular_weight",

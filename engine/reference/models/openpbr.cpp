@@ -35,6 +35,30 @@ double baseRoughness(const OpenpbrParams& p) {
   const double r = p.specular_roughness, c = p.coat_roughness;
   return (1.0 - p.coat_weight) * r + p.coat_weight * std::pow(std::min(1.0, std::pow(r, 4) + 2.0 * std::pow(c, 4)), 0.25);
 }
+// The coat's own frame in the base's (openpbr.glsl, openpbrCoatFrame): normal (x, y, sqrt(1 - x^2 - y^2)) at most 88
+// degrees from the base's, tangent the base's turned by the angle and made orthogonal to it. Directions below the
+// coat's horizon are lifted to 1e-15 above it, as the device's one-sided lobes lift theirs.
+struct CoatFrame {
+  dvec3 t{1.0, 0.0, 0.0}, b{0.0, 1.0, 0.0}, n{0.0, 0.0, 1.0};
+  dvec3 to(const dvec3& w) const { return {glm::dot(w, t), glm::dot(w, b), glm::dot(w, n)}; }
+  dvec3 from(const dvec3& w) const { return w.x * t + w.y * b + w.z * n; }
+};
+CoatFrame coatFrameOf(const OpenpbrParams& p) {
+  CoatFrame f;
+  dvec2 slope(p.geometry_coat_normal_x, p.geometry_coat_normal_y);
+  constexpr double kMaxSine2 = 0.9988;
+  if (glm::dot(slope, slope) > kMaxSine2) slope *= std::sqrt(kMaxSine2 / glm::dot(slope, slope));
+  f.n = dvec3(slope, std::sqrt(1.0 - glm::dot(slope, slope)));
+  const dvec3 t(std::cos(p.geometry_coat_tangent_angle), std::sin(p.geometry_coat_tangent_angle), 0.0);
+  f.t = glm::normalize(t - f.n * glm::dot(f.n, t));
+  f.b = glm::cross(f.n, f.t);
+  return f;
+}
+dvec3 liftedInCoat(const CoatFrame& f, const dvec3& w) {
+  const dvec3 c = f.to(w);
+  return {c.x, c.y, std::max(c.z, 1e-15)};
+}
+
 Alphas baseAlphas(const OpenpbrParams& p) { return alphasOf(baseRoughness(p), p.specular_roughness_anisotropy); }
 Alphas coatAlphas(const OpenpbrParams& p) { return alphasOf(p.coat_roughness, p.coat_roughness_anisotropy); }
 
@@ -225,13 +249,21 @@ Lobes reflectionLobes(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo, 
   Lobes substrate{(1.0 - M) * diffuse, (1.0 - M) * specular + M * metal};
   if (!(C > 0.0)) return fuzzOver(p, substrate, wi, wo);
 
-  // The coat: its reflection, and what it passes to the base.
+  // The coat: its reflection, and what it passes to the base, in its own frame (nothing reflected where a
+  // direction is below its horizon).
+  const CoatFrame frame = coatFrameOf(p);
+  const dvec3 wiCoat = liftedInCoat(frame, wi), woCoat = liftedInCoat(frame, wo);
+  const bool above = frame.to(wi).z > 0.0 && frame.to(wo).z > 0.0;
   const Alphas alphaCoat = coatAlphas(p);
   const double epsCoat = coatEps(p);
-  const double coat = fresnel(cosH, epsCoat) * microfacet(wi, wo, alphaCoat);
-  const double coatPassed = dielectricReflectionLoss(wo.z, projectedAlpha(alphaCoat, wo), epsCoat);  // 1 - E_coat(wo)
+  // f cos is the coat's own (times the cosine to its normal, divided by the base's the integrator applies): the coat
+  // returns at most its albedo E_coat.
+  const double coat = above ? fresnel(cosineToHalfVector(woCoat, wiCoat + woCoat), epsCoat) *
+                                  microfacet(wiCoat, woCoat, alphaCoat) * (wiCoat.z / wi.z)
+                            : 0.0;
+  const double coatPassed = dielectricReflectionLoss(woCoat.z, projectedAlpha(alphaCoat, woCoat), epsCoat);  // 1 - E_coat(wo)
   const auto refractedCosine = [&p](double c) { return std::sqrt(1.0 - (1.0 - c * c) / (p.coat_ior * p.coat_ior)); };
-  const double pathLength = 0.5 * (1.0 / refractedCosine(wi.z) + 1.0 / refractedCosine(wo.z));
+  const double pathLength = 0.5 * (1.0 / refractedCosine(wiCoat.z) + 1.0 / refractedCosine(woCoat.z));
   const dvec3 T(std::pow(p.coat_color.x, pathLength), std::pow(p.coat_color.y, pathLength),
                 std::pow(p.coat_color.z, pathLength));
   dvec3 darkening(1.0);
@@ -242,7 +274,7 @@ Lobes reflectionLobes(const OpenpbrParams& p, const dvec3& wi, const dvec3& wo, 
     const dvec3 eBase = (1.0 - M) * (p.specular_color * eSpecNormal + (1.0 - eSpecNormal) * diffuseAlbedo) +
                         M * glm::min(p.specular_weight * rho, dvec3(1.0));
     const double kRough = 1.0 - (1.0 - averageFresnel(epsCoat)) / (p.coat_ior * p.coat_ior);  // the table's E_F
-    const double kSmooth = fresnel(wo.z, epsCoat);
+    const double kSmooth = fresnel(woCoat.z, epsCoat);
     const double roughnessEstimate = (1.0 - M) * ((1.0 - eps * eps) + eps * eps * p.specular_roughness) + M * p.specular_roughness;
     const double K = (1.0 - roughnessEstimate) * kSmooth + roughnessEstimate * kRough;
     for (int c = 0; c < 3; ++c) {
@@ -264,9 +296,14 @@ dvec3 sampleReflectionSpecular(const OpenpbrParams& p, const dvec3& wo, const dv
   if (u.x >= q && u.x < q + z) {
     return sampleFuzz(wo, fuzzLobe(wo.z, p.fuzz_roughness), dvec2(std::min((u.x - q) / z, 1.0 - 1e-12), u.y));
   }
-  const bool coat = u.x < q;
-  const Alphas a = coat ? coatAlphas(p) : baseAlphas(p);
-  const double v = coat ? u.x / q : (u.x - q - z) / (1.0 - q - z);
+  if (u.x < q) {  // the coat's lobe, in its frame
+    const CoatFrame frame = coatFrameOf(p);
+    const dvec3 w = liftedInCoat(frame, wo);
+    const Alphas a = coatAlphas(p);
+    return frame.from(reflectAbout(w, sampleGgxVisibleNormal(w, a.t, a.b, dvec2(std::min(u.x / q, 1.0 - 1e-12), u.y))));
+  }
+  const Alphas a = baseAlphas(p);
+  const double v = (u.x - q - z) / (1.0 - q - z);
   return reflectAbout(wo, sampleGgxVisibleNormal(wo, a.t, a.b, dvec2(std::min(v, 1.0 - 1e-12), u.y)));
 }
 
@@ -274,8 +311,9 @@ double reflectionSpecularPdf(const OpenpbrParams& p, const dvec3& wi, const dvec
   const dvec3 probabilities = lobeProbabilities(p);
   const double q = probabilities.y, z = probabilities.z;
   const Alphas base = baseAlphas(p), coat = coatAlphas(p);
+  const CoatFrame frame = coatFrameOf(p);
   double density = (1.0 - q - z) * ggxReflectionPdf(wi + wo, wo, base.t, base.b) +
-                   q * ggxReflectionPdf(wi + wo, wo, coat.t, coat.b);
+                   q * ggxReflectionPdf(frame.to(wi + wo), liftedInCoat(frame, wo), coat.t, coat.b);
   if (z > 0.0) density += z * fuzzDensity(wi, wo, fuzzLobe(wo.z, p.fuzz_roughness));
   return density;
 }
@@ -335,9 +373,10 @@ double thinMirrorShare(const OpenpbrParams& p, double T) {
 }
 
 // What the coat and the fuzz pass of light crossing them along the outside direction w.
-dvec3 layersPassed(const OpenpbrParams& p, const dvec3& w) {
+dvec3 layersPassed(const OpenpbrParams& p, const dvec3& wBase) {
   dvec3 passed(1.0);
   if (p.coat_weight > 0.0) {
+    const dvec3 w = liftedInCoat(coatFrameOf(p), wBase);  // the coat's terms in its frame
     const double loss = dielectricReflectionLoss(w.z, projectedAlpha(coatAlphas(p), w), coatEps(p));
     const double cosT = std::sqrt(1.0 - (1.0 - w.z * w.z) / (p.coat_ior * p.coat_ior));
     for (int c = 0; c < 3; ++c) {
@@ -345,7 +384,7 @@ dvec3 layersPassed(const OpenpbrParams& p, const dvec3& w) {
       passed[c] *= 1.0 - p.coat_weight + p.coat_weight * crossing;
     }
   }
-  if (p.fuzz_weight > 0.0) passed *= 1.0 - p.fuzz_weight * fuzzLobe(w.z, p.fuzz_roughness).albedo;
+  if (p.fuzz_weight > 0.0) passed *= 1.0 - p.fuzz_weight * fuzzLobe(wBase.z, p.fuzz_roughness).albedo;
   return passed;
 }
 
