@@ -636,8 +636,6 @@ void convertMaterials(Document& document, Scene& scene) {
       if (const json* factor = findPath(*coat, {"clearcoatRoughnessFactor"})) {
         input.clearcoatRoughness = checkedFactor(factor->get<double>(), 0.0, 1.0, where, name + ".clearcoatRoughnessFactor");
       }
-      // The coat shares the base's shading normal (kernel/hit_common.glsl): its own normal map is not applied.
-      if (coat->contains("clearcoatNormalTexture")) document.ignore(name + ".clearcoatNormalTexture (the coat takes the base's normal)");
     }
     if (const json* film = findPath(materialJson, {"extensions", "KHR_materials_iridescence"})) {
       const std::string name = "KHR_materials_iridescence";
@@ -698,7 +696,6 @@ void convertMaterials(Document& document, Scene& scene) {
       readFactor(*coat, "coatAnisotropyRotation", name, -std::numeric_limits<float>::max(),
                  std::numeric_limits<float>::max(), rotation);
       if (rotation != 0.0f) document.ignore(name + ".coatAnisotropyRotation (the highlight stretches along the tangent)");
-      if (coat->contains("coatNormalTexture")) document.ignore(name + ".coatNormalTexture (the coat takes the base's normal)");
       if (coat->contains("coatAnisotropyTexture")) document.ignore(name + ".coatAnisotropyTexture (its strength applies alone)");
     }
     if (const json* fuzz = findPath(materialJson, {"extensions", "KHR_materials_fuzz"})) {
@@ -814,6 +811,24 @@ void convertMaterials(Document& document, Scene& scene) {
       if (uses.refs[gpu::kTextureAnisotropy].texture >= 0 || uses.anisotropyRotation != 0.0f) uses.layerModel = record.model;
     } else if (use({"extensions", "KHR_materials_anisotropy", "anisotropyTexture"})) {
       document.ignore("KHR_materials_anisotropy.anisotropyTexture (the anisotropy is absent)");
+    }
+    // The coat's own normal map (KHR_materials_coat's, else KHR_materials_clearcoat's), where the material has a coat:
+    // the kernel writes the normal it gives, in the shading frame, into geometry_coat_normal_x and _y at each hit.
+    for (const auto& [extension, key] : {std::pair{"KHR_materials_coat", "coatNormalTexture"},
+                                         std::pair{"KHR_materials_clearcoat", "clearcoatNormalTexture"}}) {
+      const json* info = use({"extensions", extension, key});
+      if (info == nullptr) continue;
+      const std::string property = std::string(extension) + "." + key;
+      const ParamInfo* normal = findParam(modelInfo(record.model), "geometry_coat_normal_x");
+      if (input.hasCoat && std::string_view(extension) == "KHR_materials_clearcoat") {
+        document.ignore(property + " (KHR_materials_coat replaces its layer)");
+      } else if (normal == nullptr || !(getParam(record, "coat_weight").x > 0.0f)) {
+        document.ignore(property + " (" + (normal == nullptr ? "the material's model has no coat" : "its layer is absent") + ")");
+      } else {
+        uses.refs[gpu::kTextureCoatNormal] = convertUse(info, property);
+        uses.refs[gpu::kTextureCoatNormal].param = normal->slot;
+        uses.layerModel = record.model;
+      }
     }
     if (const json* info = use({"normalTexture"})) uses.refs[gpu::kTextureNormal] = convertUse(info, "normalTexture");
     if (const json* info = use({"occlusionTexture"})) convertUse(info, "occlusionTexture");

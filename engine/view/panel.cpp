@@ -22,11 +22,12 @@ namespace {
 // and its alpha mode.
 void drawMaterialTextures(const Scene& scene, const gpu::MaterialRecord& record) {
   if (record.textures < 0 || std::size_t(record.textures) >= scene.materialTextures.size()) return;
-  static const char* const kUses[gpu::kTextureUses] = {
+  static constexpr const char* kUses[] = {
       "base colour", "metallic-roughness", "normal", "emissive", "specular", "specular colour", "coat weight",
       "coat roughness", "fuzz colour", "fuzz roughness", "thin-film weight", "thin-film thickness", "transmission",
       "coat colour", "fuzz weight", "diffuse roughness", "diffuse transmission", "diffuse transmission colour",
-      "anisotropy"};
+      "anisotropy", "coat normal"};
+  static_assert(std::size(kUses) == gpu::kTextureUses, "one name per texture use");
   const gpu::MaterialTextures& uses = scene.materialTextures[std::size_t(record.textures)];
   for (std::uint32_t use = 0; use < gpu::kTextureUses; ++use) {
     const gpu::TextureRef& ref = uses.refs[use];
@@ -36,7 +37,7 @@ void drawMaterialTextures(const Scene& scene, const gpu::MaterialRecord& record)
     std::string details = std::to_string(texture.width) + "x" + std::to_string(texture.height) + ", TEXCOORD_" +
                           std::to_string(ref.texCoord);
     if (transformed) details += ", transformed";
-    if (use == gpu::kTextureNormal && ref.scale != 1.0f) details += ", scale " + formatParamValue(glm::vec3(ref.scale), false);
+    if ((use == gpu::kTextureNormal || use == gpu::kTextureCoatNormal) && ref.scale != 1.0f) details += ", scale " + formatParamValue(glm::vec3(ref.scale), false);
     ImGui::TextWrapped("%s texture: %s (%s)", kUses[use], texture.name.c_str(), details.c_str());
   }
   if (uses.alphaMode == gpu::kAlphaMask) {

@@ -86,6 +86,7 @@ void closestHit(Hit hit, inout Payload p) {
   const vec3 ng = side.ng;
   const vec3 ns = side.ns;
   const ShadingFrame frame = side.frame;
+  applyCoatNormal(material, s, frame);
   if (recordsAov(p)) recordAov(p, firstHitAlbedo(p, material, toLocal(frame, wo), delta), facing(ns, wo));
 
   // Rough glass (two-sided) sees the lights on both sides of its surface.

@@ -16,25 +16,42 @@
 const float kMinMappedNormalCos = 0.01;
 
 // glTF 3.9.3, normalTexture: the texel's linear RGB is 2 c - 1 in the frame of the tangent, the bitangent
-// (cross(normal, tangent) times the tangent's w) and the interpolated normal, x and y scaled by `scale`.
-void applyNormalMap(inout Surface s, TextureRef ref) {
+// (cross(normal, tangent) times the tangent's w) and the interpolated normal, x and y scaled by `scale`. Zero where
+// the map does not apply: no tangent (an analytic sphere, degenerate UVs), a zero texel.
+vec3 mappedNormal(Surface s, TextureRef ref) {
   const vec3 n = s.shadingNormal;
   vec3 t = s.normalTangent.xyz - dot(s.normalTangent.xyz, n) * n;
-  if (!(dot(t, t) > 0.0)) return;  // no tangent (an analytic sphere, degenerate UVs): the map is not applied
+  if (!(dot(t, t) > 0.0)) return vec3(0.0);
   t = normalize(t);
   const vec3 b = s.normalTangent.w < 0.0 ? -cross(n, t) : cross(n, t);
   vec3 m = sampleTextureRef(ref, s.uv, s.uv1, false).rgb * 2.0 - 1.0;
   m.xy *= ref.scale;
   const vec3 mapped = m.x * t + m.y * b + m.z * n;
-  if (!(dot(mapped, mapped) > 1e-12)) return;  // a zero texel has no direction
+  if (!(dot(mapped, mapped) > 1e-12)) return vec3(0.0);
   vec3 ns = normalize(mapped);
   // A normal below the geometric surface (a large scale, a broken map) is tipped back just above it: the
   // shading normal stays on the side of geometricNormal, as Surface promises.
   const vec3 ng = s.geometricNormal;
   const float below = kMinMappedNormalCos - dot(ns, ng);
   if (below > 0.0) ns = normalize(ns + below * ng);
+  return ns;
+}
+
+void applyNormalMap(inout Surface s, TextureRef ref) {
+  const vec3 ns = mappedNormal(s, ref);
+  if (!(dot(ns, ns) > 0.0)) return;
   s.shadingNormal = ns;
   s.normalMapped = true;
+}
+
+// The coat's own normal map (applyTextures) in the shading frame: geometry_coat_normal_x and _y of the coat, at each
+// hit (openpbr's coat is shaded in that frame). A frame turned to the back face turns the coat's normal with it.
+void applyCoatNormal(inout MaterialRecord material, Surface s, ShadingFrame frame) {
+  if (!(featureEnabled(kFeatureLayerTextures) && dot(s.coatNormal, s.coatNormal) > 0.0)) return;
+  const uint slot = materialTextures[material.textures].refs[kTextureCoatNormal].param;
+  const vec3 n = dot(s.coatNormal, frame.n) < 0.0 ? -s.coatNormal : s.coatNormal;
+  material.params[slot] = dot(n, frame.t);
+  material.params[slot + 1u] = dot(n, frame.b);
 }
 
 // KHR_materials_anisotropy's direction: the tangent turned by anisotropyRotation plus the texture's angle (its RG, in
@@ -125,6 +142,9 @@ void applyTextures(inout MaterialRecord material, inout Surface s) {
       material.params[layer.param] *= layer.scale + (1.0 - layer.scale) * t;
     }
     applyAnisotropyDirection(material, s, uses);
+    // The coat's map is read in the interpolated normal's frame, as the base's: before the base's bends it.
+    const TextureRef coatNormal = uses.refs[kTextureCoatNormal];
+    if (coatNormal.texture >= 0) s.coatNormal = mappedNormal(s, coatNormal);
   }
   const TextureRef normal = uses.refs[kTextureNormal];
   if (normal.texture >= 0) applyNormalMap(s, normal);

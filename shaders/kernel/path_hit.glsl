@@ -104,6 +104,7 @@ void closestHitPath(Hit hit, inout Payload p) {
   const vec3 ng = side.ng;
   const vec3 ns = side.ns;
   const ShadingFrame frame = side.frame;
+  applyCoatNormal(material, s, frame);
   const vec3 woLocal = toLocal(frame, wo);
 
   // Next event estimation: the (1 - delta) f_r part of the mixture sees the lights.

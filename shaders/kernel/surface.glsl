@@ -16,6 +16,7 @@ struct Surface {
   vec2 uv;               // TEXCOORD_0
   vec2 uv1;              // TEXCOORD_1
   bool normalMapped;     // shadingNormal comes from a normal map (hit_common.glsl, applyNormalMap)
+  vec3 coatNormal;       // world space, unit: the coat's own normal map's (applyTextures); zero: none
   uint material;
   bool frontFace;        // the ray arrived from the side geometricNormal points to
 };
@@ -47,6 +48,7 @@ Surface sphereSurface(Hit hit, InstanceRecord instance) {
   s.uv1 = s.uv;
   s.normalTangent = vec4(0.0);  // normal maps need a mesh's tangents
   s.normalMapped = false;
+  s.coatNormal = vec3(0.0);
   s.material = sphere.material;
   s.frontFace = dot(hit.objectDirection, normal) < 0.0;
   return s;
@@ -83,6 +85,7 @@ Surface triangleSurface(Hit hit, InstanceRecord instance) {
   s.tangent = vec3(0.0);
   s.normalTangent = vec4(0.0);
   s.normalMapped = false;
+  s.coatNormal = vec3(0.0);
   if ((instance.vertexFlags & kVertexHasUvs) != 0u) {
     const vec2 uv0 = uvs[i0];
     const vec2 duv1 = uvs[i1] - uv0;

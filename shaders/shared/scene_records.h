@@ -133,7 +133,9 @@ RL_CONST uint kLayerTexturesEnd = 18;  // the layer textures are the uses kFirst
 // towards the bitangent), B scales the strength, which `scale` holds; `param` is the anisotropy's slot. The strength
 // reaches it through glTF's map onto openpbr's ratio (gltf_materials.cpp, anisotropyOf), the roughness role's value.
 RL_CONST uint kTextureAnisotropy = 18;
-RL_CONST uint kTextureUses = 19;
+// The coat's own normal map (its param: the slot of geometry_coat_normal_x, y after it), of layerModel.
+RL_CONST uint kTextureCoatNormal = 19;
+RL_CONST uint kTextureUses = 20;
 
 // MaterialTextures.alphaMode (glTF alphaMode). Opaque surfaces are opaque geometry: traversal never asks.
 RL_CONST uint kAlphaOpaque = 0;
@@ -151,7 +153,7 @@ struct MaterialTextures {
   // anisotropyRotation), with the layer textures (layerModel's only).
   float anisotropyRotation;
 };
-RL_CHECK_SIZE(MaterialTextures, 780);
+RL_CHECK_SIZE(MaterialTextures, 820);
 
 // One light for next event estimation, of any kind (generated/light_kinds.h, from shaders/lights/lights.cmake):
 // punctual lights, emitting triangles and spheres in world space, the environment. What p0, p1, p2 and radiance

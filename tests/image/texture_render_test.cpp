@@ -280,6 +280,9 @@ TEST_F(TextureRenderTest, TheAnisotropysRotationAndTextureTurnAndScaleTheStretch
   setParam(record, "base_color", glm::vec3(0.9f, 0.7f, 0.5f), "test");
   setParam(record, "specular_roughness", glm::vec3(0.45f), "test");
   setParam(record, "specular_roughness_anisotropy", glm::vec3(0.85f), "test");
+  // Under a faint coat: the kernel of the coat normal map's test below (one cold compile of the layered kernel for
+  // both, not two: about 45 s each).
+  setParam(record, "coat_weight", glm::vec3(0.2f), "test");
   const auto sceneOf = [&](const Mesh& mesh, float rotation) {
     Scene scene = quadScene(record, gpu::kTextureBaseColor, solidTexture({255, 255, 255, 255}), mesh);
     scene.materialTextures[0].anisotropyRotation = rotation;
@@ -323,6 +326,52 @@ TEST_F(TextureRenderTest, TheAnisotropysRotationAndTextureTurnAndScaleTheStretch
   const Image t = render(textured);
   const Image h = render(host);
   for (std::size_t i = 0; i < t.rgba.size(); ++i) ASSERT_NEAR(t.rgba[i], h.rgba[i], 1e-4f * h.rgba[i] + 1e-7f) << i;
+}
+
+// The coat's own normal map (glTF's coatNormalTexture, clearcoatNormalTexture): decoded in the quad's tangent frame
+// (tangent +x, bitangent +z, normal +y: the base's normal map's) and given to the coat in the shading frame (x the
+// tangent, y cross(n, t) = -z), it renders as that normal set on the host as geometry_coat_normal_x and _y.
+TEST_F(TextureRenderTest, ACoatNormalMapTiltsTheCoatAsItsTexelEncodes) {
+  gpu::MaterialRecord record = defaultRecord(modelId("openpbr"));
+  setParam(record, "base_color", glm::vec3(0.3f, 0.2f, 0.1f), "test");
+  setParam(record, "specular_roughness", glm::vec3(0.5f), "test");
+  setParam(record, "coat_weight", glm::vec3(1.0f), "test");
+  setParam(record, "coat_roughness", glm::vec3(0.25f), "test");
+  Mesh mesh = texturedQuad();
+  mesh.tangents = generateTangents(mesh, mesh.uvs);
+  // The layer textures' kernel for all three (a whole turn of the anisotropy's direction is none), shared with the
+  // anisotropy's test above.
+  const auto sceneOf = [&](const gpu::MaterialRecord& r) {
+    Scene scene = quadScene(r, gpu::kTextureBaseColor, solidTexture({255, 255, 255, 255}), mesh);
+    scene.materialTextures[0].layerModel = r.model;
+    scene.materialTextures[0].anisotropyRotation = float(2.0 * std::numbers::pi);
+    return scene;
+  };
+  const std::uint8_t texel[3] = {200, 90, 220};
+  Scene textured = sceneOf(record);
+  textured.materialTextures[0].anisotropyRotation = 0.0f;
+  textured.textures.push_back(solidTexture({texel[0], texel[1], texel[2], 255}));
+  textured.materialTextures[0].refs[gpu::kTextureCoatNormal] = textureRef(1);
+  textured.materialTextures[0].refs[gpu::kTextureCoatNormal].param =
+      findParam(modelInfo(record.model), "geometry_coat_normal_x")->slot;
+  ASSERT_NE(featuresOf(textured).features & gpu::kFeatureLayerTextures, 0u);
+  const glm::dvec3 m = glm::normalize(glm::dvec3(texel[0], texel[1], texel[2]) / 255.0 * 2.0 - 1.0);
+  gpu::MaterialRecord tilted = record;
+  setParam(tilted, "geometry_coat_normal_x", glm::vec3(float(m.x)), "test");
+  setParam(tilted, "geometry_coat_normal_y", glm::vec3(float(-m.y)), "test");
+  const auto render = [&](const Scene& scene) {
+    return renderImage(device(), scene, settingsFor(scene, gpu::kIntegratorSlides), 1);
+  };
+  const Image t = render(textured);
+  const Image h = render(sceneOf(tilted));
+  const Image flat = render(sceneOf(record));
+  double difference = 0.0, total = 0.0;
+  for (std::size_t i = 0; i < t.rgba.size(); ++i) {
+    ASSERT_NEAR(t.rgba[i], h.rgba[i], 1e-4f * h.rgba[i] + 1e-7f) << "value " << i;
+    difference += std::abs(t.rgba[i] - flat.rgba[i]);
+    total += flat.rgba[i];
+  }
+  EXPECT_GT(difference, 0.01 * total) << "the tilt shows: the coat's highlight moved";
 }
 
 // A 2x1 texture, red then green, read by the nearest texel: TEXCOORD_1 constant at u = 0.25 reads red, and a

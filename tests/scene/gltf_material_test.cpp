@@ -407,11 +407,12 @@ TEST(GltfMaterial, KhrMaterialsClearcoatIsOpenPbrsCoat) {
   textured.doc()["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0},
                                                                               {"clearcoatTexture", {{"index", 0}}}};
   textured.doc()["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatRoughnessTexture"] = {{"index", 0}};
-  textured.doc()["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatNormalTexture"] = {{"index", 0}};
+  textured.doc()["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatNormalTexture"] = {{"index", 0},
+                                                                                                      {"scale", 0.5}};
   WarningCapture textureWarnings;
   const Scene coatTextures = textured.load();
   // The coat's textures scale coat_weight (R) and coat_roughness (G) of the openpbr material they were read for;
-  // its normal map is not applied, and says so.
+  // its normal map gives the coat's own normal (geometry_coat_normal_x and _y, set at each hit), with its scale.
   const gpu::MaterialRecord& coated = coatTextures.materials[0].record;
   ASSERT_GE(coated.textures, 0);
   const gpu::MaterialTextures& uses = coatTextures.materialTextures[std::size_t(coated.textures)];
@@ -421,7 +422,22 @@ TEST(GltfMaterial, KhrMaterialsClearcoatIsOpenPbrsCoat) {
   EXPECT_EQ(uses.refs[gpu::kTextureCoatRoughness].param, findParam(modelInfo(coated.model), "coat_roughness")->slot);
   EXPECT_TRUE(hasLayerTextures(coatTextures, coated));
   EXPECT_EQ(textureWarnings.count("clearcoatTexture"), 0) << "read";
-  EXPECT_EQ(textureWarnings.count("clearcoatNormalTexture"), 1) << "said, not silently dropped";
+  EXPECT_EQ(uses.refs[gpu::kTextureCoatNormal].param, findParam(modelInfo(coated.model), "geometry_coat_normal_x")->slot);
+  EXPECT_GE(uses.refs[gpu::kTextureCoatNormal].texture, 0);
+  EXPECT_FLOAT_EQ(uses.refs[gpu::kTextureCoatNormal].scale, 0.5f);
+  EXPECT_EQ(textureWarnings.count("clearcoatNormalTexture"), 0) << "read";
+  // KHR_materials_coat replaces the clear coat, its normal map included.
+  textured.doc()["materials"][0]["extensions"]["KHR_materials_coat"] = {{"coatFactor", 1.0}};
+  WarningCapture replacedWarnings;
+  const Scene replaced = textured.load();
+  const gpu::MaterialRecord& draft = replaced.materials[0].record;
+  EXPECT_LT(replaced.materialTextures[std::size_t(draft.textures)].refs[gpu::kTextureCoatNormal].texture, 0);
+  EXPECT_EQ(replacedWarnings.count("clearcoatNormalTexture (KHR_materials_coat replaces its layer)"), 1);
+  textured.doc()["materials"][0]["extensions"]["KHR_materials_coat"]["coatNormalTexture"] = {{"index", 0}};
+  const Scene ownNormal = textured.load();
+  EXPECT_GE(ownNormal.materialTextures[std::size_t(ownNormal.materials[0].record.textures)]
+                .refs[gpu::kTextureCoatNormal].texture, 0) << "the draft's own coatNormalTexture";
+  textured.doc()["materials"][0]["extensions"].erase("KHR_materials_coat");
   // Without a coat (factor 0: glTF's own BRDF) the textures have nothing to scale: said, and nothing read.
   textured.doc()["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatFactor"] = 0.0;
   WarningCapture absentWarnings;
