@@ -117,7 +117,8 @@ def main(argv=None) -> int:
         md_out = sorted(results, key=lambda r: (r["material"], r["model"]))
         args.out.parent.mkdir(parents=True, exist_ok=True)
         temporary = args.out.with_name(args.out.name + ".tmp")
-        temporary.write_text(json.dumps(md_out, indent=1) + "\n")
+        # One record a line: small enough to keep beside the docs (docs/results/), and diffs stay readable.
+        temporary.write_text("[\n" + ",\n".join(json.dumps(r) for r in md_out) + "\n]\n")
         temporary.replace(args.out)
         partial.unlink(missing_ok=True)
     return 0
