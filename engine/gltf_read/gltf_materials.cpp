@@ -341,6 +341,11 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
     if (input.coatAnisotropy > 0.0f) {
       setParam(record, "coat_roughness_anisotropy",
                glm::vec3(anisotropyOf(input.coatRoughness, input.coatAnisotropy)), coat);
+      // The coat's tangent is turned from the shading frame's, which the base's anisotropyRotation has already
+      // turned (kernel/hit_common.glsl): by the difference, wrapped.
+      const double baseTurn = input.anisotropy > 0.0f ? input.anisotropyRotation : 0.0;
+      const double angle = std::remainder(double(input.coatAnisotropyRotation) - baseTurn, 2.0 * std::numbers::pi);
+      if (angle != 0.0) setParam(record, "geometry_coat_tangent_angle", glm::vec3(float(angle)), coat);
     }
   } else {
     setParam(record, "coat_weight", glm::vec3(input.clearcoat), where + " (KHR_materials_clearcoat)");
@@ -692,10 +697,10 @@ void convertMaterials(Document& document, Scene& scene) {
       readFactor(*coat, "coatDarkeningFactor", name, 0.0, 1.0, input.coatDarkening);
       readColour(*coat, "coatColorFactor", name, input.coatColor);
       readFactor(*coat, "coatAnisotropyStrength", name, 0.0, 1.0, input.coatAnisotropy);
-      float rotation = 0.0f;
       readFactor(*coat, "coatAnisotropyRotation", name, -std::numeric_limits<float>::max(),
-                 std::numeric_limits<float>::max(), rotation);
-      if (rotation != 0.0f) document.ignore(name + ".coatAnisotropyRotation (the highlight stretches along the tangent)");
+                 std::numeric_limits<float>::max(), input.coatAnisotropyRotation);
+      input.coatAnisotropyRotation =
+          float(std::remainder(double(input.coatAnisotropyRotation), 2.0 * std::numbers::pi));
       if (coat->contains("coatAnisotropyTexture")) document.ignore(name + ".coatAnisotropyTexture (its strength applies alone)");
     }
     if (const json* fuzz = findPath(materialJson, {"extensions", "KHR_materials_fuzz"})) {
@@ -806,6 +811,11 @@ void convertMaterials(Document& document, Scene& scene) {
         uses.refs[gpu::kTextureAnisotropy] = convertUse(info, "KHR_materials_anisotropy.anisotropyTexture");
         uses.refs[gpu::kTextureAnisotropy].param = ratio->slot;
         uses.refs[gpu::kTextureAnisotropy].scale = input.anisotropy;
+        if (input.hasCoat && input.coatAnisotropy > 0.0f) {
+          warn(where + ": KHR_materials_coat's anisotropy direction is turned from the tangent as the base's "
+                       "anisotropyTexture turns the base's, texel by texel (the coat keeps only the difference of the "
+                       "rotations)");
+        }
       }
       uses.anisotropyRotation = input.anisotropyRotation;
       if (uses.refs[gpu::kTextureAnisotropy].texture >= 0 || uses.anisotropyRotation != 0.0f) uses.layerModel = record.model;

@@ -39,6 +39,7 @@ struct MetallicRoughness {
   // where both appear), KHR_materials_fuzz (it replaces the sheen), KHR_materials_diffuse_roughness.
   bool hasCoat = false;
   float coat = 0.0f, coatRoughness = 0.0f, coatIor = 1.5f, coatDarkening = 1.0f, coatAnisotropy = 0.0f;
+  float coatAnisotropyRotation = 0.0f;  // radians from the tangent, wrapped to [-pi, pi]
   float anisotropyRotation = 0.0f;  // KHR_materials_anisotropy, radians from the tangent towards the bitangent
   float diffuseTransmission = 0.0f;  // KHR_materials_diffuse_transmission
   glm::vec3 diffuseTransmissionColor{1.0f};

@@ -698,6 +698,26 @@ TEST(GltfMaterial, TheDraftsTexturesScaleTheirParametersAndReplaceTheRatifiedOne
   }
   // coatAnisotropyStrength as KHR_materials_anisotropy's strength, on the coat's roughness.
   EXPECT_NEAR(getParam(r, "coat_roughness_anisotropy").x, 1.0f - 0.09f / (0.09f + 0.91f * 0.25f), 1e-6f);
+  EXPECT_FLOAT_EQ(getParam(r, "geometry_coat_tangent_angle").x, 0.0f) << "no rotation: along the tangent";
+}
+
+// coatAnisotropyRotation turns the coat's tangent: from the shading frame, which the base's anisotropyRotation has
+// already turned, by the difference of the two, wrapped to [-pi, pi].
+TEST(GltfMaterial, TheCoatsAnisotropyRotationTurnsItsTangentFromTheBases) {
+  const auto angleOf = [](double coatRotation, double baseStrength, double baseRotation) {
+    const json material = {
+        {"extensions", {{"KHR_materials_coat", {{"coatFactor", 1.0}, {"coatRoughnessFactor", 0.3},
+                                                {"coatAnisotropyStrength", 0.5}, {"coatAnisotropyRotation", coatRotation}}},
+                        {"KHR_materials_anisotropy", {{"anisotropyStrength", baseStrength},
+                                                      {"anisotropyRotation", baseRotation}}}}}};
+    return double(getParam(loadMaterial(material).materials[0].record, "geometry_coat_tangent_angle").x);
+  };
+  WarningCapture warnings;
+  EXPECT_NEAR(angleOf(1.0, 0.0, 0.4), 1.0, 1e-6) << "the base without anisotropy does not turn its frame";
+  EXPECT_NEAR(angleOf(1.0, 0.5, 0.4), 0.6, 1e-6);
+  EXPECT_NEAR(angleOf(7.0, 0.0, 0.0), 7.0 - 2.0 * std::numbers::pi, 1e-6);
+  EXPECT_NEAR(angleOf(-3.0, 0.5, 3.0), -6.0 + 2.0 * std::numbers::pi, 1e-6);
+  EXPECT_EQ(warnings.count("coatAnisotropyRotation"), 0) << "read, not ignored";
 }
 
 // Each layered extension at its neutral value is no layer: beside a clear coat (which makes the material openpbr
