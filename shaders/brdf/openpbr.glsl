@@ -109,7 +109,7 @@ OpenpbrCoatFrame openpbrCoatFrame(float normalX, float normalY, float tangentAng
   if (normalX == 0.0 && normalY == 0.0 && tangentAngle == 0.0) return f;
   vec2 slope = vec2(normalX, normalY);
   const float sine2 = dot(slope, slope), kMaxSine2 = 0.9988;  // sin^2 of 88 degrees
-  if (!(sine2 <= kMaxSine2)) slope *= sqrt(kMaxSine2 / max(sine2, kMaxSine2));  // NaN too: the clamp's length
+  if (sine2 > kMaxSine2) slope *= sqrt(kMaxSine2 / sine2);
   f.n = vec3(slope, sqrt(1.0 - dot(slope, slope)));
   const vec3 t = vec3(cos(tangentAngle), sin(tangentAngle), 0.0);
   f.t = normalize(t - f.n * dot(f.n, t));  // t is horizontal and n at least 2 degrees above: never parallel
