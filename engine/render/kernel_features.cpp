@@ -8,6 +8,22 @@
 
 namespace raylab {
 
+namespace {
+
+// Whether one of the material's layer textures writes `param` at each hit (the coat's normal map sets
+// geometry_coat_normal_x): the part it turns on is needed even where the factor is 0.
+bool textureSets(const Scene& scene, const gpu::MaterialRecord& record, std::string_view param) {
+  if (!hasLayerTextures(scene, record)) return false;
+  const ParamInfo* info = findParam(modelInfo(record.model), param);
+  const gpu::MaterialTextures& uses = scene.materialTextures[std::size_t(record.textures)];
+  for (std::uint32_t use = gpu::kFirstLayerTexture; use < gpu::kTextureUses; ++use) {
+    if (info != nullptr && uses.refs[use].texture >= 0 && uses.refs[use].param == info->slot) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 KernelFeatures featuresOf(const Scene& scene) {
   KernelFeatures f;
   for (const Material& material : scene.materials) {
@@ -20,7 +36,9 @@ KernelFeatures featuresOf(const Scene& scene) {
     }
     if (hasAlpha(scene, material.record)) f.features |= gpu::kFeatureAlpha;
     for (const ModelFeature& feature : modelInfo(material.record.model).features) {
-      if (getParam(material.record, feature.param).x > 0.0f) f.features |= feature.bit;
+      if (getParam(material.record, feature.param).x != 0.0f || textureSets(scene, material.record, feature.param)) {
+        f.features |= feature.bit;
+      }
     }
   }
   if (scene.environment.hasImage()) f.features |= gpu::kFeatureEnvironment;
@@ -70,8 +88,10 @@ std::string describe(const KernelFeatures& features) {
   }
   if (features.features != gpu::kAllFeatures) {
     for (const ModelInfo& model : allModels()) {
+      std::uint32_t listed = 0;  // a feature of several parameters is one name
       for (const ModelFeature& feature : model.features) {
-        if (features.features & feature.bit) {
+        if ((features.features & feature.bit) && !(listed & feature.bit)) {
+          listed |= feature.bit;
           list += (list.empty() ? "" : ", ") + std::string(model.name) + " " + std::string(feature.name);
         }
       }

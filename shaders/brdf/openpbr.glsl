@@ -7,6 +7,9 @@
 // feature: transmission transmission_weight
 // feature: thin_walled geometry_thin_walled
 // feature: dispersion transmission_dispersion_scale
+// feature: coat_frame geometry_coat_normal_x
+// feature: coat_frame geometry_coat_normal_y
+// feature: coat_frame geometry_coat_tangent_angle
 // medium: transmission_weight base_metalness transmission_color transmission_depth geometry_thin_walled
 // albedo sampled when: geometry_thin_walled
 // fit: free base_color base_metalness base_diffuse_roughness specular_roughness specular_ior coat_weight coat_roughness
@@ -106,7 +109,10 @@ struct OpenpbrCoatFrame {
 };
 OpenpbrCoatFrame openpbrCoatFrame(float normalX, float normalY, float tangentAngle) {
   OpenpbrCoatFrame f = OpenpbrCoatFrame(vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0));
-  if (normalX == 0.0 && normalY == 0.0 && tangentAngle == 0.0) return f;
+  // A scene without a coat of its own frame compiles none (kernels are compiled per scene: vk/spirv_specialization.h).
+  if (!featureEnabled(kOpenpbrFeatureCoatFrame) || (normalX == 0.0 && normalY == 0.0 && tangentAngle == 0.0)) {
+    return f;
+  }
   vec2 slope = vec2(normalX, normalY);
   const float sine2 = dot(slope, slope), kMaxSine2 = 0.9988;  // sin^2 of 88 degrees
   if (sine2 > kMaxSine2) slope *= sqrt(kMaxSine2 / sine2);

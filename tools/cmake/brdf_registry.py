@@ -62,7 +62,8 @@ def parse_model(name, prefix, include, path):
                 words = body[len("feature:"):].split()
                 if len(words) != 2 or not re.fullmatch(r"[a-z][a-z0-9_]*", words[0]):
                     raise RegistryError(f"{where}: 'feature: NAME PARAM' names a part of the model that a scene uses "
-                                        "when PARAM > 0 in one of its materials")
+                                        "when PARAM is not 0 in one of its materials (or a texture sets it); several "
+                                        "lines of one NAME share its bit")
                 feature_lines.append((where, words[0], words[1]))
             elif body.startswith("albedo sampled when:"):
                 sampled_albedo = (where, body[len("albedo sampled when:"):].split())
@@ -262,16 +263,20 @@ FIRST_MODEL_FEATURE_BIT = 16  # shared/features.h: the kSpecFeatures bits from h
 
 
 def assign_feature_bits(models):
-    """Each model's `feature:` lines, in registry order, take the kSpecFeatures bits from FIRST_MODEL_FEATURE_BIT up."""
+    """Each model's `feature:` names, in registry order, take the kSpecFeatures bits from FIRST_MODEL_FEATURE_BIT up;
+    the lines of one name (a part several parameters turn on) share its bit."""
     bit = FIRST_MODEL_FEATURE_BIT
     for m in models:
+        named = {}
         for feature in m["features"]:
-            if bit > 31:
-                raise RegistryError(f"{m['path']}: more model features than the 16 bits kSpecFeatures keeps for them")
-            feature["bit"] = 1 << bit
+            if feature["name"] not in named:
+                if bit > 31:
+                    raise RegistryError(f"{m['path']}: more model features than the 16 bits kSpecFeatures keeps for them")
+                named[feature["name"]] = 1 << bit
+                bit += 1
+            feature["bit"] = named[feature["name"]]
             feature["constant"] = f"k{m['prefix'][0].upper()}{m['prefix'][1:]}Feature" + "".join(
                 w.capitalize() for w in feature["name"].split("_"))
-            bit += 1
 
 
 def glsl_dispatch(models):
@@ -281,8 +286,12 @@ def glsl_dispatch(models):
            "// removes the models the scene does not use before the driver compiles it (vk/spirv_specialization.h).",
            "#ifndef RAYLAB_GENERATED_BSDF_MODELS_GLSL", "#define RAYLAB_GENERATED_BSDF_MODELS_GLSL", ""]
     out.append("// The models' own features (their `feature:` lines): a kSpecFeatures bit each, for featureEnabled.")
-    out += [f"const uint {f['constant']} = {f['bit']}u;  // {m['name']}: {f['param']} > 0"
-            for m in models for f in m["features"]]
+    constants = {}
+    for m in models:
+        for f in m["features"]:
+            constants.setdefault(f["constant"], (f["bit"], m["name"], []))[2].append(f["param"])
+    out += [f"const uint {name} = {bit}u;  // {model}: {' or '.join(params)} not 0"
+            for name, (bit, model, params) in constants.items()]
     out.append("")
     out += [f'#include "{m["include"]}"' for m in models]
     out.append("")
