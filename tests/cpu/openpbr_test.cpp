@@ -9,7 +9,9 @@
 //   - what it claims about reciprocity: the metal alone is reciprocal; the albedo-scaled layers are not, by the
 //     factor the scaling predicts.
 //   - the thin film: its tabulated spectral series equals the brute-force spectral Airy sum, at thickness 0 it is
-//     the base's own Fresnel term, over a mirror it is 1, and Gulbrandsen's index has the F0 it was made from.
+//     the base's own Fresnel term, over a mirror it is 1, and Gulbrandsen's index has the F0 it was made from;
+//   - dispersion: each channel is the undispersed material at its own index, and keeps the furnace;
+//   - the coat's own frame: a tilted, turned coat is the flat coat seen from its frame, and never adds energy.
 // Regenerate the figures: ctest --test-dir build/release -R openpbr_test -V
 #include <gtest/gtest.h>
 
