@@ -71,9 +71,12 @@ std::vector<SamplingCase> samplingCases() {
       {"ggx_dielectric", {{"alpha_x", 0.1f}, {"alpha_y", 0.4f}, {"eta", 1.33f}, {"tint", 0.5f}}},
       {"abc_microfacet", {{"rho_d", 0.4f}, {"a", 2.0f}, {"b", 100.0f}, {"c", 1.5f}, {"ior", 1.5f}}},
       {"abc_microfacet", {{"rho_d", 0.0f}, {"a", 1.0f}, {"b", 30.0f}, {"c", 0.5f}, {"ior", 10.0f}}},
-      // A coated anisotropic dielectric, and a half-coated metal under an anisotropic coat: both GGX lobes sampled.
+      // A coated anisotropic dielectric, its coat of its own frame (a coat normal map's tilt, a turned anisotropy:
+      // the coat's lobe sampled in that frame), and a half-coated metal under an anisotropic coat: both GGX lobes.
       {"openpbr", {{"base_color", 0.6f}, {"specular_roughness", 0.5f}, {"specular_roughness_anisotropy", 0.5f},
-                   {"coat_weight", 1.0f}, {"coat_roughness", 0.2f}}},
+                   {"coat_weight", 1.0f}, {"coat_roughness", 0.2f}, {"coat_roughness_anisotropy", 0.6f},
+                   {"geometry_coat_normal_x", 0.4f}, {"geometry_coat_normal_y", -0.2f},
+                   {"geometry_coat_tangent_angle", 1.0f}}},
       {"openpbr", {{"base_color", 0.9f}, {"base_metalness", 1.0f}, {"specular_roughness", 0.4f},
                    {"coat_weight", 0.5f}, {"coat_roughness", 0.3f}, {"coat_roughness_anisotropy", 0.6f}}},
       // Fuzz over a coated diffuse base: the fuzz's LTC as a third lobe.
@@ -90,11 +93,6 @@ std::vector<SamplingCase> samplingCases() {
       // reflection's specular lobe still sampled.
       {"openpbr", {{"base_color", 0.5f}, {"specular_roughness", 0.3f}, {"subsurface_weight", 1.0f},
                    {"subsurface_color", 0.8f}, {"geometry_thin_walled", 1.0f}, {"subsurface_scatter_anisotropy", 1.0f}}},
-      // A coat of its own frame (a coat normal map's tilt, a turned anisotropy) over a glossy base: the coat's lobe
-      // sampled in its frame.
-      {"openpbr", {{"base_color", 0.5f}, {"specular_roughness", 0.5f}, {"coat_weight", 1.0f}, {"coat_roughness", 0.2f},
-                   {"coat_roughness_anisotropy", 0.6f}, {"geometry_coat_normal_x", 0.4f},
-                   {"geometry_coat_normal_y", -0.2f}, {"geometry_coat_tangent_angle", 1.0f}}},
       // A dispersive solid, its spread exaggerated (V = 4) so that the channels' lobes part: a channel drawn per
       // sample, the density the channels' mean.
       {"openpbr", {{"specular_roughness", 0.3f}, {"transmission_weight", 1.0f}, {"transmission_dispersion_scale", 1.0f},
