@@ -45,6 +45,10 @@ struct CoatFrame {
 };
 CoatFrame coatFrameOf(const OpenpbrParams& p) {
   CoatFrame f;
+  // The base's own frame, exactly, and without the trigonometry (a fit evaluates the coat millions of times).
+  if (p.geometry_coat_normal_x == 0.0 && p.geometry_coat_normal_y == 0.0 && p.geometry_coat_tangent_angle == 0.0) {
+    return f;
+  }
   dvec2 slope(p.geometry_coat_normal_x, p.geometry_coat_normal_y);
   constexpr double kMaxSine2 = 0.9988;
   if (glm::dot(slope, slope) > kMaxSine2) slope *= std::sqrt(kMaxSine2 / glm::dot(slope, slope));
