@@ -72,6 +72,8 @@ struct ModelInfo {
   std::string_view fitByName;
   // Its Levenberg-Marquardt starts when a fit names no count (`// fit: starts N, ...`), or 0: FitOptions' default.
   std::uint32_t fitStarts;
+  // How many times a fit's --search points its search draws (`// fit: search Nx, ...`), or 1.
+  std::uint32_t fitSearchFactor;
   // One more start of a fit (`// fit: start NAME=VALUE ...`): the defaults with these values, every channel alike.
   std::vector<std::pair<std::string_view, double>> fitStart;
   // The parameters a fit frees (`// fit: free NAME ...`), the rest held at their defaults; empty: all it can.

@@ -234,6 +234,17 @@ std::string describeStarts(const FitOptions& options) {
   return text;
 }
 
+std::string describeSearch(const FitOptions& options) {
+  if (options.searchPoints == 0) return "no search";
+  std::string text = "search of " + std::to_string(options.searchPoints) + " points per model";
+  for (const ModelInfo& model : allModels()) {
+    if (model.fitSearchFactor > 1) {
+      text += ", " + std::string(model.name) + " " + std::to_string(options.searchPoints * model.fitSearchFactor);
+    }
+  }
+  return text;
+}
+
 std::vector<std::pair<std::string, std::vector<double>>> fitParams(const FitResult& fit) {
   std::vector<std::pair<std::string, std::vector<double>>> params;
   for (const ParamInfo& param : modelInfo(fit.record.model).params) {
@@ -419,7 +430,8 @@ std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& opti
         if (task.step == Step::kSearch) {
           const Stopwatch clock;
           std::mt19937_64 random(std::uint64_t(options.seed) * 1000003u + plans[task.model].model->id);
-          std::vector<Scored> found = searchBasins(coarse, plans[task.model], options.metric, options.searchPoints,
+          const int points = options.searchPoints * int(plans[task.model].model->fitSearchFactor);
+          std::vector<Scored> found = searchBasins(coarse, plans[task.model], options.metric, points,
                                                    startsOf(plans[task.model]), random);
           for (Scored& start : found) chain.starts.push_back(std::move(start.x));
           seconds = chain.searchSeconds = clock.seconds();

@@ -60,6 +60,8 @@ struct FitResult {
 std::vector<std::string> fittableModels(bool byName = false);
 // "4 LM starts per model, lafortune 16": the starts a fit with these options gives each model, for messages.
 std::string describeStarts(const FitOptions& options);
+// "search of 256 points per model, gltf_pbr 1024": the search's size, with the models whose registry multiplies it.
+std::string describeSearch(const FitOptions& options);
 
 // Fits and ranks: best (least error) first. Throws Error for an unknown or unfittable model name.
 std::vector<FitResult> fitModels(const FitTarget& target, const FitOptions& options);

@@ -1,5 +1,6 @@
 // GGX conductor: a rough metal, anisotropic GGX microfacets with the exact Fresnel term of a complex index.
 // lobes: reflection glossy
+// fit: search 4x, a diffuse material's narrow dielectric-like highlight is a corner 256 points miss
 // look: metal=Au, alpha_x=0.12, alpha_y=0.12
 // figure: metal=Au, alpha_x=0.1, alpha_y=0.4 --phi 0,90
 // sweep scene: alpha_x 0.02 0.6 log set alpha_y=0.05 metal=Au -> highlight_area increasing

@@ -1,5 +1,6 @@
 // glTF PBR: the metallic-roughness BRDF of the glTF 2.0 specification, Appendix B, with KHR_materials_specular.
 // lobes: reflection diffuse glossy
+// fit: search 4x, a plastic's faint sharp highlight (ior near 1.1, metallic near 0) is a corner 256 points miss
 // sweep: metallic=1
 // look: base_color=0.9/0.6/0.2, metallic=0.5, roughness=0.4
 // figure: base_color=0.9/0.6/0.2, metallic=0, roughness=0.4

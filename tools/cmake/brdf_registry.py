@@ -38,6 +38,7 @@ def parse_model(name, prefix, include, path):
     a model's GLSL file opens with."""
     lobes, params, sweep, slot, preset_lines = None, [], "", 0, []
     look, figure_lines, sweep_scene_lines, non_reciprocal, fit_by_name, fit_starts = None, [], [], "", "", 0
+    fit_search_factor = 1
     fit_start_line, fit_free_lines = None, []
     feature_lines, medium, sampled_albedo = [], None, None
     with open(path, encoding="utf-8") as f:
@@ -77,6 +78,9 @@ def parse_model(name, prefix, include, path):
                 elif len(words) == 2 and words[0] == "starts" and words[1].isdigit() and \
                         1 <= int(words[1]) <= 64 and why.strip():
                     fit_starts = int(words[1])
+                elif len(words) == 2 and words[0] == "search" and re.fullmatch(r"([2-9]|1[0-6])x", words[1]) and \
+                        why.strip():
+                    fit_search_factor = int(words[1][:-1])
                 elif len(words) >= 2 and words[0] == "start" and why.strip():
                     fit_start_line = (where, words[1:])
                 elif len(words) >= 2 and words[0] == "free":
@@ -84,6 +88,7 @@ def parse_model(name, prefix, include, path):
                 else:
                     raise RegistryError(f"{where}: 'fit: by name, WHY' keeps a model out of the default fits; "
                                         "'fit: starts N, WHY' gives it N (1..64) Levenberg-Marquardt starts by default; "
+                                        "'fit: search Nx, WHY' searches N (2..16) times --search points; "
                                         "'fit: start NAME=VALUE ..., WHY' is one more start, the defaults with these; "
                                         "'fit: free NAME ..., WHY' fits only these parameters (the rest at defaults)")
             elif body.startswith("sweep:"):
@@ -186,6 +191,7 @@ def parse_model(name, prefix, include, path):
     return dict(name=name, prefix=prefix, include=include, path=path, lobes=lobes, params=params, sweep=sweep,
                 presets=presets, look=look[1] if look else None, figures=figures, sweep_scenes=sweep_scenes,
                 non_reciprocal=non_reciprocal, fit_by_name=fit_by_name, fit_starts=fit_starts, fit_start=fit_start,
+                fit_search_factor=fit_search_factor,
                 fit_free=fit_free, features=features, medium=medium_params, sampled_albedo=sampled_albedo_param)
 
 
@@ -378,7 +384,7 @@ def cpp_table(models, source_dir):
             for p in m["presets"])
         out.append(f"      {{{cpp_string(m['name'])}, {i}u, {m['lobes']}u, {{{params}}}, {cpp_string(m['sweep'])}, "
                    f"{cpp_string(glsl)}, {cpp_string(m['reference'])}, {{{presets}}}, "
-                   f"{cpp_string(m['non_reciprocal'])}, {cpp_string(m['fit_by_name'])}, {m['fit_starts']}u, "
+                   f"{cpp_string(m['non_reciprocal'])}, {cpp_string(m['fit_by_name'])}, {m['fit_starts']}u, {m['fit_search_factor']}u, "
                    f"{{{fit_start}}}, {{{fit_free}}}, {{{features}}}}},")
     out += ["  };", "  return table;", "}", "", "}  // namespace raylab", ""]
     return "\n".join(out)

@@ -82,9 +82,9 @@ int fit(const FitCommandOptions& o) {
   const FitTarget target = loadFitTarget(o.target);
   const bool isotropic = options.isotropic.value_or(target.isotropic);
   std::fprintf(stderr, "%s: %s: %s\n", kCommand, o.target.c_str(), summarizeTarget(target).text().c_str());
-  std::fprintf(stderr, "%s: %s error, %s, search of %u points, %s\n", kCommand,
+  std::fprintf(stderr, "%s: %s error, %s, %s, %s\n", kCommand,
                fitMetricName(options.metric), isotropic ? "isotropic (x and y parameters tied)" : "anisotropic",
-               o.search, describeStarts(options).c_str());
+               describeSearch(options).c_str(), describeStarts(options).c_str());
   // One line per finished start on a log, redrawn on a terminal: starts done, elapsed, ETA.
   options.progress = [&](int done, int total, const std::string& model, double seconds) {
     const double elapsed = clock.seconds();
@@ -150,7 +150,8 @@ void addBrdfFitCommand(CLI::App& brdf) {
                        describeStarts(FitOptions{}) + ")",
                    1, 64);
   addCount(command, "--search", o->search,
-           "points of the search per model (0: no search; the starts are the defaults, then random points)", 0,
+           "points of the search per model (0: no search; the starts are the defaults, then random points; "
+           "default: " + describeSearch(FitOptions{}) + ")", 0,
            65536);
   addFlag(command, "--isotropic", o->isotropic,
           "tie x and y parameters (alpha_x = alpha_y, nu = nv); the default for MERL files and slices");
