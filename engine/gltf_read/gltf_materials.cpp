@@ -293,6 +293,11 @@ bool hasDiffuseColour(std::uint32_t model) { return findRole(modelInfo(model), "
 
 // A KHR_materials_ior index for `param` of `model`: as it is, or its table's largest (with a warning saying so).
 // The model's formula holds for any index; its table stops where common dielectrics end.
+// KHR_materials_volume's Beer-Lambert law: what passes `distances` attenuation distances of the medium.
+glm::vec3 volumeTransmittance(glm::vec3 attenuationColor, float distances) {
+  return glm::pow(attenuationColor, glm::vec3(distances));
+}
+
 float indexWithin(float ior, const gpu::MaterialRecord& record, std::string_view param, const std::string& where) {
   const ModelInfo& model = modelInfo(record.model);
   const float iorMax = findParam(model, param)->max;
@@ -419,17 +424,23 @@ gpu::MaterialRecord mapLayered(const MetallicRoughness& input, const std::string
   // KHR_materials_diffuse_transmission: the diffuse lobe becomes mix(diffuse BRDF of the base colour, diffuse BTDF
   // of diffuseTransmissionColor, factor), which is openpbr's thin-walled subsurface that passes all its light
   // (subsurface_scatter_anisotropy 1) mixed in by subsurface_weight: exact, below the same specular layer. glTF's
-  // surfaces without a volume are thin; with one, the text's translucent volume needs the random walk raylab does not
-  // have (one warning; the volume is kept).
+  // surfaces without a volume are thin. With KHR_materials_volume the text makes the object translucent: light
+  // crosses the boundary by the diffuse BTDF and is absorbed inside. raylab takes it as the Sample Viewer does: the
+  // same thin sheet, its BTDF attenuated by Beer-Lambert over the volume's thickness,
+  // attenuationColor^(thicknessFactor / attenuationDistance). With a specular transmission too, the volume belongs
+  // to that transmission and the diffuse one is not applied (one warning).
   if (input.diffuseTransmission > 0.0f && input.transmission < 1.0f) {
     const std::string diffuse = where + " (KHR_materials_diffuse_transmission)";
-    if (input.volumeThickness > 0.0f && std::isfinite(input.attenuationDistance)) {
-      warn(diffuse + ": with KHR_materials_volume it is not applied (raylab's diffuse transmission is a thin "
-                     "wall's; the volume is kept)");
+    const bool volume = input.volumeThickness > 0.0f && std::isfinite(input.attenuationDistance);
+    if (volume && input.transmission > 0.0f) {
+      warn(diffuse + ": with KHR_materials_transmission and KHR_materials_volume it is not applied (the volume is "
+                     "the specular transmission's; raylab's diffuse transmission is a thin wall's)");
     } else {
+      glm::vec3 colour = input.diffuseTransmissionColor;
+      if (volume) colour *= volumeTransmittance(input.attenuationColor, input.volumeThickness / input.attenuationDistance);
       setParam(record, "geometry_thin_walled", glm::vec3(1.0f), diffuse);
       setParam(record, "subsurface_weight", glm::vec3(input.diffuseTransmission), diffuse);
-      setParam(record, "subsurface_color", input.diffuseTransmissionColor, diffuse);
+      setParam(record, "subsurface_color", colour, volume ? diffuse + " through KHR_materials_volume" : diffuse);
       setParam(record, "subsurface_scatter_anisotropy", glm::vec3(1.0f), diffuse);
     }
   }
@@ -682,7 +693,7 @@ void convertMaterials(Document& document, Scene& scene) {
       readFactor(*volume, "thicknessFactor", name, 0.0, kLargest, input.volumeThickness);
       readFactor(*volume, "attenuationDistance", name, 1e-30, kLargest, input.attenuationDistance);
       readColour(*volume, "attenuationColor", name, input.attenuationColor);
-      if (volume->contains("thicknessTexture")) document.ignore(name + ".thicknessTexture (only whether there is a volume matters)");
+      if (volume->contains("thicknessTexture")) document.ignore(name + ".thicknessTexture (thicknessFactor stands for the whole surface)");
     }
     if (const json* dispersion = findPath(materialJson, {"extensions", "KHR_materials_dispersion"})) {
       readFactor(*dispersion, "dispersion", "KHR_materials_dispersion", 0.0, std::numeric_limits<float>::max(),

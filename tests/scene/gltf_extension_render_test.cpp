@@ -148,6 +148,16 @@ std::vector<Case> nonNeutralCases() {
                                                        {"diffuseTransmissionColorFactor", {0.9, 0.5, 0.2}}}}},
               {{"geometry_thin_walled", glm::vec3(1.0f)}, {"subsurface_weight", glm::vec3(0.6f)},
                {"subsurface_color", {0.9f, 0.5f, 0.2f}}, {"subsurface_scatter_anisotropy", glm::vec3(1.0f)}}),
+      // Diffuse transmission into a volume: the same sheet, its light attenuated over the thickness,
+      // attenuationColor^(0.5 / 1) = (0.7071, 0.8944, 1).
+      layered("KHR_materials_diffuse_transmission with KHR_materials_volume", {0.3f, 0.6f, 0.3f}, 0.0f, 0.5f,
+              {{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.6},
+                                                       {"diffuseTransmissionColorFactor", {0.9, 0.5, 0.2}}}},
+               {"KHR_materials_volume", {{"thicknessFactor", 0.5}, {"attenuationDistance", 1.0},
+                                         {"attenuationColor", {0.5, 0.8, 1.0}}}}},
+              {{"geometry_thin_walled", glm::vec3(1.0f)}, {"subsurface_weight", glm::vec3(0.6f)},
+               {"subsurface_color", {0.9f * 0.7071068f, 0.5f * 0.8944272f, 0.2f}},
+               {"subsurface_scatter_anisotropy", glm::vec3(1.0f)}}),
       // Dispersion on a half transmission with a clear volume, lit from below too: each channel refracted by its own
       // index (dispersion 0.8: V = 25).
       layered("KHR_materials_dispersion", {0.9f, 0.9f, 0.9f}, 0.0f, 0.3f,

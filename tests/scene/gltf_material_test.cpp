@@ -580,7 +580,9 @@ TEST(GltfMaterial, TheOpenPbrAlignedDraftsMapOntoTheirOwnParameters) {
 }
 
 // KHR_materials_diffuse_transmission: the diffuse lobe's mix of the base colour's BRDF and the transmission colour's
-// BTDF is openpbr's thin-walled subsurface that passes all its light; with a volume it is not applied (one warning).
+// BTDF is openpbr's thin-walled subsurface that passes all its light; with KHR_materials_volume its light is
+// attenuated over the volume's thickness (the Sample Viewer's reading), and with a specular transmission as well the
+// volume is that transmission's and the diffuse one is not applied (one warning).
 TEST(GltfMaterial, KhrMaterialsDiffuseTransmissionIsAThinSubsurfaceSheetThatPassesItsLight) {
   WarningCapture warnings;
   const json extension = {{"diffuseTransmissionFactor", 0.4}, {"diffuseTransmissionColorFactor", {1.0, 0.5, 0.2}}};
@@ -597,7 +599,16 @@ TEST(GltfMaterial, KhrMaterialsDiffuseTransmissionIsAThinSubsurfaceSheetThatPass
                        {"KHR_materials_transmission", {{"transmissionFactor", 0.5}}},
                        {"KHR_materials_volume", {{"thicknessFactor", 1.0}, {"attenuationDistance", 2.0}}}}}});
   EXPECT_FLOAT_EQ(getParam(withVolume.materials[0].record, "geometry_thin_walled").x, 0.0f);
-  EXPECT_EQ(warnings.count("with KHR_materials_volume it is not applied"), 1);
+  EXPECT_EQ(warnings.count("with KHR_materials_transmission and KHR_materials_volume it is not applied"), 1);
+  // attenuationColor^(thicknessFactor / attenuationDistance) = (0.25, 0.64, 1)^(1/2).
+  const Scene translucent = loadMaterial(
+      {{"extensions", {{"KHR_materials_diffuse_transmission", extension},
+                       {"KHR_materials_volume", {{"thicknessFactor", 1.0}, {"attenuationDistance", 2.0},
+                                                 {"attenuationColor", {0.25, 0.64, 1.0}}}}}}});
+  const gpu::MaterialRecord& v = translucent.materials[0].record;
+  EXPECT_FLOAT_EQ(getParam(v, "geometry_thin_walled").x, 1.0f);
+  EXPECT_FLOAT_EQ(getParam(v, "transmission_weight").x, 0.0f) << "no volume of its own: no medium to enter";
+  expectNear(getParam(v, "subsurface_color"), {0.5f, 0.4f, 0.2f}, "transmission colour through half a distance");
   const Scene none = loadMaterial({{"extensions", {{"KHR_materials_diffuse_transmission", {{"diffuseTransmissionFactor", 0.0}}}}}});
   EXPECT_EQ(none.materials[0].record.model, modelId("gltf_pbr"));
   // Its textures: A scales subsurface_weight, the sRGB RGB subsurface_color.
