@@ -712,7 +712,6 @@ void convertMaterials(Document& document, Scene& scene) {
                  std::numeric_limits<float>::max(), input.coatAnisotropyRotation);
       input.coatAnisotropyRotation =
           float(std::remainder(double(input.coatAnisotropyRotation), 2.0 * std::numbers::pi));
-      if (coat->contains("coatAnisotropyTexture")) document.ignore(name + ".coatAnisotropyTexture (its strength applies alone)");
     }
     if (const json* fuzz = findPath(materialJson, {"extensions", "KHR_materials_fuzz"})) {
       const std::string name = "KHR_materials_fuzz";
@@ -822,16 +821,27 @@ void convertMaterials(Document& document, Scene& scene) {
         uses.refs[gpu::kTextureAnisotropy] = convertUse(info, "KHR_materials_anisotropy.anisotropyTexture");
         uses.refs[gpu::kTextureAnisotropy].param = ratio->slot;
         uses.refs[gpu::kTextureAnisotropy].scale = input.anisotropy;
-        if (input.hasCoat && input.coatAnisotropy > 0.0f) {
-          warn(where + ": KHR_materials_coat's anisotropy direction is turned from the tangent as the base's "
-                       "anisotropyTexture turns the base's, texel by texel (the coat keeps only the difference of the "
-                       "rotations)");
-        }
       }
       uses.anisotropyRotation = input.anisotropyRotation;
       if (uses.refs[gpu::kTextureAnisotropy].texture >= 0 || uses.anisotropyRotation != 0.0f) uses.layerModel = record.model;
     } else if (use({"extensions", "KHR_materials_anisotropy", "anisotropyTexture"})) {
       document.ignore("KHR_materials_anisotropy.anisotropyTexture (the anisotropy is absent)");
+    }
+    // KHR_materials_coat's anisotropy texture, where the coat is anisotropic; also without one when the base's
+    // texture turns the shading frame's tangent texel by texel, which the coat's direction must not follow.
+    const json* coatAnisotropy = use({"extensions", "KHR_materials_coat", "coatAnisotropyTexture"});
+    if (const ParamInfo* coatRatio = findParam(modelInfo(record.model), "coat_roughness_anisotropy");
+        coatRatio != nullptr && input.hasCoat && input.coat > 0.0f && input.coatAnisotropy > 0.0f) {
+      if (coatAnisotropy != nullptr || uses.refs[gpu::kTextureAnisotropy].texture >= 0) {
+        gpu::TextureRef& ref = uses.refs[gpu::kTextureCoatAnisotropy];
+        if (coatAnisotropy != nullptr) ref = convertUse(coatAnisotropy, "KHR_materials_coat.coatAnisotropyTexture");
+        ref.param = coatRatio->slot | findParam(modelInfo(record.model), "coat_roughness")->slot << 8u |
+                    findParam(modelInfo(record.model), "geometry_coat_tangent_angle")->slot << 16u;
+        ref.scale = input.coatAnisotropy;
+        uses.layerModel = record.model;
+      }
+    } else if (coatAnisotropy != nullptr) {
+      document.ignore("KHR_materials_coat.coatAnisotropyTexture (the coat's anisotropy is absent)");
     }
     // The coat's own normal map (KHR_materials_coat's, else KHR_materials_clearcoat's), where the material has a coat:
     // the kernel writes the normal it gives, in the shading frame, into geometry_coat_normal_x and _y at each hit.

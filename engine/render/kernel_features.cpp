@@ -16,8 +16,18 @@ bool textureSets(const Scene& scene, const gpu::MaterialRecord& record, std::str
   if (!hasLayerTextures(scene, record)) return false;
   const ParamInfo* info = findParam(modelInfo(record.model), param);
   const gpu::MaterialTextures& uses = scene.materialTextures[std::size_t(record.textures)];
+  if (info == nullptr) return false;
   for (std::uint32_t use = gpu::kFirstLayerTexture; use < gpu::kTextureUses; ++use) {
-    if (info != nullptr && uses.refs[use].texture >= 0 && uses.refs[use].param == info->slot) return true;
+    const gpu::TextureRef& ref = uses.refs[use];
+    // The coat's anisotropy writes its ratio (with a texture) and the coat's tangent angle (always), packed.
+    if (use == gpu::kTextureCoatAnisotropy) {
+      if (ref.param != 0u && (((ref.param >> 16u) & 0xFFu) == info->slot ||
+                              (ref.texture >= 0 && (ref.param & 0xFFu) == info->slot))) {
+        return true;
+      }
+    } else if (ref.texture >= 0 && ref.param == info->slot) {
+      return true;
+    }
   }
   return false;
 }

@@ -26,7 +26,7 @@ void drawMaterialTextures(const Scene& scene, const gpu::MaterialRecord& record)
       "base colour", "metallic-roughness", "normal", "emissive", "specular", "specular colour", "coat weight",
       "coat roughness", "fuzz colour", "fuzz roughness", "thin-film weight", "thin-film thickness", "transmission",
       "coat colour", "fuzz weight", "diffuse roughness", "diffuse transmission", "diffuse transmission colour",
-      "anisotropy", "coat normal"};
+      "anisotropy", "coat normal", "coat anisotropy"};
   static_assert(std::size(kUses) == gpu::kTextureUses, "one name per texture use");
   const gpu::MaterialTextures& uses = scene.materialTextures[std::size_t(record.textures)];
   for (std::uint32_t use = 0; use < gpu::kTextureUses; ++use) {

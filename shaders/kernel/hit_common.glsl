@@ -54,25 +54,47 @@ void applyCoatNormal(inout MaterialRecord material, Surface s, ShadingFrame fram
   material.params[slot + 1u] = dot(n, frame.b);
 }
 
+// glTF's anisotropy texel (KHR_materials_anisotropy, KHR_materials_coat): its B scales the strength, mapped onto
+// openpbr's ratio as the loader maps the factor (gltf_materials.cpp, anisotropyOf) at this roughness; returns the
+// turn its RG direction gives, from the tangent towards the bitangent (a texel of (0.5, 0.5) has no direction: 0).
+float applyAnisotropyTexel(inout MaterialRecord material, vec3 texel, float strengthFactor, uint ratioSlot,
+                           float roughness) {
+  const float alpha = max(roughness * roughness, 1e-3);
+  const float strength = strengthFactor * texel.b;
+  material.params[ratioSlot] = clamp(1.0 - alpha / (alpha + (1.0 - alpha) * strength * strength), 0.0, 1.0);
+  const vec2 direction = 2.0 * texel.rg - 1.0;
+  return dot(direction, direction) > 0.0 ? atan(direction.y, direction.x) : 0.0;
+}
+
+// KHR_materials_coat's coat anisotropy texture (kTextureCoatAnisotropy): the coat's strength and its turn from the
+// shading frame's tangent, which the base's texel (baseTurn) has already turned.
+void applyCoatAnisotropy(inout MaterialRecord material, Surface s, MaterialTextures uses, float baseTurn) {
+  const TextureRef coat = uses.refs[kTextureCoatAnisotropy];
+  if (coat.param == 0u) return;
+  const uint ratioSlot = coat.param & 0xFFu, roughnessSlot = (coat.param >> 8u) & 0xFFu;
+  const uint angleSlot = (coat.param >> 16u) & 0xFFu;
+  float turn = -baseTurn;
+  if (coat.texture >= 0) {
+    turn += applyAnisotropyTexel(material, sampleTextureRef(coat, s.uv, s.uv1, false).rgb, coat.scale, ratioSlot,
+                                 material.params[roughnessSlot]);
+  }
+  material.params[angleSlot] += turn;
+}
+
 // KHR_materials_anisotropy's direction: the tangent turned by anisotropyRotation plus the texture's angle (its RG, in
 // the frame of the tangent and the bitangent cross(n, t) w) about the shading normal; the texture's B scales the
-// strength, mapped as the loader maps the factor (gltf_materials.cpp, anisotropyOf). The shading frame's x axis is
-// the tangent (shadingSide), and the anisotropic GGX stretches along it.
+// strength. The shading frame's x axis is the tangent (shadingSide), and the anisotropic GGX stretches along it.
 void applyAnisotropyDirection(inout MaterialRecord material, inout Surface s, MaterialTextures uses) {
   const TextureRef anisotropy = uses.refs[kTextureAnisotropy];
-  vec2 direction = vec2(1.0, 0.0);
+  float texelTurn = 0.0;
   if (anisotropy.texture >= 0) {
-    const vec3 texel = sampleTextureRef(anisotropy, s.uv, s.uv1, false).rgb;
-    direction = 2.0 * texel.rg - 1.0;
     const uint roughnessSlot = material.textureParams & 0xFFu;
-    const float roughness = roughnessSlot != kNoTextureParam ? material.params[roughnessSlot] : 0.0;
-    const float alpha = max(roughness * roughness, 1e-3);
-    const float strength = anisotropy.scale * texel.b;
-    material.params[anisotropy.param] = clamp(1.0 - alpha / (alpha + (1.0 - alpha) * strength * strength), 0.0, 1.0);
+    texelTurn = applyAnisotropyTexel(material, sampleTextureRef(anisotropy, s.uv, s.uv1, false).rgb, anisotropy.scale,
+                                     anisotropy.param,
+                                     roughnessSlot != kNoTextureParam ? material.params[roughnessSlot] : 0.0);
   }
-  // A texel of (0.5, 0.5) has no direction: the tangent's, as the factor alone.
-  const float angle =
-      uses.anisotropyRotation + (dot(direction, direction) > 0.0 ? atan(direction.y, direction.x) : 0.0);
+  applyCoatAnisotropy(material, s, uses, texelTurn);
+  const float angle = uses.anisotropyRotation + texelTurn;
   const vec3 n = s.shadingNormal;
   const vec3 t = s.tangent - n * dot(n, s.tangent);
   if (angle == 0.0 || !(dot(t, t) > 0.0)) return;

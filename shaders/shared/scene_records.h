@@ -135,7 +135,13 @@ RL_CONST uint kLayerTexturesEnd = 18;  // the layer textures are the uses kFirst
 RL_CONST uint kTextureAnisotropy = 18;
 // The coat's own normal map (its param: the slot of geometry_coat_normal_x, y after it), of layerModel.
 RL_CONST uint kTextureCoatNormal = 19;
-RL_CONST uint kTextureUses = 20;
+// KHR_materials_coat's coatAnisotropyTexture, read as the base's anisotropy texture: RG the direction, B scales the
+// strength (`scale`, the factor). `param` packs three slots of layerModel, 8 bits each: the coat's anisotropy (bits
+// 0-7), its roughness (8-15) and geometry_coat_tangent_angle (16-23); 0: none. The coat's angle from the shading
+// frame's tangent gains the texel's turn and loses the base anisotropy texel's, which that tangent already carries:
+// a coat whose base turns texel by texel has this use without a texture (texture -1, param set) for that alone.
+RL_CONST uint kTextureCoatAnisotropy = 20;
+RL_CONST uint kTextureUses = 21;
 
 // MaterialTextures.alphaMode (glTF alphaMode). Opaque surfaces are opaque geometry: traversal never asks.
 RL_CONST uint kAlphaOpaque = 0;
@@ -153,7 +159,7 @@ struct MaterialTextures {
   // anisotropyRotation), with the layer textures (layerModel's only).
   float anisotropyRotation;
 };
-RL_CHECK_SIZE(MaterialTextures, 820);
+RL_CHECK_SIZE(MaterialTextures, 860);
 
 // One light for next event estimation, of any kind (generated/light_kinds.h, from shaders/lights/lights.cmake):
 // punctual lights, emitting triangles and spheres in world space, the environment. What p0, p1, p2 and radiance

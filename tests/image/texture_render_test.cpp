@@ -295,10 +295,12 @@ TEST_F(TextureRenderTest, TheAnisotropysRotationAndTextureTurnAndScaleTheStretch
   setParam(record, "base_color", glm::vec3(0.9f, 0.7f, 0.5f), "test");
   setParam(record, "specular_roughness", glm::vec3(0.45f), "test");
   setParam(record, "specular_roughness_anisotropy", glm::vec3(0.85f), "test");
-  // Under a faint isotropic coat turned half a turn in its own frame (which shows nothing): the kernel of the coat
-  // normal map's test below, coat frame included (one cold compile of the layered kernel for both, not two: over a
-  // minute each).
+  // Under a faint anisotropic coat turned half a turn in its own frame (which shows nothing: the stretch is along an
+  // axis): the kernel of the coat normal map's test below, coat frame included (one cold compile of the layered
+  // kernel for both, not two: over a minute each).
   setParam(record, "coat_weight", glm::vec3(0.2f), "test");
+  setParam(record, "coat_roughness", glm::vec3(0.3f), "test");
+  setParam(record, "coat_roughness_anisotropy", glm::vec3(0.6f), "test");
   setParam(record, "geometry_coat_tangent_angle", glm::vec3(float(std::numbers::pi)), "test");
   const auto sceneOf = [&](const Mesh& mesh, float rotation) {
     Scene scene = quadScene(record, gpu::kTextureBaseColor, solidTexture({255, 255, 255, 255}), mesh);
@@ -337,6 +339,37 @@ TEST_F(TextureRenderTest, TheAnisotropysRotationAndTextureTurnAndScaleTheStretch
   const Image t = render(textured);
   const Image h = render(host);
   for (std::size_t i = 0; i < t.rgba.size(); ++i) ASSERT_NEAR(t.rgba[i], h.rgba[i], 1e-4f * h.rgba[i] + 1e-7f) << i;
+
+  // KHR_materials_coat's anisotropy texture beside the base's: the coat's texel turns the coat by its direction and
+  // scales its strength 0.8 by its B, and the coat's angle loses the base texel's turn, which the frame already
+  // carries. Directions off the axes, so that a turn of the wrong size shows.
+  const std::uint8_t baseTexel[4] = {200, 230, 170, 255}, coatTexel[4] = {230, 60, 128, 255};
+  const auto turnOf = [](const std::uint8_t* c) { return std::atan2(2.0 * c[1] / 255.0 - 1.0, 2.0 * c[0] / 255.0 - 1.0); };
+  const auto ratioOf = [](double strength, double roughness) {
+    const double a = roughness * roughness;
+    return float(1.0 - a / (a + (1.0 - a) * strength * strength));
+  };
+  Scene coated = textured;
+  coated.textures[0] = solidTexture({baseTexel[0], baseTexel[1], baseTexel[2], baseTexel[3]});
+  coated.textures.push_back(solidTexture({coatTexel[0], coatTexel[1], coatTexel[2], coatTexel[3]}));
+  gpu::TextureRef& coatRef = coated.materialTextures[0].refs[gpu::kTextureCoatAnisotropy];
+  coatRef = textureRef(1);
+  const ModelInfo& openpbr = modelInfo(record.model);
+  coatRef.param = findParam(openpbr, "coat_roughness_anisotropy")->slot | findParam(openpbr, "coat_roughness")->slot << 8u |
+                  findParam(openpbr, "geometry_coat_tangent_angle")->slot << 16u;
+  coatRef.scale = 0.8f;
+  const auto hostCoated = [&](double coatTurn) {
+    Scene scene = sceneOf(texturedQuad(), float(0.3 + turnOf(baseTexel)));
+    gpu::MaterialRecord& r = scene.materials[0].record;
+    setParam(r, "specular_roughness_anisotropy", glm::vec3(ratioOf(0.6 * baseTexel[2] / 255.0, 0.45)), "test");
+    setParam(r, "coat_roughness_anisotropy", glm::vec3(ratioOf(0.8 * coatTexel[2] / 255.0, 0.3)), "test");
+    setParam(r, "geometry_coat_tangent_angle", glm::vec3(float(std::numbers::pi + coatTurn)), "test");
+    return scene;
+  };
+  const Image tc = render(coated);
+  const Image hc = render(hostCoated(turnOf(coatTexel) - turnOf(baseTexel)));
+  const Image unsubtracted = render(hostCoated(turnOf(coatTexel)));
+  EXPECT_GT(agreeAndDiffer(tc, hc, unsubtracted), 1e-3) << "the coat's turn shows";
 }
 
 // The coat's own normal map (glTF's coatNormalTexture, clearcoatNormalTexture): decoded in the quad's tangent frame

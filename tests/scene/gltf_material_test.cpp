@@ -731,6 +731,47 @@ TEST(GltfMaterial, TheCoatsAnisotropyRotationTurnsItsTangentFromTheBases) {
   EXPECT_EQ(warnings.count("coatAnisotropyRotation"), 0) << "read, not ignored";
 }
 
+// KHR_materials_coat's coatAnisotropyTexture: read where the coat is anisotropic, its use packing the slots of the
+// coat's ratio, roughness and tangent angle, its strength the factor; kept without a texture where only the base's
+// anisotropyTexture turns the frame (the kernel takes that turn back off the coat's angle); not read without the
+// coat's anisotropy. The rendered answer is tests/image/texture_render_test.cpp's.
+TEST(GltfMaterial, TheCoatsAnisotropyTextureTurnsAndScalesTheCoatsStretch) {
+  WarningCapture warnings;
+  const auto load = [](const json& coat, const json& anisotropy) {
+    GltfBuilder builder = texturedScene({kPngRgb}, json::array(), json::array({{{"source", 0}}}));
+    builder.doc()["materials"][0]["extensions"] = {{"KHR_materials_coat", coat}};
+    if (!anisotropy.is_null()) builder.doc()["materials"][0]["extensions"]["KHR_materials_anisotropy"] = anisotropy;
+    return builder.load();
+  };
+  const json texture = {{"index", 0}};
+  const Scene scene = load({{"coatFactor", 1.0}, {"coatRoughnessFactor", 0.3}, {"coatAnisotropyStrength", 0.5},
+                            {"coatAnisotropyTexture", texture}},
+                           nullptr);
+  const gpu::MaterialRecord& r = scene.materials[0].record;
+  const ModelInfo& openpbr = modelInfo(r.model);
+  ASSERT_GE(r.textures, 0);
+  const gpu::TextureRef& ref = scene.materialTextures[std::size_t(r.textures)].refs[gpu::kTextureCoatAnisotropy];
+  EXPECT_GE(ref.texture, 0);
+  EXPECT_EQ(ref.param, findParam(openpbr, "coat_roughness_anisotropy")->slot |
+                           findParam(openpbr, "coat_roughness")->slot << 8u |
+                           findParam(openpbr, "geometry_coat_tangent_angle")->slot << 16u);
+  EXPECT_FLOAT_EQ(ref.scale, 0.5f);
+  EXPECT_EQ(warnings.count("coatAnisotropyTexture"), 0) << "read, not ignored";
+
+  const Scene baseTurns = load({{"coatFactor", 1.0}, {"coatAnisotropyStrength", 0.5}},
+                               {{"anisotropyStrength", 0.5}, {"anisotropyTexture", texture}});
+  const gpu::TextureRef& kept =
+      baseTurns.materialTextures[std::size_t(baseTurns.materials[0].record.textures)].refs[gpu::kTextureCoatAnisotropy];
+  EXPECT_LT(kept.texture, 0);
+  EXPECT_NE(kept.param, 0u) << "the coat's angle loses the base texel's turn";
+
+  const Scene isotropic = load({{"coatFactor", 1.0}, {"coatAnisotropyTexture", texture}}, nullptr);
+  EXPECT_EQ(warnings.count("coatAnisotropyTexture (the coat's anisotropy is absent)"), 1);
+  const gpu::MaterialRecord& i = isotropic.materials[0].record;
+  EXPECT_TRUE(i.textures < 0 ||
+              isotropic.materialTextures[std::size_t(i.textures)].refs[gpu::kTextureCoatAnisotropy].param == 0u);
+}
+
 // Each layered extension at its neutral value is no layer: beside a clear coat (which makes the material openpbr
 // either way), adding it leaves every parameter as without it. The non-neutral answers are tested above (the
 // mapping) and in tests/cpu/openpbr_test.cpp, fuzz_test.cpp and the path integrator's Beer-Lambert test (the
