@@ -291,13 +291,13 @@ gpu::TextureRef convertTextureUse(const json& info, const std::string& where, Do
 // A base-colour texture multiplies the model's diffuse colour (MaterialRecord::diffuseParam).
 bool hasDiffuseColour(std::uint32_t model) { return findRole(modelInfo(model), "diffuse") != nullptr; }
 
-// A KHR_materials_ior index for `param` of `model`: as it is, or its table's largest (with a warning saying so).
-// The model's formula holds for any index; its table stops where common dielectrics end.
 // KHR_materials_volume's Beer-Lambert law: what passes `distances` attenuation distances of the medium.
 glm::vec3 volumeTransmittance(glm::vec3 attenuationColor, float distances) {
   return glm::pow(attenuationColor, glm::vec3(distances));
 }
 
+// A KHR_materials_ior index for `param` of `model`: as it is, or its table's largest (with a warning saying so).
+// The model's formula holds for any index; its table stops where common dielectrics end.
 float indexWithin(float ior, const gpu::MaterialRecord& record, std::string_view param, const std::string& where) {
   const ModelInfo& model = modelInfo(record.model);
   const float iorMax = findParam(model, param)->max;
