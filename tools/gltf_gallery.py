@@ -3,6 +3,10 @@
 that raylab gives for it. Writes a contact sheet of the renders and replaces the table between the page's
 `<!-- gallery:begin -->` and `<!-- gallery:end -->` markers with one row per file.
 
+Every file is rendered under one environment image (--env; the Khronos Sample Viewer likewise shows every sample
+under image-based light): with raylab's defaults a file whose only emitters are textured labels (ClearCoatTest)
+gets no default light and shows its labels alone.
+
     .venv/bin/python tools/gltf_gallery.py
 """
 from __future__ import annotations
@@ -33,7 +37,8 @@ def render(raylab: Path, scene: Path, png: Path, args: argparse.Namespace) -> st
     """Renders `scene` to `png`; returns raylab's error (its last line) when it refuses the file."""
     with tempfile.TemporaryDirectory() as scratch:
         command = [str(raylab), "render", str(scene), "--width", str(args.width), "--height", str(args.height),
-                   "--spp", str(args.spp), "--png", str(png), "--out", str(Path(scratch) / "image.exr")]
+                   "--spp", str(args.spp), "--env", str(args.env), "--env-strength", str(args.env_strength),
+                   "--integrator", "path", "--png", str(png), "--out", str(Path(scratch) / "image.exr")]
         result = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
     if result.returncode == 0:
         return None
@@ -66,10 +71,15 @@ def main() -> None:
                         help="the contact sheet to write")
     parser.add_argument("--width", type=int, default=240)
     parser.add_argument("--height", type=int, default=180)
-    parser.add_argument("--spp", type=int, default=32)
+    parser.add_argument("--spp", type=int, default=64)
+    parser.add_argument("--env", type=Path, default=REPO / "assets" / "scenes" / "environments" / "studio.exr",
+                        help="the environment image every file is lit by (default: the committed studio)")
+    parser.add_argument("--env-strength", type=float, default=2.0, help="multiplies the environment (default: 2)")
     parser.add_argument("--timeout", type=float, default=600.0, help="seconds allowed for one render")
     args = parser.parse_args()
     raylab = check_raylab(args.raylab)
+    if not args.env.is_file():
+        raise ToolError(f"--env {args.env}: no such file")
     if not args.assimp.is_dir():
         raise ToolError(f"{args.assimp} is missing: install assimp-testmodels (tools/setup.sh test)")
     page = args.page.read_text()
